@@ -1,0 +1,2 @@
+//! runout-case.
+#![deny(missing_docs)]

@@ -1,0 +1,2 @@
+//! runout-closures.
+#![deny(missing_docs)]

@@ -1,0 +1,2 @@
+//! runout-linsolve.
+#![deny(missing_docs)]

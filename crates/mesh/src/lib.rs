@@ -1,0 +1,2 @@
+//! runout-mesh.
+#![deny(missing_docs)]

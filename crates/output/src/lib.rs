@@ -1,0 +1,2 @@
+//! runout-output.
+#![deny(missing_docs)]

@@ -1,0 +1,2 @@
+//! runout-solver.
+#![deny(missing_docs)]

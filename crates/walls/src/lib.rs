@@ -1,0 +1,2 @@
+//! runout-walls.
+#![deny(missing_docs)]
