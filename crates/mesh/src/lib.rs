@@ -1,2 +1,34 @@
-//! runout-mesh.
+//! runout-mesh: stretched rectangular staggered grids.
+//!
+//! A direction is described the way MFIX users do it, as consecutive [`Segment`]s
+//! (length + cell count + growth ratio, or length + end widths); an [`Axis`] stores its
+//! faces and caches centres, widths and centre-to-centre distances; a [`Grid`] pairs two
+//! axes into the staggered (MAC) grid of model-spec §4.1: scalars at cell centres, u on
+//! east faces, v on north faces.
 #![deny(missing_docs)]
+
+mod axis;
+mod grid;
+#[cfg(feature = "proptest")]
+pub mod strategies;
+
+pub use axis::{Axis, Segment};
+pub use grid::{AxisSpec, Grid, GridSummary, Side, Sides};
+
+/// Errors building a grid.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum MeshError {
+    /// A segment number is out of range.
+    #[error("{field} = {value}: allowed {allowed}")]
+    Invalid {
+        /// field path inside the axis description
+        field: String,
+        /// the offending value
+        value: String,
+        /// the allowed range
+        allowed: String,
+    },
+    /// The numbers are each valid but admit no grid.
+    #[error("{0}")]
+    Unsolvable(String),
+}

@@ -1,0 +1,564 @@
+//! One-dimensional stretched axes built from MFIX-style segments.
+//!
+//! MFIX users describe a grid direction as consecutive segments, each with a length and a
+//! cell count plus either an expansion ratio or end widths (keywords `CPX`, `NCX`, `ERX`,
+//! `FIRST_DX`, `LAST_DX`). [`Segment`] covers those forms; [`Axis`] stores the faces as
+//! the truth and caches everything derived from them (model-spec §4.1).
+
+use serde::{Deserialize, Serialize};
+
+use crate::MeshError;
+
+/// Relative tolerance used when a derived quantity (a cell count from end widths, a
+/// growth ratio from a first width) is solved for numerically.
+const SOLVE_RTOL: f64 = 1e-14;
+
+/// One segment of an axis, as MFIX users describe it. Lengths and widths in metres.
+///
+/// `growth` is the ratio of adjacent cell widths, w[i+1] / w[i] (> 1: cells grow in the
+/// direction of increasing coordinate). MFIX's `ERX` is instead last/first width over the
+/// whole segment; `growth = ERX^(1/(cells-1))`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub enum Segment {
+    /// `cells` equal cells over `length`.
+    Uniform {
+        /// segment length [m]
+        length: f64,
+        /// number of cells [-]
+        cells: usize,
+    },
+    /// `cells` cells whose widths grow geometrically by `growth` from one cell to the next.
+    Geometric {
+        /// segment length [m]
+        length: f64,
+        /// number of cells [-]
+        cells: usize,
+        /// adjacent width ratio w[i+1]/w[i] [-]
+        growth: f64,
+    },
+    /// `cells` cells whose first width is `first`; the growth ratio is solved so that the
+    /// widths sum to `length` (MFIX `FIRST_DX` with `NCX`).
+    FirstWidth {
+        /// segment length [m]
+        length: f64,
+        /// number of cells [-]
+        cells: usize,
+        /// width of the first (lowest-coordinate) cell [m]
+        first: f64,
+    },
+    /// `cells` cells whose last width is `last`; the growth ratio is solved so that the
+    /// widths sum to `length` (MFIX `LAST_DX` with `NCX`).
+    LastWidth {
+        /// segment length [m]
+        length: f64,
+        /// number of cells [-]
+        cells: usize,
+        /// width of the last (highest-coordinate) cell [m]
+        last: f64,
+    },
+    /// Geometric cells going from width `first` to width `last`. The cell count is the
+    /// nearest integer to the continuous solution; the growth is then solved so that the
+    /// widths sum to `length` with the **smaller** end width exact (the fine end is the one
+    /// that matters); the count is within one cell of the continuous solution, so the other
+    /// end moves by about 1/cells relative (times one growth factor) from what was asked. When the two ends are so close that
+    /// no whole number of cells admits that, the cells are uniform.
+    EndWidths {
+        /// segment length [m]
+        length: f64,
+        /// width of the first cell [m]
+        first: f64,
+        /// width of the last cell [m]
+        last: f64,
+    },
+}
+
+impl Segment {
+    /// The segment length [m].
+    pub fn length(&self) -> f64 {
+        match *self {
+            Segment::Uniform { length, .. }
+            | Segment::Geometric { length, .. }
+            | Segment::FirstWidth { length, .. }
+            | Segment::LastWidth { length, .. }
+            | Segment::EndWidths { length, .. } => length,
+        }
+    }
+
+    /// Checks the segment's numbers. `field` is the path used in error messages.
+    pub fn validate(&self, field: &str) -> Result<(), MeshError> {
+        let positive = |name: &str, v: f64| -> Result<(), MeshError> {
+            if v.is_finite() && v > 0.0 {
+                Ok(())
+            } else {
+                Err(MeshError::Invalid {
+                    field: format!("{field}.{name}"),
+                    value: v.to_string(),
+                    allowed: "a finite number > 0".into(),
+                })
+            }
+        };
+        let cells_ok = |cells: usize| -> Result<(), MeshError> {
+            if cells >= 1 {
+                Ok(())
+            } else {
+                Err(MeshError::Invalid {
+                    field: format!("{field}.cells"),
+                    value: cells.to_string(),
+                    allowed: "an integer ≥ 1".into(),
+                })
+            }
+        };
+        let width_below_length = |name: &str, w: f64, length: f64| -> Result<(), MeshError> {
+            if w <= length {
+                Ok(())
+            } else {
+                Err(MeshError::Invalid {
+                    field: format!("{field}.{name}"),
+                    value: w.to_string(),
+                    allowed: format!("(0, length = {length}]"),
+                })
+            }
+        };
+        positive("length", self.length())?;
+        match *self {
+            Segment::Uniform { cells, .. } => cells_ok(cells),
+            Segment::Geometric { cells, growth, .. } => {
+                cells_ok(cells)?;
+                positive("growth", growth)
+            }
+            Segment::FirstWidth {
+                length,
+                cells,
+                first,
+            } => {
+                cells_ok(cells)?;
+                positive("first", first)?;
+                width_below_length("first", first, length)?;
+                if cells == 1 && (first - length).abs() > 1e-12 * length {
+                    return Err(MeshError::Invalid {
+                        field: format!("{field}.first"),
+                        value: first.to_string(),
+                        allowed: format!("= length ({length}) when cells = 1"),
+                    });
+                }
+                Ok(())
+            }
+            Segment::LastWidth {
+                length,
+                cells,
+                last,
+            } => {
+                cells_ok(cells)?;
+                positive("last", last)?;
+                width_below_length("last", last, length)?;
+                if cells == 1 && (last - length).abs() > 1e-12 * length {
+                    return Err(MeshError::Invalid {
+                        field: format!("{field}.last"),
+                        value: last.to_string(),
+                        allowed: format!("= length ({length}) when cells = 1"),
+                    });
+                }
+                Ok(())
+            }
+            Segment::EndWidths {
+                length,
+                first,
+                last,
+            } => {
+                positive("first", first)?;
+                positive("last", last)?;
+                width_below_length("first", first, length)?;
+                width_below_length("last", last, length)?;
+                if first + last > length * (1.0 + 1e-12) && (first - last).abs() > 1e-12 * length {
+                    return Err(MeshError::Invalid {
+                        field: format!("{field}.first + last"),
+                        value: (first + last).to_string(),
+                        allowed: format!("≤ length ({length}) unless first = last"),
+                    });
+                }
+                Ok(())
+            }
+        }
+    }
+
+    /// The same segment with cells `factor` times wider (for the fidelity presets): cell
+    /// counts divided by `factor` (rounded, at least 1), widths multiplied by it and growth
+    /// raised to its power, so the coarse grid keeps the shape of the fine one.
+    pub fn coarsened(&self, factor: u32) -> Segment {
+        let f = f64::from(factor.max(1));
+        let fewer = |cells: usize| ((cells as f64 / f).round() as usize).max(1);
+        match *self {
+            Segment::Uniform { length, cells } => Segment::Uniform {
+                length,
+                cells: fewer(cells),
+            },
+            Segment::Geometric {
+                length,
+                cells,
+                growth,
+            } => Segment::Geometric {
+                length,
+                cells: fewer(cells),
+                growth: growth.powf(f),
+            },
+            Segment::FirstWidth {
+                length,
+                cells,
+                first,
+            } => {
+                let cells = fewer(cells);
+                let first = if cells == 1 {
+                    length
+                } else {
+                    (first * f).min(length)
+                };
+                Segment::FirstWidth {
+                    length,
+                    cells,
+                    first,
+                }
+            }
+            Segment::LastWidth {
+                length,
+                cells,
+                last,
+            } => {
+                let cells = fewer(cells);
+                let last = if cells == 1 {
+                    length
+                } else {
+                    (last * f).min(length)
+                };
+                Segment::LastWidth {
+                    length,
+                    cells,
+                    last,
+                }
+            }
+            Segment::EndWidths {
+                length,
+                first,
+                last,
+            } => {
+                let (first, last) = (first * f, last * f);
+                if first + last > length {
+                    // Too coarse for two distinct ends: one or two equal cells.
+                    let cells = ((2.0 * length / (first + last)).round() as usize).max(1);
+                    Segment::Uniform { length, cells }
+                } else {
+                    Segment::EndWidths {
+                        length,
+                        first,
+                        last,
+                    }
+                }
+            }
+        }
+    }
+
+    /// The cell widths of this segment, lowest coordinate first.
+    pub fn widths(&self) -> Result<Vec<f64>, MeshError> {
+        self.validate("segment")?;
+        Ok(match *self {
+            Segment::Uniform { length, cells } => vec![length / cells as f64; cells],
+            Segment::Geometric {
+                length,
+                cells,
+                growth,
+            } => geometric_widths(length, cells, growth),
+            Segment::FirstWidth {
+                length,
+                cells,
+                first,
+            } => {
+                let growth = solve_growth(length, cells, first)?;
+                geometric_widths(length, cells, growth)
+            }
+            Segment::LastWidth {
+                length,
+                cells,
+                last,
+            } => {
+                let growth = solve_growth(length, cells, last)?;
+                let mut w = geometric_widths(length, cells, growth);
+                w.reverse();
+                w
+            }
+            Segment::EndWidths {
+                length,
+                first,
+                last,
+            } => {
+                let (small, big) = (first.min(last), first.max(last));
+                let cells = end_widths_cell_count(length, first, last);
+                // With the small end exact, a monotone segment needs
+                // cells·small ≤ length ≤ cells·big.
+                let monotone = (cells as f64) * small <= length * (1.0 + 1e-12)
+                    && (cells as f64) * big >= length * (1.0 - 1e-12);
+                let mut w = if cells == 1 || !monotone {
+                    vec![length / cells as f64; cells]
+                } else {
+                    geometric_widths(length, cells, solve_growth(length, cells, small)?)
+                };
+                if last < first {
+                    w.reverse();
+                }
+                w
+            }
+        })
+    }
+}
+
+/// Widths w_k = w_0 g^k (k = 0..n-1) with Σ w_k = length exactly up to round-off: the
+/// last width absorbs the rounding error of the sum.
+fn geometric_widths(length: f64, cells: usize, growth: f64) -> Vec<f64> {
+    // Σ g^k = (g^n - 1)/(g - 1); written via ln for g near 1 to avoid cancellation.
+    let sum_of_powers = if (growth - 1.0).abs() < 1e-12 {
+        cells as f64
+    } else {
+        let n = cells as f64;
+        (n * growth.ln()).exp_m1() / (growth - 1.0)
+    };
+    let first = length / sum_of_powers;
+    let mut widths: Vec<f64> = (0..cells).map(|k| first * growth.powi(k as i32)).collect();
+    // Rescale away the round-off of the closed-form sum; ratios stay exact.
+    let scale = length / widths.iter().sum::<f64>();
+    widths.iter_mut().for_each(|w| *w *= scale);
+    widths
+}
+
+/// Growth g > 0 such that `first` · Σ_{k<n} g^k = `length` (MFIX FIRST_DX with NCX).
+/// The sum is monotone in g, so bisection on ln g is robust for any admissible input.
+fn solve_growth(length: f64, cells: usize, first: f64) -> Result<f64, MeshError> {
+    let n = cells as f64;
+    let target = length / first;
+    if cells == 1 {
+        return Ok(1.0);
+    }
+    if (target - n).abs() <= 1e-13 * n {
+        return Ok(1.0);
+    }
+    // f(s) = Σ e^{ks} - target, increasing in s = ln g.
+    let sum = |s: f64| -> f64 {
+        if s.abs() < 1e-300 {
+            n
+        } else {
+            (n * s).exp_m1() / s.exp_m1()
+        }
+    };
+    let (mut lo, mut hi) = if target > n { (0.0, 1.0) } else { (-1.0, 0.0) };
+    while sum(hi) < target {
+        hi *= 2.0;
+        if hi > 700.0 {
+            return Err(MeshError::Unsolvable(format!(
+                "no growth ratio gives {cells} cells of first width {first} in length {length}"
+            )));
+        }
+    }
+    while sum(lo) > target {
+        lo *= 2.0;
+        if lo < -700.0 {
+            return Err(MeshError::Unsolvable(format!(
+                "no growth ratio gives {cells} cells of first width {first} in length {length}"
+            )));
+        }
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if sum(mid) < target {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+        if (hi - lo).abs() <= SOLVE_RTOL * hi.abs().max(1e-300) {
+            break;
+        }
+    }
+    Ok((0.5 * (lo + hi)).exp())
+}
+
+/// Cell count for a geometric segment from `first` to `last`: with g = (L − first)/(L − last)
+/// the continuous count is n = 1 + ln(last/first)/ln g. The nearest integer is used,
+/// moved into [⌈L/big⌉, ⌊L/small⌋] when that range is not empty, so that a monotone
+/// segment with the small end exact exists.
+fn end_widths_cell_count(length: f64, first: f64, last: f64) -> usize {
+    if (first - last).abs() <= 1e-12 * length {
+        return ((length / first).round() as usize).max(1);
+    }
+    let growth = (length - first) / (length - last);
+    let n = (1.0 + (last / first).ln() / growth.ln()).round().max(1.0);
+    let (small, big) = (first.min(last), first.max(last));
+    let lo = (length / big * (1.0 - 1e-12)).ceil().max(1.0);
+    let hi = (length / small * (1.0 + 1e-12)).floor();
+    let n = if lo <= hi { n.clamp(lo, hi) } else { n };
+    n as usize
+}
+
+/// A 1-D axis: faces are the truth; centres, widths and centre distances are cached.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Axis {
+    faces: Vec<f64>,
+    centres: Vec<f64>,
+    widths: Vec<f64>,
+    face_spacing: Vec<f64>,
+}
+
+impl Axis {
+    /// Builds an axis from strictly increasing face coordinates (at least two).
+    pub fn from_faces(faces: Vec<f64>) -> Result<Axis, MeshError> {
+        if faces.len() < 2 {
+            return Err(MeshError::Unsolvable(
+                "an axis needs at least two faces".into(),
+            ));
+        }
+        if let Some(k) = (1..faces.len()).find(|&k| faces[k] <= faces[k - 1] || faces[k].is_nan()) {
+            return Err(MeshError::Unsolvable(format!(
+                "faces are not strictly increasing at index {k}: {} then {}",
+                faces[k - 1],
+                faces[k]
+            )));
+        }
+        if faces.iter().any(|f| !f.is_finite()) {
+            return Err(MeshError::Unsolvable("non-finite face coordinate".into()));
+        }
+        let n = faces.len() - 1;
+        let widths: Vec<f64> = (0..n).map(|i| faces[i + 1] - faces[i]).collect();
+        let centres: Vec<f64> = (0..n).map(|i| 0.5 * (faces[i] + faces[i + 1])).collect();
+        // Centre-to-centre distance across each face (model-spec §4.1, ODX_E); at the two
+        // domain faces MFIX's ghost cell has the width of the adjacent fluid cell
+        // (model-spec §3.1), so the distance is that cell's width.
+        let mut face_spacing = Vec::with_capacity(n + 1);
+        face_spacing.push(widths[0]);
+        face_spacing.extend((1..n).map(|i| 0.5 * (widths[i - 1] + widths[i])));
+        face_spacing.push(widths[n - 1]);
+        Ok(Axis {
+            faces,
+            centres,
+            widths,
+            face_spacing,
+        })
+    }
+
+    /// Builds an axis starting at `origin` from consecutive segments.
+    pub fn from_segments(origin: f64, segments: &[Segment]) -> Result<Axis, MeshError> {
+        if segments.is_empty() {
+            return Err(MeshError::Unsolvable(
+                "an axis needs at least one segment".into(),
+            ));
+        }
+        let mut faces = vec![origin];
+        let mut start = origin;
+        for (k, seg) in segments.iter().enumerate() {
+            seg.validate(&format!("segments[{k}]"))?;
+            let widths = seg.widths()?;
+            let mut x = start;
+            let n = widths.len();
+            for (m, w) in widths.iter().enumerate() {
+                // The segment's last face is placed at its exact end so that segment
+                // boundaries (control points, MFIX `CPX`) do not drift with round-off.
+                x = if m + 1 == n {
+                    start + seg.length()
+                } else {
+                    x + w
+                };
+                faces.push(x);
+            }
+            start += seg.length();
+        }
+        Axis::from_faces(faces)
+    }
+
+    /// `n` equal cells on [x0, x1].
+    pub fn uniform(x0: f64, x1: f64, n: usize) -> Result<Axis, MeshError> {
+        Axis::from_segments(
+            x0,
+            &[Segment::Uniform {
+                length: x1 - x0,
+                cells: n,
+            }],
+        )
+    }
+
+    /// Number of cells.
+    pub fn len(&self) -> usize {
+        self.widths.len()
+    }
+
+    /// Always false: an axis has at least one cell.
+    pub fn is_empty(&self) -> bool {
+        self.widths.is_empty()
+    }
+
+    /// Face coordinates, `len() + 1` values, strictly increasing [m].
+    pub fn faces(&self) -> &[f64] {
+        &self.faces
+    }
+
+    /// Cell-centre coordinates [m].
+    pub fn centres(&self) -> &[f64] {
+        &self.centres
+    }
+
+    /// Cell widths Δx_i [m] (MFIX `DX`).
+    pub fn widths(&self) -> &[f64] {
+        &self.widths
+    }
+
+    /// Distance between the centres on either side of face k (k = 0..=len()) [m]:
+    /// (Δx_{k−1} + Δx_k)/2 inside, the adjacent cell's width at the two ends (MFIX ghost
+    /// cells have the width of their fluid neighbour, model-spec §3.1).
+    pub fn face_spacing(&self) -> &[f64] {
+        &self.face_spacing
+    }
+
+    /// Lower end of the axis [m].
+    pub fn start(&self) -> f64 {
+        self.faces[0]
+    }
+
+    /// Upper end of the axis [m].
+    pub fn end(&self) -> f64 {
+        self.faces[self.faces.len() - 1]
+    }
+
+    /// Total length [m].
+    pub fn length(&self) -> f64 {
+        self.end() - self.start()
+    }
+
+    /// Linear-interpolation weight of cell i at its upper face i+½ (MFIX AVG_X,
+    /// model-spec §4.1): f = w φ_i + (1 − w) φ_{i+1} with w = Δx_{i+1}/(Δx_i + Δx_{i+1}).
+    /// Valid for i + 1 < len().
+    pub fn interpolation_weight(&self, i: usize) -> f64 {
+        self.widths[i + 1] / (self.widths[i] + self.widths[i + 1])
+    }
+
+    /// The cell that contains `x`: faces[i] ≤ x < faces[i+1], and the last cell for
+    /// x = end(). `None` outside the axis or for NaN.
+    pub fn locate(&self, x: f64) -> Option<usize> {
+        if !(x >= self.start() && x <= self.end()) {
+            return None;
+        }
+        let k = self.faces.partition_point(|&f| f <= x);
+        Some(k.saturating_sub(1).min(self.len() - 1))
+    }
+
+    /// Smallest and largest cell width [m].
+    pub fn width_range(&self) -> (f64, f64) {
+        self.widths
+            .iter()
+            .fold((f64::INFINITY, 0.0_f64), |(lo, hi), &w| {
+                (lo.min(w), hi.max(w))
+            })
+    }
+
+    /// Largest ratio of adjacent widths, max over i of max(w_{i+1}/w_i, w_i/w_{i+1}) (1 for a
+    /// single cell).
+    pub fn max_adjacent_ratio(&self) -> f64 {
+        self.widths
+            .windows(2)
+            .map(|p| (p[1] / p[0]).max(p[0] / p[1]))
+            .fold(1.0, f64::max)
+    }
+}
