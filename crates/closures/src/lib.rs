@@ -1,2 +1,38 @@
-//! runout-closures.
+//! runout-closures: the constitutive closures of the two-fluid model exactly as MFIX 21.3.2
+//! computes them for the paper's cases (`shared/docs/model-spec.md` §2; paper Eqs. 6–10).
+//!
+//! Pure, allocation-free `f64` functions of a small state, each citing its equation:
+//! - [`radial`]: g0 (Carnahan–Starling as MFIX codes it, Ma–Ahmadi) and dg0/dεs (§2.1);
+//! - [`kinetic`]: Lun et al. (1984) as MFIX/Agrawal code it, α = 1.6, with the gas-modified
+//!   μ*, κ* (§2.2), and the collisional dissipation γ (§1.3);
+//! - [`friction`]: Schaeffer with P* (§2.4.1), Princeton (§2.4.2), K_cp = dP_s/dεs (§2.5);
+//! - [`drag`]: Syamlal–O'Brien, Gidaspow, blended Gidaspow, Wen–Yu, the wall Wen–Yu estimate
+//!   and the single-particle KT drag (§2.6);
+//! - [`energy`]: the granular-energy sources Π, J_vis, J_slip (§1.3);
+//! - [`stress`]: additive assembly of kinetic and frictional stresses (§2.3);
+//! - [`guards`]: the small-value guards of §2.7;
+//! - [`cell`]: the full closure set of one cell state, [`evaluate`].
+//!
+//! Where the paper's printed equations differ from MFIX the code follows MFIX (model-spec
+//! §3.10): stresses are summed, not switched (P-Eq. 5); the P-Eq. 9 exponent is n − 1; the
+//! compaction exponent is 1.03, not 0; there is no A(εg* − εg)^10 branch with Princeton.
+//!
+//! Units are SI throughout; angles enter in degrees and are converted once
+//! ([`friction::FrictionParams::new`]).
 #![deny(missing_docs)]
+
+pub mod cell;
+pub mod drag;
+pub mod energy;
+pub mod friction;
+pub mod guards;
+pub mod kinetic;
+pub mod radial;
+pub mod stress;
+
+pub use cell::{evaluate, CellState, ClosureParams, ClosureSet, Gas, Particles};
+pub use drag::{Drag, DragInputs};
+pub use friction::{FrictionModel, FrictionParams, FrictionalStress};
+pub use kinetic::{GasCoupling, KineticStress, SolidsState};
+pub use radial::RadialDistribution;
+pub use stress::SolidsStress;
