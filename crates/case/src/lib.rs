@@ -1,2 +1,20 @@
-//! runout-case.
+//! runout-case: the RON case schema, its validation, sweep expansion and fidelity presets.
+//!
+//! Three kinds of file live under `cases/`:
+//! - `Case(...)`: one simulation ([`Case`]);
+//! - `Sweep(...)`: a base case plus parameter lists, expanded into named cases ([`Sweep`]);
+//! - `Analytic(...)`: the closed-form profiles of family A ([`Analytic`]).
+//!
+//! [`load`] reads any of them, validates every field before anything runs, and reports
+//! errors that name the file, the field path and the allowed range.
 #![deny(missing_docs)]
+
+mod load;
+mod schema;
+mod sweep;
+mod validate;
+
+pub use load::{load, load_case, CaseError, Fidelity, Loaded, SourcedCase};
+pub use schema::*;
+pub use sweep::{expand, Param, Sweep};
+pub use validate::{validate_analytic, validate_case, FieldError};

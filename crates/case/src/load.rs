@@ -1,0 +1,283 @@
+//! Reading case, sweep and analytic files, with errors that name the file.
+
+use std::fmt;
+use std::path::{Path, PathBuf};
+use std::str::FromStr;
+
+use runout_mesh::{Grid, MeshError};
+
+use crate::schema::{Analytic, Case};
+use crate::sweep::{expand, Sweep};
+use crate::validate::{validate_analytic, validate_case, FieldError};
+
+/// Anything wrong with an input file, always naming the file.
+#[derive(Debug, thiserror::Error)]
+pub enum CaseError {
+    /// The file could not be read.
+    #[error("{file}: cannot read: {source}")]
+    Io {
+        /// the file
+        file: PathBuf,
+        /// the I/O error
+        source: std::io::Error,
+    },
+    /// The file is not valid RON for its kind (syntax, unknown or missing field, bad variant).
+    #[error("{file}:{line}:{col}: {message}")]
+    Parse {
+        /// the file
+        file: PathBuf,
+        /// 1-based line
+        line: usize,
+        /// 1-based column
+        col: usize,
+        /// what the parser said
+        message: String,
+    },
+    /// The file does not start with `Case(`, `Sweep(` or `Analytic(`.
+    #[error(
+        "{file}: unknown file kind `{found}`: expected Case(...), Sweep(...) or Analytic(...)"
+    )]
+    Kind {
+        /// the file
+        file: PathBuf,
+        /// the leading word found
+        found: String,
+    },
+    /// Fields out of range.
+    #[error("{}", format_invalid(file, case, errors))]
+    Invalid {
+        /// the file the values came from (for an expanded sweep: the sweep file)
+        file: PathBuf,
+        /// the (expanded) case name
+        case: String,
+        /// every field error found
+        errors: Vec<FieldError>,
+    },
+    /// A sweep that cannot be expanded.
+    #[error("{file}: {field}: {message}")]
+    Sweep {
+        /// the sweep file
+        file: PathBuf,
+        /// the sweep field
+        field: String,
+        /// what is wrong
+        message: String,
+    },
+}
+
+fn format_invalid(file: &Path, case: &str, errors: &[FieldError]) -> String {
+    let mut s = format!(
+        "{}: case `{case}`: {} invalid field{}",
+        file.display(),
+        errors.len(),
+        if errors.len() == 1 { "" } else { "s" }
+    );
+    for e in errors {
+        s.push_str(&format!("\n  {}: {e}", file.display()));
+    }
+    s
+}
+
+/// Simulation fidelity: same physics, different grid and end time (cases.md presets).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Fidelity {
+    /// seconds: a coarse grid and a short time, for CI
+    Smoke,
+    /// minutes: the README's default sweep
+    Coarse,
+    /// the paper's grids and times
+    Paper,
+}
+
+impl Fidelity {
+    /// Lower-case name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Fidelity::Smoke => "smoke",
+            Fidelity::Coarse => "coarse",
+            Fidelity::Paper => "paper",
+        }
+    }
+}
+
+impl fmt::Display for Fidelity {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Fidelity {
+    type Err = String;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        match s {
+            "smoke" => Ok(Fidelity::Smoke),
+            "coarse" => Ok(Fidelity::Coarse),
+            "paper" => Ok(Fidelity::Paper),
+            _ => Err(format!(
+                "unknown fidelity `{s}`: expected smoke, coarse or paper"
+            )),
+        }
+    }
+}
+
+impl Case {
+    /// This case at a fidelity: the grid coarsened and the end time set by the preset
+    /// (`Paper` returns the case as written). Monitor times after the end are kept; they
+    /// simply never fire.
+    pub fn at_fidelity(&self, fidelity: Fidelity) -> Case {
+        let preset = match fidelity {
+            Fidelity::Paper => return self.clone(),
+            Fidelity::Smoke => &self.fidelity.smoke,
+            Fidelity::Coarse => &self.fidelity.coarse,
+        };
+        let mut case = self.clone();
+        case.domain.x = self.domain.x.coarsened(preset.coarsen);
+        case.domain.y = self.domain.y.coarsened(preset.coarsen);
+        case.run.end_time = preset.end_time;
+        case
+    }
+
+    /// The case's grid.
+    pub fn grid(&self) -> Result<Grid, MeshError> {
+        Grid::from_specs(&self.domain.x, &self.domain.y)
+    }
+}
+
+/// A validated case and the file(s) it came from.
+#[derive(Clone, Debug)]
+pub struct SourcedCase {
+    /// the case (for a sweep: expanded and renamed)
+    pub case: Case,
+    /// the file named on the command line
+    pub file: PathBuf,
+    /// the base case file of a sweep
+    pub base: Option<PathBuf>,
+}
+
+/// What a file holds.
+#[derive(Clone, Debug)]
+pub enum Loaded {
+    /// one case, or the cases a sweep expands to
+    Cases(Vec<SourcedCase>),
+    /// a family-A description
+    Analytic(Analytic),
+}
+
+/// RON options: `Some(...)` may be omitted around optional values.
+fn ron_options() -> ron::Options {
+    ron::Options::default().with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME)
+}
+
+fn parse<T: serde::de::DeserializeOwned>(file: &Path, text: &str) -> Result<T, CaseError> {
+    ron_options().from_str(text).map_err(|e| CaseError::Parse {
+        file: file.to_path_buf(),
+        line: e.span.start.line,
+        col: e.span.start.col,
+        message: e.code.to_string(),
+    })
+}
+
+fn read(file: &Path) -> Result<String, CaseError> {
+    std::fs::read_to_string(file).map_err(|source| CaseError::Io {
+        file: file.to_path_buf(),
+        source,
+    })
+}
+
+/// The first identifier of a RON text, skipping whitespace, comments and `#![...]`.
+fn leading_word(text: &str) -> String {
+    let mut rest = text;
+    loop {
+        rest = rest.trim_start();
+        if let Some(r) = rest.strip_prefix("//") {
+            rest = r.split_once('\n').map_or("", |(_, tail)| tail);
+        } else if let Some(r) = rest.strip_prefix("/*") {
+            rest = r.split_once("*/").map_or("", |(_, tail)| tail);
+        } else if let Some(r) = rest.strip_prefix("#!") {
+            rest = r.split_once(']').map_or("", |(_, tail)| tail);
+        } else {
+            break;
+        }
+    }
+    rest.chars()
+        .take_while(|c| c.is_ascii_alphanumeric() || *c == '_')
+        .collect()
+}
+
+/// Reads and validates a `Case(...)` file.
+pub fn load_case(file: &Path) -> Result<Case, CaseError> {
+    let text = read(file)?;
+    let case: Case = parse(file, &text)?;
+    validate_case(&case).map_err(|errors| CaseError::Invalid {
+        file: file.to_path_buf(),
+        case: case.name.clone(),
+        errors,
+    })?;
+    Ok(case)
+}
+
+/// Reads any case-directory file, expands sweeps and validates everything.
+pub fn load(file: &Path) -> Result<Loaded, CaseError> {
+    let text = read(file)?;
+    match leading_word(&text).as_str() {
+        "Case" => Ok(Loaded::Cases(vec![SourcedCase {
+            case: load_case(file)?,
+            file: file.to_path_buf(),
+            base: None,
+        }])),
+        "Sweep" => {
+            let sweep: Sweep = parse(file, &text)?;
+            let base_path = file.parent().unwrap_or(Path::new(".")).join(&sweep.base);
+            let base = load_case(&base_path)?;
+            let cases = expand(&sweep, &base).map_err(|(field, message)| CaseError::Sweep {
+                file: file.to_path_buf(),
+                field,
+                message,
+            })?;
+            cases
+                .into_iter()
+                .map(|case| {
+                    validate_case(&case).map_err(|errors| CaseError::Invalid {
+                        file: file.to_path_buf(),
+                        case: case.name.clone(),
+                        errors,
+                    })?;
+                    Ok(SourcedCase {
+                        case,
+                        file: file.to_path_buf(),
+                        base: Some(base_path.clone()),
+                    })
+                })
+                .collect::<Result<Vec<_>, _>>()
+                .map(Loaded::Cases)
+        }
+        "Analytic" => {
+            let a: Analytic = parse(file, &text)?;
+            validate_analytic(&a).map_err(|errors| CaseError::Invalid {
+                file: file.to_path_buf(),
+                case: a.name.clone(),
+                errors,
+            })?;
+            Ok(Loaded::Analytic(a))
+        }
+        other => Err(CaseError::Kind {
+            file: file.to_path_buf(),
+            found: other.to_string(),
+        }),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::leading_word;
+
+    #[test]
+    fn leading_word_skips_comments_and_attributes() {
+        assert_eq!(
+            leading_word("// a\n/* b */ #![enable(implicit_some)]\n Sweep(x)"),
+            "Sweep"
+        );
+        assert_eq!(leading_word("Case("), "Case");
+        assert_eq!(leading_word("  ( a: 1 )"), "");
+    }
+}

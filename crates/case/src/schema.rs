@@ -1,0 +1,727 @@
+//! The RON schema of a case file: everything a run of the paper's case matrix states.
+//!
+//! Units are SI; angles are in degrees in files (converted to radians inside the solver).
+//! Every struct denies unknown fields, so a typo is an error, never silently ignored.
+//! Defaults are MFIX 21.3.2's (model-spec §5) unless a field says otherwise.
+
+use runout_mesh::{AxisSpec, Side, Sides};
+use serde::{Deserialize, Serialize};
+
+/// One simulation case (a `Case(...)` file).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Case {
+    /// Case name: letters, digits and `-_.=`, used as the run folder name.
+    pub name: String,
+    /// Free text: the paper figure, what varies, assumptions.
+    #[serde(default)]
+    pub description: String,
+    /// The rectangular domain and its grid.
+    pub domain: Domain,
+    /// The gas phase; `None` for a dry granular case (no gas momentum, no drag).
+    #[serde(default)]
+    pub gas: Option<Gas>,
+    /// Solids phases 1..M (the paper has M = 1; nothing assumes it).
+    pub solids: Vec<Solids>,
+    /// Closure choices.
+    #[serde(default)]
+    pub models: Models,
+    /// Boundary condition of each side; the floor is `south`.
+    pub boundaries: Sides<Boundary>,
+    /// Initial state.
+    pub initial: Initial,
+    /// Gravity and its schedule.
+    pub gravity: Gravity,
+    /// What is recorded during the run.
+    #[serde(default)]
+    pub monitors: Monitors,
+    /// Time stepping, tolerances and output.
+    pub run: RunControl,
+    /// Discretisation and iteration settings.
+    #[serde(default)]
+    pub numerics: Numerics,
+    /// The cheaper fidelities of this case (the paper fidelity is the case as written).
+    pub fidelity: FidelityPresets,
+}
+
+/// The domain rectangle, as a grid description per direction.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Domain {
+    /// along the channel (flow goes +x)
+    pub x: AxisSpec,
+    /// wall-normal; the floor is at the y origin
+    pub y: AxisSpec,
+}
+
+/// Gas properties (constant density and viscosity, MFIX `RO_G0`, `MU_G0`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Gas {
+    /// density ρ_g [kg m⁻³]
+    pub density: f64,
+    /// dynamic viscosity μ_g [Pa s]
+    pub viscosity: f64,
+    /// reference (ambient) pressure [Pa]
+    #[serde(default = "default_reference_pressure")]
+    pub reference_pressure: f64,
+}
+
+fn default_reference_pressure() -> f64 {
+    101_325.0
+}
+
+/// One solids phase: the material and its packing limits.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Solids {
+    /// label used in output
+    #[serde(default = "default_solids_name")]
+    pub name: String,
+    /// particle diameter d [m] (MFIX `D_P0`)
+    pub diameter: f64,
+    /// material density ρ_s [kg m⁻³] (MFIX `RO_S0`)
+    pub density: f64,
+    /// particle–particle restitution coefficient e [-] (MFIX `C_E`)
+    pub restitution: f64,
+    /// maximum packing ε_s,max = 1 − ε_g* [-] (MFIX `EP_STAR` = 1 − this)
+    pub max_packing: f64,
+    /// ε_s,min above which friction acts [-] (MFIX `EPS_F_MIN`, default 0.5)
+    #[serde(default = "default_friction_min_packing")]
+    pub friction_min_packing: f64,
+    /// internal friction angle δ_int [deg] (MFIX `PHI`)
+    pub internal_friction_angle: f64,
+}
+
+fn default_solids_name() -> String {
+    "solids".into()
+}
+
+fn default_friction_min_packing() -> f64 {
+    0.5
+}
+
+/// Closure choices (model-spec §2).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Models {
+    /// kinetic theory of the solids stresses
+    #[serde(default)]
+    pub kinetic_theory: KineticTheory,
+    /// radial distribution function at contact
+    #[serde(default)]
+    pub radial_distribution: RadialDistribution,
+    /// frictional stress model
+    #[serde(default)]
+    pub friction: Friction,
+    /// gas–solids drag
+    #[serde(default)]
+    pub drag: Drag,
+}
+
+impl Default for Models {
+    /// The paper's models: Lun 1984 with the θ PDE, Carnahan–Starling, Princeton friction,
+    /// Syamlal–O'Brien drag (MFIX's default drag; the paper does not state one).
+    fn default() -> Self {
+        Models {
+            kinetic_theory: KineticTheory::default(),
+            radial_distribution: RadialDistribution::default(),
+            friction: Friction::default(),
+            drag: Drag::default(),
+        }
+    }
+}
+
+/// Kinetic theory (MFIX `KT_TYPE`, model-spec §2.2).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub enum KineticTheory {
+    /// Lun et al. (1984) as MFIX codes it (Agrawal), with the granular-energy PDE
+    /// (paper Eq. 11). `alpha` is MFIX's `ALPHA` in the (2+α)/3 factor.
+    Lun1984 {
+        /// the (2+α)/3 viscosity factor's α [-] (MFIX parameter, 1.6)
+        #[serde(default = "default_alpha")]
+        alpha: f64,
+    },
+    /// Syamlal (1987) algebraic θ (production = dissipation), no PDE (MFIX 21.3.2 default).
+    Algebraic,
+}
+
+fn default_alpha() -> f64 {
+    1.6
+}
+
+impl Default for KineticTheory {
+    fn default() -> Self {
+        KineticTheory::Lun1984 {
+            alpha: default_alpha(),
+        }
+    }
+}
+
+/// Radial distribution at contact (MFIX `RDF_TYPE`, model-spec §2.1).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub enum RadialDistribution {
+    /// g0 = (1 − ε_s/2)/(1 − ε_s)³
+    #[default]
+    CarnahanStarling,
+    /// Ma & Ahmadi (1986)
+    MaAhmadi,
+}
+
+/// Frictional stress model (MFIX `FRICTION_MODEL`, model-spec §2.4).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub enum Friction {
+    /// no frictional stress
+    None,
+    /// Schaeffer (1987) with MFIX's plastic pressure P* (paper Eq. 8)
+    Schaeffer,
+    /// Srivastava & Sundaresan (2003), "Princeton" (paper Eqs. 9–10 as MFIX codes them)
+    #[default]
+    Princeton,
+}
+
+/// Gas–solids drag (MFIX `DRAG_TYPE`, model-spec §2.6).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub enum Drag {
+    /// Syamlal–O'Brien with MFIX `DRAG_C1`, `DRAG_D1`
+    SyamlalOBrien {
+        /// `DRAG_C1` [-]
+        #[serde(default = "default_drag_c1")]
+        c1: f64,
+        /// `DRAG_D1` [-]
+        #[serde(default = "default_drag_d1")]
+        d1: f64,
+    },
+    /// Gidaspow (Ergun below ε_g = 0.8, Wen–Yu above)
+    Gidaspow,
+    /// Gidaspow blended with an arctan switch
+    GidaspowBlend,
+    /// Wen–Yu at every ε_g
+    WenYu,
+}
+
+fn default_drag_c1() -> f64 {
+    0.8
+}
+
+fn default_drag_d1() -> f64 {
+    2.65
+}
+
+impl Default for Drag {
+    fn default() -> Self {
+        Drag::SyamlalOBrien {
+            c1: default_drag_c1(),
+            d1: default_drag_d1(),
+        }
+    }
+}
+
+/// What one side of the domain is.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub enum Boundary {
+    /// An impermeable wall with a condition for the gas and one for the solids.
+    Wall {
+        /// gas tangential-velocity condition
+        gas: GasWall,
+        /// solids tangential-velocity and granular-temperature condition
+        solids: SolidsWall,
+    },
+    /// A pressure outlet (gas and solids may leave or enter; zero normal gradients).
+    PressureOutlet {
+        /// the gas pressure held on the outlet
+        pressure: OutletPressure,
+    },
+}
+
+/// Gas condition on a wall (MFIX `NSW`, `FSW`, `PSW` with `BC_HW_G`, `BC_UW_G`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub enum GasWall {
+    /// zero velocity on the wall
+    NoSlip,
+    /// zero tangential stress
+    FreeSlip,
+    /// du/dn + h (u − u_w) = 0 (paper Eq. 12 for the gas)
+    PartialSlip {
+        /// h [m⁻¹]
+        h_u: f64,
+        /// wall velocity [m s⁻¹]
+        #[serde(default)]
+        u_w: f64,
+    },
+}
+
+/// Solids condition on a wall: the paper's subject (paper §2.2, model-spec §3).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub enum SolidsWall {
+    /// Zero solids velocity on the wall; zero granular-energy flux (MFIX NSW, `BC_JJ_PS = 0`).
+    NoSlip,
+    /// Zero tangential stress; zero granular-energy flux (MFIX FSW, `BC_JJ_PS = 0`).
+    FreeSlip,
+    /// User-set partial slip (paper Eqs. 12–13, MFIX PSW with `BC_JJ_PS = 0`):
+    /// du/dn + h_u (u − u_w) = 0 and dθ/dn + h_θ (θ − θ_w) = c, both in MFIX's manual
+    /// units (model-spec §3.3): h in m⁻¹, c in m s⁻² (no conductivity factor).
+    PartialSlip {
+        /// h_w^u [m⁻¹] (MFIX `BC_HW_S`)
+        h_u: f64,
+        /// wall velocity U_w [m s⁻¹] (MFIX `BC_UW_S`)
+        #[serde(default)]
+        u_w: f64,
+        /// h_w^θ [m⁻¹] (MFIX `BC_HW_THETA_M`)
+        h_theta: f64,
+        /// θ_w [m² s⁻²] (MFIX `BC_THETAW_M`)
+        theta_w: f64,
+        /// c_w [m s⁻²] (MFIX `BC_C_THETA_M`)
+        c: f64,
+    },
+    /// Johnson & Jackson (1987) with a constant specularity (paper Eqs. 14, 18–19;
+    /// model-spec §3.5–3.6).
+    JohnsonJackson {
+        /// specularity coefficient φ [-] (MFIX `PHIP`)
+        specularity: f64,
+        /// particle–wall restitution e_w [-] (MFIX `E_W`)
+        wall_restitution: f64,
+        /// wall friction angle δ_w [deg] (MFIX `PHI_W`)
+        wall_friction_angle: f64,
+        /// wall velocity [m s⁻¹] (MFIX `BC_UW_S`)
+        #[serde(default)]
+        u_w: f64,
+    },
+    /// Johnson–Jackson with Li & Benyahia's (2012) specularity φ(r), the paper's
+    /// "revisited JJ" (paper Eqs. 16–17 as MFIX codes them, model-spec §3.7).
+    RevisitedJohnsonJackson {
+        /// particle–wall restitution e_w [-]
+        wall_restitution: f64,
+        /// wall friction angle δ_w [deg]
+        wall_friction_angle: f64,
+        /// φ₀ override (MFIX `PHIP0`); computed from k when absent
+        #[serde(default)]
+        phi0: Option<f64>,
+        /// wall velocity [m s⁻¹]
+        #[serde(default)]
+        u_w: f64,
+    },
+    /// Jenkins (1992) small-friction, all-sliding limit (paper Eq. 20, model-spec §3.8).
+    Jenkins {
+        /// particle–wall restitution e_w [-]
+        wall_restitution: f64,
+        /// wall friction angle δ_w [deg]
+        wall_friction_angle: f64,
+        /// wall velocity [m s⁻¹]
+        #[serde(default)]
+        u_w: f64,
+    },
+}
+
+impl SolidsWall {
+    /// A short label for case names and messages, e.g. `jj-phi0.1`, `jenkins`.
+    pub fn label(&self) -> String {
+        match self {
+            SolidsWall::NoSlip => "noslip".into(),
+            SolidsWall::FreeSlip => "freeslip".into(),
+            SolidsWall::PartialSlip {
+                h_u, h_theta, c, ..
+            } => {
+                format!("ps-hu{h_u}-htheta{h_theta}-c{c}")
+            }
+            SolidsWall::JohnsonJackson { specularity, .. } => format!("jj-phi{specularity}"),
+            SolidsWall::RevisitedJohnsonJackson { .. } => "rjj".into(),
+            SolidsWall::Jenkins { .. } => "jenkins".into(),
+        }
+    }
+}
+
+/// Gas pressure held on an outlet.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub enum OutletPressure {
+    /// one pressure along the whole outlet [Pa]
+    Uniform(f64),
+    /// the gas's hydrostatic pressure along the outlet, p(r) = p0 + ρ_g g·(r − r0), with r0
+    /// the outlet's first corner (the west end of a north outlet); it follows the gravity
+    /// schedule (cases.md "Top outlet under tilted gravity"). The value is p0 [Pa].
+    Hydrostatic(f64),
+}
+
+/// Initial state: gas everywhere, solids in blocks.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Initial {
+    /// granular temperature outside the blocks [m² s⁻²]
+    #[serde(default = "default_initial_theta")]
+    pub theta: f64,
+    /// initial gas velocity (u, v) [m s⁻¹]
+    #[serde(default)]
+    pub gas_velocity: (f64, f64),
+    /// initial gas pressure field
+    #[serde(default)]
+    pub gas_pressure: InitialPressure,
+    /// rectangular blocks of solids, later blocks overwrite earlier ones
+    #[serde(default)]
+    pub regions: Vec<Block>,
+}
+
+fn default_initial_theta() -> f64 {
+    1e-5
+}
+
+/// Initial gas pressure.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub enum InitialPressure {
+    /// hydrostatic under the initial gravity, matching the top outlet
+    #[default]
+    Hydrostatic,
+    /// one value everywhere [Pa]
+    Uniform(f64),
+}
+
+/// A rectangle of solids.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Block {
+    /// (x0, x1) [m]
+    pub x: (f64, f64),
+    /// (y0, y1) [m]
+    pub y: (f64, f64),
+    /// one entry per solids phase
+    pub solids: Vec<BlockSolids>,
+}
+
+/// The state of one solids phase inside a block.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BlockSolids {
+    /// volume fraction ε_s [-]
+    pub eps_s: f64,
+    /// velocity (u, v) [m s⁻¹]
+    #[serde(default)]
+    pub velocity: (f64, f64),
+    /// granular temperature θ [m² s⁻²]
+    #[serde(default = "default_initial_theta")]
+    pub theta: f64,
+}
+
+/// Gravity. A slope is emulated by tilting gravity: g = (g sin α, −g cos α).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub enum Gravity {
+    /// Tilted by `slope` from the start.
+    Constant {
+        /// |g| [m s⁻²]
+        #[serde(default = "default_gravity")]
+        magnitude: f64,
+        /// slope α [deg]
+        slope: f64,
+    },
+    /// Vertical until solids first reach the floor, then tilted to `slope` (paper Fig. 3).
+    TiltOnImpact {
+        /// |g| [m s⁻²]
+        #[serde(default = "default_gravity")]
+        magnitude: f64,
+        /// slope α after impact [deg]
+        slope: f64,
+        /// a floor cell with ε_s at or above this counts as contact [-]
+        /// (assumed; the paper does not define "impact")
+        #[serde(default = "default_contact_eps_s")]
+        contact_eps_s: f64,
+    },
+}
+
+fn default_gravity() -> f64 {
+    9.80665
+}
+
+fn default_contact_eps_s() -> f64 {
+    0.01
+}
+
+impl Gravity {
+    /// The final slope [deg].
+    pub fn slope(&self) -> f64 {
+        match *self {
+            Gravity::Constant { slope, .. } | Gravity::TiltOnImpact { slope, .. } => slope,
+        }
+    }
+}
+
+/// Monitors (cases.md "stations and outputs").
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Monitors {
+    /// wall-normal profiles of ε_s, u_s, θ at a station and times
+    #[serde(default)]
+    pub profiles: Vec<Profile>,
+    /// wall coefficients (h_w^u, φ, COL, FRI, slip) of one wall cell over time
+    #[serde(default)]
+    pub wall_probes: Vec<WallProbe>,
+    /// front position and speed at gates
+    #[serde(default)]
+    pub front: Option<FrontTracker>,
+    /// domain totals over time: solids mass, ε_s-weighted mean u_s, front position
+    #[serde(default)]
+    pub bulk: Option<BulkSeries>,
+}
+
+/// Profiles against distance from the floor at one station.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Profile {
+    /// station x [m]
+    pub x: f64,
+    /// output times [s], increasing
+    pub times: Vec<f64>,
+}
+
+/// A probe of one wall cell's boundary coefficients over time.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WallProbe {
+    /// position along the wall [m] (x for south/north walls, y for west/east)
+    pub at: f64,
+    /// which wall
+    #[serde(default = "default_probe_side")]
+    pub side: Side,
+    /// sampling interval [s]
+    pub interval: f64,
+}
+
+fn default_probe_side() -> Side {
+    Side::South
+}
+
+/// Front tracking (cases.md family F): the front is the largest x whose floor-adjacent cell
+/// has ε_s ≥ `threshold`; the speed is recorded as the front crosses each gate.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FrontTracker {
+    /// ε_s threshold [-] (assumed 0.01 in cases.md)
+    pub threshold: f64,
+    /// x of the point gates are measured from [m]
+    #[serde(default)]
+    pub gate_origin: f64,
+    /// gate distances from `gate_origin` [m], strictly increasing
+    #[serde(default)]
+    pub gates: Vec<f64>,
+    /// sampling interval of the front position [s]
+    pub interval: f64,
+}
+
+/// Domain totals over time.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BulkSeries {
+    /// sampling interval [s]
+    pub interval: f64,
+    /// ε_s threshold of the front position in this series [-]
+    #[serde(default = "default_front_threshold")]
+    pub front_threshold: f64,
+}
+
+fn default_front_threshold() -> f64 {
+    0.01
+}
+
+/// Time stepping, tolerances, output.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RunControl {
+    /// simulated end time at paper fidelity [s]
+    pub end_time: f64,
+    /// time-step control
+    pub dt: TimeStep,
+    /// convergence tolerances
+    #[serde(default)]
+    pub tolerances: Tolerances,
+    /// interval between field outputs [s]
+    pub output_interval: f64,
+}
+
+/// Adaptive time-step control (model-spec §4.12).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TimeStep {
+    /// first Δt [s] (MFIX `DT`)
+    pub initial: f64,
+    /// smallest Δt before the run stops [s] (MFIX `DT_MIN`)
+    pub min: f64,
+    /// largest Δt [s] (MFIX `DT_MAX`)
+    pub max: f64,
+    /// factor of each change (MFIX `DT_FAC`, 0.9); 1 disables adaptation
+    #[serde(default = "default_dt_factor")]
+    pub factor: f64,
+}
+
+fn default_dt_factor() -> f64 {
+    0.9
+}
+
+/// Outer-iteration convergence (model-spec §4.11).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Tolerances {
+    /// sum of normalised continuity and momentum residuals (MFIX `TOL_RESID`)
+    #[serde(default = "default_tol_resid")]
+    pub residual: f64,
+    /// granular-energy residual (MFIX `TOL_RESID_TH`)
+    #[serde(default = "default_tol_resid_theta")]
+    pub theta_residual: f64,
+    /// a residual sum above this means divergence (MFIX `TOL_DIVERGE`)
+    #[serde(default = "default_tol_diverge")]
+    pub diverge: f64,
+    /// outer iterations per step before it counts as failed (MFIX `MAX_NIT`)
+    #[serde(default = "default_max_iterations")]
+    pub max_iterations: u32,
+}
+
+fn default_tol_resid() -> f64 {
+    1e-3
+}
+
+fn default_tol_resid_theta() -> f64 {
+    1e-4
+}
+
+fn default_tol_diverge() -> f64 {
+    1e4
+}
+
+fn default_max_iterations() -> u32 {
+    500
+}
+
+impl Default for Tolerances {
+    fn default() -> Self {
+        Tolerances {
+            residual: default_tol_resid(),
+            theta_residual: default_tol_resid_theta(),
+            diverge: default_tol_diverge(),
+            max_iterations: default_max_iterations(),
+        }
+    }
+}
+
+/// Discretisation settings (model-spec §4.2, §4.10).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Numerics {
+    /// convection scheme for every equation (MFIX default: first-order upwind)
+    #[serde(default)]
+    pub convection: Convection,
+    /// under-relaxation factors
+    #[serde(default)]
+    pub relaxation: Relaxation,
+}
+
+/// Convection scheme (MFIX `DISCRETIZE`).
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub enum Convection {
+    /// first-order upwind (MFIX 0, the default)
+    #[default]
+    Upwind,
+    /// Superbee TVD via deferred correction (MFIX 2)
+    Superbee,
+}
+
+/// Under-relaxation factors (MFIX `UR_FAC`, model-spec §4.10).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Relaxation {
+    /// gas pressure correction, `UR_FAC(1)`
+    #[serde(default = "ur_pressure")]
+    pub pressure: f64,
+    /// selective ε_s correction, `UR_FAC(2)`
+    #[serde(default = "ur_half")]
+    pub eps_s: f64,
+    /// momentum, `UR_FAC(3..5)`
+    #[serde(default = "ur_half")]
+    pub velocity: f64,
+    /// granular energy, `UR_FAC(8)`
+    #[serde(default = "ur_half")]
+    pub theta: f64,
+}
+
+fn ur_pressure() -> f64 {
+    0.8
+}
+
+fn ur_half() -> f64 {
+    0.5
+}
+
+impl Default for Relaxation {
+    fn default() -> Self {
+        Relaxation {
+            pressure: ur_pressure(),
+            eps_s: ur_half(),
+            velocity: ur_half(),
+            theta: ur_half(),
+        }
+    }
+}
+
+/// The cheaper fidelities of a case; both change only the grid and the end time.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct FidelityPresets {
+    /// seconds to run: for CI
+    pub smoke: Preset,
+    /// minutes to run: the README's default sweep
+    pub coarse: Preset,
+}
+
+/// A fidelity preset.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Preset {
+    /// cells are this many times wider in each direction [-]
+    pub coarsen: u32,
+    /// simulated end time [s]
+    pub end_time: f64,
+}
+
+/// Family A of cases.md: closed-form profiles of paper Eqs. 12–13 (no flow solver).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Analytic {
+    /// name of the family
+    pub name: String,
+    /// free text
+    #[serde(default)]
+    pub description: String,
+    /// distance over which the profiles are drawn, from the wall into the flow [m]
+    pub depth: f64,
+    /// velocity profiles of paper Eq. 12
+    pub velocity: AnalyticVelocity,
+    /// granular-temperature profiles of paper Eq. 13
+    pub temperature: AnalyticTemperature,
+}
+
+/// Parameters of the closed-form velocity profiles (paper Eq. 12, Fig. 1).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AnalyticVelocity {
+    /// flow velocity U away from the wall [m s⁻¹]
+    pub bulk: f64,
+    /// wall velocity U_w [m s⁻¹]
+    pub wall: f64,
+    /// h_w^u values, one profile each [m⁻¹]
+    pub h_u: Vec<f64>,
+}
+
+/// Parameters of the closed-form granular-temperature profiles (paper Eq. 13, Fig. 1).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct AnalyticTemperature {
+    /// θ away from the wall [m² s⁻²]
+    pub bulk: f64,
+    /// θ_w [m² s⁻²]
+    pub wall: f64,
+    /// h_w^θ values [m⁻¹]
+    pub h_theta: Vec<f64>,
+    /// c_w values [m s⁻²]
+    pub c: Vec<f64>,
+}

@@ -1,0 +1,257 @@
+//! Sweep files: a base case plus parameter lists, expanded into named cases.
+//!
+//! ```ron
+//! Sweep(
+//!     name: "S-JJ-phi",
+//!     base: "base.ron",                     // relative to the sweep file
+//!     set: [Diameter([5e-4])],              // fixed for every case of the sweep
+//!     vary: [Specularity([1.0, 0.1, 0.01])], // Cartesian product of all lists
+//! )
+//! ```
+//! expands to `S-JJ-phi_phi=1`, `S-JJ-phi_phi=0.1`, `S-JJ-phi_phi=0.01`.
+
+use serde::{Deserialize, Serialize};
+
+use crate::schema::{Boundary, Case, Gravity, SolidsWall};
+
+/// A sweep file (`Sweep(...)`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Sweep {
+    /// Sweep name; the prefix of every expanded case name (the table id of cases.md).
+    pub name: String,
+    /// Free text (paper figure, what varies, assumptions).
+    #[serde(default)]
+    pub description: String,
+    /// Path of the base case, relative to the sweep file.
+    pub base: String,
+    /// Parameters fixed for the whole sweep, one value each.
+    #[serde(default)]
+    pub set: Vec<Param>,
+    /// Parameters varied; the sweep is the Cartesian product of their lists.
+    #[serde(default)]
+    pub vary: Vec<Param>,
+}
+
+/// A sweepable parameter and its values. Each applies to every place of the case where it
+/// has a meaning, and is an error where it has none (e.g. `Specularity` on a case without a
+/// Johnson–Jackson wall).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub enum Param {
+    /// particle diameter of every solids phase [m]
+    Diameter(Vec<f64>),
+    /// specularity of every Johnson–Jackson wall [-]
+    Specularity(Vec<f64>),
+    /// h_w^u of every user partial-slip solids wall [m⁻¹]
+    PartialSlipHu(Vec<f64>),
+    /// h_w^θ of every user partial-slip solids wall [m⁻¹]
+    PartialSlipHTheta(Vec<f64>),
+    /// c_w of every user partial-slip solids wall [m s⁻²]
+    PartialSlipC(Vec<f64>),
+    /// slope of the gravity schedule [deg]
+    Slope(Vec<f64>),
+    /// the solids condition of every wall side
+    SolidsWalls(Vec<SolidsWall>),
+}
+
+impl Param {
+    /// Short key used in expanded case names.
+    pub fn key(&self) -> &'static str {
+        match self {
+            Param::Diameter(_) => "d",
+            Param::Specularity(_) => "phi",
+            Param::PartialSlipHu(_) => "hu",
+            Param::PartialSlipHTheta(_) => "htheta",
+            Param::PartialSlipC(_) => "cw",
+            Param::Slope(_) => "slope",
+            Param::SolidsWalls(_) => "wall",
+        }
+    }
+
+    /// Path-like name used in messages.
+    pub fn field(&self) -> &'static str {
+        match self {
+            Param::Diameter(_) => "Diameter",
+            Param::Specularity(_) => "Specularity",
+            Param::PartialSlipHu(_) => "PartialSlipHu",
+            Param::PartialSlipHTheta(_) => "PartialSlipHTheta",
+            Param::PartialSlipC(_) => "PartialSlipC",
+            Param::Slope(_) => "Slope",
+            Param::SolidsWalls(_) => "SolidsWalls",
+        }
+    }
+
+    /// Number of values.
+    pub fn len(&self) -> usize {
+        match self {
+            Param::Diameter(v)
+            | Param::Specularity(v)
+            | Param::PartialSlipHu(v)
+            | Param::PartialSlipHTheta(v)
+            | Param::PartialSlipC(v)
+            | Param::Slope(v) => v.len(),
+            Param::SolidsWalls(v) => v.len(),
+        }
+    }
+
+    /// Whether the list is empty.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Label of value `k` for case names.
+    pub fn label(&self, k: usize) -> String {
+        match self {
+            Param::Diameter(v)
+            | Param::Specularity(v)
+            | Param::PartialSlipHu(v)
+            | Param::PartialSlipHTheta(v)
+            | Param::PartialSlipC(v)
+            | Param::Slope(v) => format!("{}", v[k]),
+            Param::SolidsWalls(v) => v[k].label(),
+        }
+    }
+
+    /// Applies value `k` to `case`; `Err` says why it does not apply.
+    pub fn apply(&self, k: usize, case: &mut Case) -> Result<(), String> {
+        let on_walls = for_each_solids_wall;
+        match self {
+            Param::Diameter(v) => {
+                case.solids.iter_mut().for_each(|s| s.diameter = v[k]);
+                Ok(())
+            }
+            Param::Specularity(v) => {
+                on_walls(case, "a JohnsonJackson solids condition", &mut |w| {
+                    if let SolidsWall::JohnsonJackson { specularity, .. } = w {
+                        *specularity = v[k];
+                        true
+                    } else {
+                        false
+                    }
+                })
+            }
+            Param::PartialSlipHu(v) => on_walls(case, "a PartialSlip solids condition", &mut |w| {
+                if let SolidsWall::PartialSlip { h_u, .. } = w {
+                    *h_u = v[k];
+                    true
+                } else {
+                    false
+                }
+            }),
+            Param::PartialSlipHTheta(v) => {
+                on_walls(case, "a PartialSlip solids condition", &mut |w| {
+                    if let SolidsWall::PartialSlip { h_theta, .. } = w {
+                        *h_theta = v[k];
+                        true
+                    } else {
+                        false
+                    }
+                })
+            }
+            Param::PartialSlipC(v) => on_walls(case, "a PartialSlip solids condition", &mut |w| {
+                if let SolidsWall::PartialSlip { c, .. } = w {
+                    *c = v[k];
+                    true
+                } else {
+                    false
+                }
+            }),
+            Param::Slope(v) => {
+                match &mut case.gravity {
+                    Gravity::Constant { slope, .. } | Gravity::TiltOnImpact { slope, .. } => {
+                        *slope = v[k]
+                    }
+                }
+                Ok(())
+            }
+            Param::SolidsWalls(v) => on_walls(case, "any wall side", &mut |w| {
+                *w = v[k].clone();
+                true
+            }),
+        }
+    }
+}
+
+/// Calls `f` on the solids condition of every wall side; `f` says whether the wall had
+/// the field it sets. An error if no wall had it.
+fn for_each_solids_wall(
+    case: &mut Case,
+    what: &str,
+    f: &mut dyn FnMut(&mut SolidsWall) -> bool,
+) -> Result<(), String> {
+    let b = &mut case.boundaries;
+    let mut hits = 0;
+    for side in [&mut b.west, &mut b.east, &mut b.south, &mut b.north] {
+        if let Boundary::Wall { solids, .. } = side {
+            if f(solids) {
+                hits += 1;
+            }
+        }
+    }
+    if hits == 0 {
+        Err(format!("the base case has no wall with {what}"))
+    } else {
+        Ok(())
+    }
+}
+
+/// Expands `sweep` over `base` into named cases. Errors are (field path, message).
+pub fn expand(sweep: &Sweep, base: &Case) -> Result<Vec<Case>, (String, String)> {
+    let mut fixed = base.clone();
+    for (k, p) in sweep.set.iter().enumerate() {
+        if p.len() != 1 {
+            return Err((
+                format!("set[{k}] ({})", p.field()),
+                format!("exactly one value, found {}", p.len()),
+            ));
+        }
+        p.apply(0, &mut fixed)
+            .map_err(|m| (format!("set[{k}] ({})", p.field()), m))?;
+    }
+    for (k, p) in sweep.vary.iter().enumerate() {
+        if p.is_empty() {
+            return Err((
+                format!("vary[{k}] ({})", p.field()),
+                "at least one value".into(),
+            ));
+        }
+        let labels: Vec<String> = (0..p.len()).map(|i| p.label(i)).collect();
+        for i in 1..labels.len() {
+            if labels[..i].contains(&labels[i]) {
+                return Err((
+                    format!("vary[{k}] ({})[{i}]", p.field()),
+                    format!("a value not already listed ({})", labels[i]),
+                ));
+            }
+        }
+    }
+    let mut cases = Vec::new();
+    let mut index = vec![0usize; sweep.vary.len()];
+    loop {
+        let mut case = fixed.clone();
+        let mut name = sweep.name.clone();
+        for (p, &i) in sweep.vary.iter().zip(&index) {
+            p.apply(i, &mut case)
+                .map_err(|m| (format!("vary ({})", p.field()), m))?;
+            name.push_str(&format!("_{}={}", p.key(), p.label(i)));
+        }
+        case.name = name;
+        if !sweep.description.is_empty() {
+            case.description = format!("{}\n{}", sweep.description, case.description);
+        }
+        cases.push(case);
+        // odometer increment, last parameter fastest
+        let mut d = sweep.vary.len();
+        loop {
+            if d == 0 {
+                return Ok(cases);
+            }
+            d -= 1;
+            index[d] += 1;
+            if index[d] < sweep.vary[d].len() {
+                break;
+            }
+            index[d] = 0;
+        }
+    }
+}

@@ -1,0 +1,159 @@
+//! Every file under cases/ loads and validates, and the matrix has the size of cases.md.
+
+use std::path::{Path, PathBuf};
+
+use runout_case::{load, Fidelity, Loaded, SolidsWall};
+
+fn cases_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../cases")
+}
+
+fn load_cases(rel: &str) -> Vec<runout_case::SourcedCase> {
+    match load(&cases_dir().join(rel)).unwrap_or_else(|e| panic!("{e}")) {
+        Loaded::Cases(c) => c,
+        Loaded::Analytic(_) => panic!("{rel} is analytic"),
+    }
+}
+
+#[test]
+fn every_shipped_file_is_valid() {
+    let mut n = 0;
+    for family in ["sensitivity", "flume", "mfix", "analytic"] {
+        for entry in std::fs::read_dir(cases_dir().join(family)).unwrap() {
+            let path = entry.unwrap().path();
+            if path.extension().is_some_and(|e| e == "ron") {
+                load(&path).unwrap_or_else(|e| panic!("{e}"));
+                n += 1;
+            }
+        }
+    }
+    assert!(n >= 15, "only {n} case files found");
+}
+
+#[test]
+fn sensitivity_matrix_matches_cases_md() {
+    // cases.md family S: 3 + 3 + 3 + 1 + 5 + 3 + 6 + 6 runs
+    let expected = [
+        ("S-JJ-phi.ron", 3),
+        ("S-JJ-d.ron", 3),
+        ("S-JEN-d.ron", 3),
+        ("S-RJJ.ron", 1),
+        ("S-PS-hu.ron", 5),
+        ("S-PS-d.ron", 3),
+        ("S-PS-htheta.ron", 6),
+        ("S-PS-cw.ron", 6),
+    ];
+    for (file, count) in expected {
+        let cases = load_cases(&format!("sensitivity/{file}"));
+        assert_eq!(cases.len(), count, "{file}");
+    }
+    let phi = load_cases("sensitivity/S-JJ-phi.ron");
+    let names: Vec<&str> = phi.iter().map(|c| c.case.name.as_str()).collect();
+    assert_eq!(
+        names,
+        ["S-JJ-phi_phi=1", "S-JJ-phi_phi=0.1", "S-JJ-phi_phi=0.01"]
+    );
+    for (c, want) in phi.iter().zip([1.0, 0.1, 0.01]) {
+        // the floor and both ends carry the swept specularity (cases.md: same solids BC)
+        for side in [
+            &c.case.boundaries.south,
+            &c.case.boundaries.west,
+            &c.case.boundaries.east,
+        ] {
+            match side {
+                runout_case::Boundary::Wall {
+                    solids: SolidsWall::JohnsonJackson { specularity, .. },
+                    ..
+                } => {
+                    assert_eq!(*specularity, want)
+                }
+                other => panic!("unexpected {other:?}"),
+            }
+        }
+        assert_eq!(c.case.solids[0].diameter, 5e-4);
+    }
+}
+
+#[test]
+fn cartesian_product_of_two_lists() {
+    let cases = load_cases("sensitivity/S-PS-cw.ron");
+    let pairs: Vec<(f64, f64)> = cases
+        .iter()
+        .map(|c| {
+            let cw = match &c.case.boundaries.south {
+                runout_case::Boundary::Wall {
+                    solids: SolidsWall::PartialSlip { c, .. },
+                    ..
+                } => *c,
+                other => panic!("{other:?}"),
+            };
+            (cw, c.case.gravity.slope())
+        })
+        .collect();
+    assert_eq!(
+        pairs,
+        [
+            (0.1, 40.0),
+            (0.1, 0.0),
+            (1.0, 40.0),
+            (1.0, 0.0),
+            (10.0, 40.0),
+            (10.0, 0.0)
+        ]
+    );
+}
+
+#[test]
+fn flume_has_the_seven_gates_of_the_paper() {
+    let cases = load_cases("flume/F-JJ.ron");
+    assert_eq!(cases.len(), 2);
+    let front = cases[0].case.monitors.front.as_ref().unwrap();
+    let gates: Vec<f64> = (0..7).map(|k| 1.65 + 0.45 * k as f64).collect();
+    for (g, want) in front.gates.iter().zip(&gates) {
+        assert!((g - want).abs() < 1e-12, "{g} vs {want}");
+    }
+    assert_eq!(front.gates.len(), 7);
+}
+
+#[test]
+fn paper_grids_have_the_papers_cell_sizes() {
+    // 20 m × 1.8 m with 0.02 m × 0.005 m focus cells (paper Fig. 2)
+    let s = load_cases("sensitivity/base.ron")[0]
+        .case
+        .grid()
+        .unwrap()
+        .summary();
+    assert!((s.x_range.1 - 20.0).abs() < 1e-12 && (s.y_range.1 - 1.8).abs() < 1e-12);
+    assert!((s.dx_min - 0.02).abs() < 1e-12 && (s.dy_min - 0.005).abs() < 1e-12);
+    // 7.5 m × 1.8 m with 0.01 m × 0.01 m cells (paper Fig. 11)
+    let s = load_cases("flume/base.ron")[0]
+        .case
+        .grid()
+        .unwrap()
+        .summary();
+    assert!((s.x_range.1 - 7.5).abs() < 1e-12 && (s.y_range.1 - 1.8).abs() < 1e-12);
+    assert!((s.dx_min - 0.01).abs() < 1e-12 && (s.dy_min - 0.01).abs() < 1e-12);
+    // family M: 200 × 50 uniform cells of 0.02 m × 0.01 m
+    let g = load_cases("mfix/M-slide.ron")[0].case.grid().unwrap();
+    assert_eq!((g.nx(), g.ny()), (200, 50));
+}
+
+#[test]
+fn fidelity_changes_only_grid_and_end_time() {
+    let case = load_cases("sensitivity/base.ron").remove(0).case;
+    for f in [Fidelity::Smoke, Fidelity::Coarse] {
+        let mut c = case.at_fidelity(f);
+        assert!(c.grid().unwrap().cell_count() < case.grid().unwrap().cell_count());
+        // restore the two fields; everything else must be identical
+        c.domain = case.domain.clone();
+        c.run.end_time = case.run.end_time;
+        assert_eq!(c, case);
+    }
+    assert_eq!(case.at_fidelity(Fidelity::Paper), case);
+    let smoke = case.at_fidelity(Fidelity::Smoke);
+    assert_eq!(smoke.run.end_time, case.fidelity.smoke.end_time);
+    // the block must still be resolved on the smoke grid
+    let g = smoke.grid().unwrap();
+    let b = &smoke.initial.regions[0];
+    assert!(g.locate(b.x.0, b.y.0).unwrap() != g.locate(b.x.1, b.y.1).unwrap());
+}
