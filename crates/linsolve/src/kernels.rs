@@ -1,0 +1,104 @@
+//! Vector kernels shared by the iterative solvers.
+//!
+//! Above [`PAR_MIN_LEN`] entries the loops run on rayon. Reductions are split into at most
+//! [`N_PARTIALS`] fixed chunks whose partial sums are added in a fixed order, so a dot
+//! product gives the same bits on every run regardless of work stealing.
+
+use rayon::prelude::*;
+
+/// Vectors shorter than this are processed serially (rayon's fork/join overhead of a few
+/// microseconds exceeds the work below about 16k entries).
+pub(crate) const PAR_MIN_LEN: usize = 1 << 14;
+
+/// Number of fixed partial sums in a parallel reduction.
+const N_PARTIALS: usize = 32;
+
+fn chunk_len(n: usize) -> usize {
+    n.div_ceil(N_PARTIALS).max(1)
+}
+
+#[inline]
+fn dot_serial(x: &[f64], y: &[f64]) -> f64 {
+    // four independent accumulators let the compiler vectorise the loop
+    let mut acc = [0.0f64; 4];
+    let mut xc = x.chunks_exact(4);
+    let mut yc = y.chunks_exact(4);
+    for (a, b) in (&mut xc).zip(&mut yc) {
+        acc[0] += a[0] * b[0];
+        acc[1] += a[1] * b[1];
+        acc[2] += a[2] * b[2];
+        acc[3] += a[3] * b[3];
+    }
+    let tail: f64 = xc
+        .remainder()
+        .iter()
+        .zip(yc.remainder())
+        .map(|(a, b)| a * b)
+        .sum();
+    (acc[0] + acc[1]) + (acc[2] + acc[3]) + tail
+}
+
+/// x · y, deterministic.
+pub(crate) fn dot(x: &[f64], y: &[f64]) -> f64 {
+    debug_assert_eq!(x.len(), y.len());
+    let n = x.len();
+    if n < PAR_MIN_LEN {
+        return dot_serial(x, y);
+    }
+    let c = chunk_len(n);
+    let mut partial = [0.0f64; N_PARTIALS];
+    partial
+        .par_iter_mut()
+        .zip(x.par_chunks(c).zip(y.par_chunks(c)))
+        .for_each(|(p, (a, b))| *p = dot_serial(a, b));
+    partial.iter().sum()
+}
+
+/// ‖x‖₂.
+pub(crate) fn norm2(x: &[f64]) -> f64 {
+    dot(x, x).sqrt()
+}
+
+/// Applies `f(i, &mut y_i)` to every entry, in parallel above [`PAR_MIN_LEN`].
+pub(crate) fn for_each_indexed<F>(y: &mut [f64], f: F)
+where
+    F: Fn(usize, &mut f64) + Sync + Send,
+{
+    let n = y.len();
+    if n < PAR_MIN_LEN {
+        y.iter_mut().enumerate().for_each(|(i, v)| f(i, v));
+    } else {
+        let c = chunk_len(n);
+        y.par_chunks_mut(c).enumerate().for_each(|(ci, chunk)| {
+            let base = ci * c;
+            chunk
+                .iter_mut()
+                .enumerate()
+                .for_each(|(i, v)| f(base + i, v));
+        });
+    }
+}
+
+/// y ← y + α x.
+pub(crate) fn axpy(alpha: f64, x: &[f64], y: &mut [f64]) {
+    for_each_indexed(y, |i, v| *v += alpha * x[i]);
+}
+
+/// Returns true when every entry is finite.
+pub(crate) fn all_finite(x: &[f64]) -> bool {
+    if x.len() < PAR_MIN_LEN {
+        x.iter().all(|v| v.is_finite())
+    } else {
+        x.par_chunks(chunk_len(x.len()))
+            .all(|c| c.iter().all(|v| v.is_finite()))
+    }
+}
+
+/// Index of the first non-finite entry, if any.
+pub(crate) fn first_non_finite(x: &[f64]) -> Option<usize> {
+    if all_finite(x) {
+        None
+    } else {
+        x.iter().position(|v| !v.is_finite())
+    }
+}

@@ -1,0 +1,436 @@
+//! The 5-point structured matrix and its fixed sparsity pattern.
+//!
+//! Cells of an `nx × ny` block are numbered `k = i + nx·j` (x fastest, as MFIX's IJK).
+//! Each row uses MFIX's sign convention (model-spec §4; Patankar 1980 §5.2):
+//!
+//! $$ a_P φ_P = a_E φ_E + a_W φ_W + a_N φ_N + a_S φ_S + b, $$
+//!
+//! so the matrix has `a_P` on the diagonal and `−a_nb` off it. A link that points out of
+//! the block (e.g. `a_W` in column `i = 0`) is ignored: boundary conditions must already be
+//! folded into `a_P` and `b`, as MFIX does. A [`CellKind::Fixed`] cell keeps only its
+//! diagonal, `a_P φ_P = b` (a pinned reference pressure, an obstacle, a dead cell);
+//! the solvers eliminate the links of active cells into fixed ones symmetrically, moving
+//! `a_nb φ_fixed` to the right-hand side, so a symmetric pressure matrix stays symmetric.
+
+use rayon::prelude::*;
+
+use crate::kernels::PAR_MIN_LEN;
+use crate::LinSolveError;
+
+/// Whether a cell is an unknown or has a prescribed value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CellKind {
+    /// An ordinary unknown coupled to its neighbours.
+    Active,
+    /// Value fixed by its own row, `a_P φ_P = b` (neighbour links ignored).
+    Fixed,
+}
+
+/// The sparsity pattern: an `nx × ny` block of cells and which of them are fixed.
+/// Set once per grid; the values are refilled many times.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Pattern {
+    nx: usize,
+    ny: usize,
+    fixed: Vec<bool>,
+}
+
+impl Pattern {
+    /// All cells active.
+    pub fn new(nx: usize, ny: usize) -> Result<Self, LinSolveError> {
+        if nx == 0 || ny == 0 {
+            return Err(LinSolveError::DimensionMismatch {
+                what: "grid size nx·ny",
+                expected: 1,
+                got: 0,
+            });
+        }
+        Ok(Self {
+            nx,
+            ny,
+            fixed: vec![false; nx * ny],
+        })
+    }
+
+    /// Builds a pattern whose cell `(i, j)` has kind `kind(i, j)`.
+    pub fn from_fn(
+        nx: usize,
+        ny: usize,
+        kind: impl Fn(usize, usize) -> CellKind,
+    ) -> Result<Self, LinSolveError> {
+        let mut p = Self::new(nx, ny)?;
+        for j in 0..ny {
+            for i in 0..nx {
+                p.fixed[i + nx * j] = kind(i, j) == CellKind::Fixed;
+            }
+        }
+        Ok(p)
+    }
+
+    /// Marks cell `(i, j)` as fixed.
+    pub fn fix(&mut self, i: usize, j: usize) {
+        assert!(
+            i < self.nx && j < self.ny,
+            "cell ({i}, {j}) outside the block"
+        );
+        self.fixed[i + self.nx * j] = true;
+    }
+
+    /// Cells in x.
+    pub fn nx(&self) -> usize {
+        self.nx
+    }
+    /// Cells in y.
+    pub fn ny(&self) -> usize {
+        self.ny
+    }
+    /// Number of cells (= rows of the matrix).
+    pub fn len(&self) -> usize {
+        self.nx * self.ny
+    }
+    /// Always false (a pattern has at least one cell); for clippy's `len_without_is_empty`.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+    /// Linear index of cell `(i, j)`.
+    #[inline]
+    pub fn idx(&self, i: usize, j: usize) -> usize {
+        i + self.nx * j
+    }
+    /// Kind of cell `k`.
+    #[inline]
+    pub fn kind(&self, k: usize) -> CellKind {
+        if self.fixed[k] {
+            CellKind::Fixed
+        } else {
+            CellKind::Active
+        }
+    }
+    /// Per-cell "is fixed" flags, indexed by `k`.
+    pub fn fixed_mask(&self) -> &[bool] {
+        &self.fixed
+    }
+}
+
+/// A 5-point matrix with its right-hand side, `a_P φ_P = Σ a_nb φ_nb + b`.
+///
+/// Coefficient vectors are public so that assembly code can fill them directly (in
+/// parallel, e.g. `a.a_p.par_chunks_mut(nx)` row by row); their lengths never change.
+#[derive(Clone, Debug)]
+pub struct Stencil5 {
+    pattern: Pattern,
+    /// Centre coefficient a_P.
+    pub a_p: Vec<f64>,
+    /// East link a_E (to `k + 1`).
+    pub a_e: Vec<f64>,
+    /// West link a_W (to `k − 1`).
+    pub a_w: Vec<f64>,
+    /// North link a_N (to `k + nx`).
+    pub a_n: Vec<f64>,
+    /// South link a_S (to `k − nx`).
+    pub a_s: Vec<f64>,
+    /// Source b.
+    pub b: Vec<f64>,
+}
+
+impl Stencil5 {
+    /// All coefficients zero.
+    pub fn new(pattern: Pattern) -> Self {
+        let n = pattern.len();
+        Self {
+            pattern,
+            a_p: vec![0.0; n],
+            a_e: vec![0.0; n],
+            a_w: vec![0.0; n],
+            a_n: vec![0.0; n],
+            a_s: vec![0.0; n],
+            b: vec![0.0; n],
+        }
+    }
+
+    /// The sparsity pattern.
+    pub fn pattern(&self) -> &Pattern {
+        &self.pattern
+    }
+    /// Number of unknowns.
+    pub fn len(&self) -> usize {
+        self.pattern.len()
+    }
+    /// Always false; see [`Pattern::is_empty`].
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+
+    /// y = A x for the full matrix described in the module docs.
+    pub fn matvec(&self, x: &[f64], y: &mut [f64]) -> Result<(), LinSolveError> {
+        check_len("x", self.len(), x.len())?;
+        check_len("y", self.len(), y.len())?;
+        let c = self.coeffs();
+        apply5(&c, Some(self.pattern.fixed_mask()), x, y);
+        Ok(())
+    }
+
+    /// r = b − A x.
+    pub fn residual(&self, x: &[f64], r: &mut [f64]) -> Result<(), LinSolveError> {
+        self.matvec(x, r)?;
+        let b = &self.b;
+        crate::kernels::for_each_indexed(r, |k, v| *v = b[k] - *v);
+        Ok(())
+    }
+
+    /// True relative residual ‖b − A x‖₂ / ‖b‖₂ (the absolute norm when b = 0), using
+    /// `work` (length n) as scratch.
+    pub fn rel_residual(&self, x: &[f64], work: &mut [f64]) -> Result<f64, LinSolveError> {
+        self.residual(x, work)?;
+        let bn = crate::kernels::norm2(&self.b);
+        let rn = crate::kernels::norm2(work);
+        Ok(if bn > 0.0 { rn / bn } else { rn })
+    }
+
+    pub(crate) fn coeffs(&self) -> Coeffs<'_> {
+        Coeffs {
+            nx: self.pattern.nx,
+            ny: self.pattern.ny,
+            ap: &self.a_p,
+            ae: &self.a_e,
+            aw: &self.a_w,
+            an: &self.a_n,
+            as_: &self.a_s,
+        }
+    }
+
+    /// Checks that all coefficients are finite and every diagonal is non-zero.
+    pub(crate) fn validate_coefficients(&self) -> Result<(), LinSolveError> {
+        for (name, v) in [
+            ("a_p", &self.a_p),
+            ("a_e", &self.a_e),
+            ("a_w", &self.a_w),
+            ("a_n", &self.a_n),
+            ("a_s", &self.a_s),
+        ] {
+            check_len(name, self.len(), v.len())?;
+            if let Some(cell) = crate::kernels::first_non_finite(v) {
+                return Err(LinSolveError::NonFinite { what: name, cell });
+            }
+        }
+        check_len("b", self.len(), self.b.len())?;
+        if let Some(cell) = self.a_p.iter().position(|&d| d == 0.0) {
+            return Err(LinSolveError::ZeroDiagonal { cell });
+        }
+        Ok(())
+    }
+
+    /// Checks that b is finite.
+    pub(crate) fn validate_rhs(&self) -> Result<(), LinSolveError> {
+        check_len("b", self.len(), self.b.len())?;
+        match crate::kernels::first_non_finite(&self.b) {
+            Some(cell) => Err(LinSolveError::NonFinite { what: "b", cell }),
+            None => Ok(()),
+        }
+    }
+}
+
+pub(crate) fn check_len(
+    what: &'static str,
+    expected: usize,
+    got: usize,
+) -> Result<(), LinSolveError> {
+    if expected == got {
+        Ok(())
+    } else {
+        Err(LinSolveError::DimensionMismatch {
+            what,
+            expected,
+            got,
+        })
+    }
+}
+
+/// Borrowed coefficient arrays of a 5-point operator.
+#[derive(Clone, Copy)]
+pub(crate) struct Coeffs<'a> {
+    pub nx: usize,
+    pub ny: usize,
+    pub ap: &'a [f64],
+    pub ae: &'a [f64],
+    pub aw: &'a [f64],
+    pub an: &'a [f64],
+    pub as_: &'a [f64],
+}
+
+/// The reduced operator the solvers work on: links out of the block, into fixed cells
+/// and out of fixed cells are zero, so `apply` needs no masks.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Op5 {
+    pub nx: usize,
+    pub ny: usize,
+    pub ap: Vec<f64>,
+    pub ae: Vec<f64>,
+    pub aw: Vec<f64>,
+    pub an: Vec<f64>,
+    pub as_: Vec<f64>,
+}
+
+impl Op5 {
+    pub fn zeros(nx: usize, ny: usize) -> Self {
+        let n = nx * ny;
+        Self {
+            nx,
+            ny,
+            ap: vec![0.0; n],
+            ae: vec![0.0; n],
+            aw: vec![0.0; n],
+            an: vec![0.0; n],
+            as_: vec![0.0; n],
+        }
+    }
+
+    pub fn len(&self) -> usize {
+        self.nx * self.ny
+    }
+
+    pub fn coeffs(&self) -> Coeffs<'_> {
+        Coeffs {
+            nx: self.nx,
+            ny: self.ny,
+            ap: &self.ap,
+            ae: &self.ae,
+            aw: &self.aw,
+            an: &self.an,
+            as_: &self.as_,
+        }
+    }
+
+    /// Copies `a` into `self`, dropping links out of the block and to/from fixed cells.
+    pub fn reduce_from(&mut self, a: &Stencil5) {
+        let (nx, ny) = (a.pattern.nx, a.pattern.ny);
+        debug_assert_eq!(self.len(), a.len());
+        let fixed = a.pattern.fixed_mask();
+        let rows = self
+            .ap
+            .par_chunks_mut(nx)
+            .zip(self.ae.par_chunks_mut(nx))
+            .zip(self.aw.par_chunks_mut(nx))
+            .zip(self.an.par_chunks_mut(nx))
+            .zip(self.as_.par_chunks_mut(nx))
+            .enumerate()
+            .with_min_len(rows_per_task(nx));
+        rows.for_each(|(j, ((((ap, ae), aw), an), as_))| {
+            for i in 0..nx {
+                let k = i + nx * j;
+                ap[i] = a.a_p[k];
+                if fixed[k] {
+                    (ae[i], aw[i], an[i], as_[i]) = (0.0, 0.0, 0.0, 0.0);
+                    continue;
+                }
+                let keep =
+                    |inside: bool, nb: usize, v: f64| if inside && !fixed[nb] { v } else { 0.0 };
+                ae[i] = keep(i + 1 < nx, k + 1, a.a_e[k]);
+                aw[i] = keep(i > 0, k.wrapping_sub(1), a.a_w[k]);
+                an[i] = keep(j + 1 < ny, k + nx, a.a_n[k]);
+                as_[i] = keep(j > 0, k.wrapping_sub(nx), a.a_s[k]);
+            }
+        });
+    }
+}
+
+/// Right-hand side of the reduced system: active cells get `a_nb φ_fixed` of their fixed
+/// neighbours (φ_fixed = b/a_P of that cell) added to b.
+pub(crate) fn reduced_rhs(a: &Stencil5, b_eff: &mut [f64]) {
+    let p = &a.pattern;
+    let (nx, ny) = (p.nx, p.ny);
+    let fixed = p.fixed_mask();
+    let val = |k: usize| a.b[k] / a.a_p[k];
+    crate::kernels::for_each_indexed(b_eff, |k, v| {
+        let mut s = a.b[k];
+        if !fixed[k] {
+            let (i, j) = (k % nx, k / nx);
+            if i + 1 < nx && fixed[k + 1] {
+                s += a.a_e[k] * val(k + 1);
+            }
+            if i > 0 && fixed[k - 1] {
+                s += a.a_w[k] * val(k - 1);
+            }
+            if j + 1 < ny && fixed[k + nx] {
+                s += a.a_n[k] * val(k + nx);
+            }
+            if j > 0 && fixed[k - nx] {
+                s += a.a_s[k] * val(k - nx);
+            }
+        }
+        *v = s;
+    });
+}
+
+pub(crate) fn rows_per_task(nx: usize) -> usize {
+    (PAR_MIN_LEN / nx.max(1)).max(1)
+}
+
+/// y = A x for a 5-point operator; rows of `fixed` cells use only the diagonal.
+pub(crate) fn apply5(c: &Coeffs<'_>, fixed: Option<&[bool]>, x: &[f64], y: &mut [f64]) {
+    let (nx, ny) = (c.nx, c.ny);
+    // one row at a time, each term as a separate branch-free pass over the row (in L1)
+    let row = |j: usize, yr: &mut [f64]| {
+        let o = nx * j;
+        let r = o..o + nx;
+        let xc = &x[r.clone()];
+        for ((y, a), v) in yr.iter_mut().zip(&c.ap[r.clone()]).zip(xc) {
+            *y = a * v;
+        }
+        for ((y, a), v) in yr[..nx - 1]
+            .iter_mut()
+            .zip(&c.ae[o..o + nx - 1])
+            .zip(&xc[1..])
+        {
+            *y -= a * v;
+        }
+        for ((y, a), v) in yr[1..].iter_mut().zip(&c.aw[o + 1..o + nx]).zip(xc) {
+            *y -= a * v;
+        }
+        if j + 1 < ny {
+            for ((y, a), v) in yr
+                .iter_mut()
+                .zip(&c.an[r.clone()])
+                .zip(&x[o + nx..o + 2 * nx])
+            {
+                *y -= a * v;
+            }
+        }
+        if j > 0 {
+            for ((y, a), v) in yr.iter_mut().zip(&c.as_[r.clone()]).zip(&x[o - nx..o]) {
+                *y -= a * v;
+            }
+        }
+        if let Some(f) = fixed {
+            for (i, y) in yr.iter_mut().enumerate() {
+                if f[o + i] {
+                    *y = c.ap[o + i] * xc[i];
+                }
+            }
+        }
+    };
+    if nx * ny < PAR_MIN_LEN {
+        y.chunks_mut(nx).enumerate().for_each(|(j, yr)| row(j, yr));
+    } else {
+        y.par_chunks_mut(nx)
+            .enumerate()
+            .with_min_len(rows_per_task(nx))
+            .for_each(|(j, yr)| row(j, yr));
+    }
+}
+
+/// r = b − A x for the reduced operator.
+pub(crate) fn residual5(c: &Coeffs<'_>, b: &[f64], x: &[f64], r: &mut [f64]) {
+    apply5(c, None, x, r);
+    crate::kernels::for_each_indexed(r, |k, v| *v = b[k] - *v);
+}
+
+/// Sets x = b/a_P in the fixed cells (exactly what their rows say), so that the residual of
+/// the full system equals that of the reduced one.
+pub(crate) fn set_fixed_values(a: &Stencil5, x: &mut [f64]) {
+    for (k, &f) in a.pattern.fixed_mask().iter().enumerate() {
+        if f {
+            x[k] = a.b[k] / a.a_p[k];
+        }
+    }
+}
