@@ -2,7 +2,10 @@
 //!
 //! - `runout check <files or dirs...>`: validate case, sweep and analytic files and list the
 //!   cases they expand to;
-//! - `runout mesh <file>`: print the grid summary of a case (or of each case of a sweep).
+//! - `runout mesh <file>`: print the grid summary of a case (or of each case of a sweep);
+//! - `runout closures --eps-s … --theta …`: every closure value at one state, as JSON.
+
+mod cmd_closures;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -40,6 +43,9 @@ enum Command {
         #[arg(long, default_value = "paper", value_parser = parse_fidelity)]
         fidelity: Fidelity,
     },
+    /// Print every closure value (kinetic theory, friction, drag, K_cp, granular-energy
+    /// sources) at one state as JSON.
+    Closures(cmd_closures::ClosuresArgs),
 }
 
 fn parse_fidelity(s: &str) -> Result<Fidelity, String> {
@@ -176,5 +182,12 @@ fn main() -> ExitCode {
     match cli.command {
         Command::Check { paths } => check(&paths),
         Command::Mesh { file, fidelity } => mesh(&file, fidelity),
+        Command::Closures(args) => match cmd_closures::run(&args) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("runout closures: {e:#}");
+                ExitCode::FAILURE
+            }
+        },
     }
 }
