@@ -4,7 +4,7 @@
 
 use crate::drag::{dga_single_particle, Drag, DragInputs};
 use crate::energy::{shear_production, slip_production, viscous_damping};
-use crate::friction::{FrictionModel, FrictionParams, FrictionalStress};
+use crate::friction::{k_cp_from_princeton, FrictionModel, FrictionParams, FrictionalStress};
 use crate::guards::DIL_EP_S;
 use crate::kinetic::{lun_1984, GasCoupling, KineticStress, SolidsState};
 use crate::radial::RadialDistribution;
@@ -14,7 +14,7 @@ use serde::Serialize;
 /// Particle properties of one solids phase (style A6.13).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Particles {
-    /// particle diameter d [m] (`D_P0`)
+    /// particle diameter d \[m\] (`D_P0`)
     pub diameter: f64,
     /// material density ρs [kg/m³] (`RO_S0`)
     pub density: f64,
@@ -121,7 +121,7 @@ pub struct ClosureSet {
     pub friction: FrictionalStress,
     /// summed stress coefficients (model-spec §2.3)
     pub stress: SolidsStress,
-    /// K_cp = dP_s/dεs [Pa] (model-spec §2.5; the solver zeroes it in wall cells)
+    /// K_cp = dP_s/dεs \[Pa\] (model-spec §2.5; the solver zeroes it in wall cells)
     pub k_cp: f64,
     /// shear production Π [W m⁻³] (model-spec §1.3)
     pub production: f64,
@@ -181,14 +181,18 @@ pub fn evaluate(state: &CellState, params: &ClosureParams) -> ClosureSet {
         state.s_ddot_s,
         &params.friction,
     );
-    let k_cp = params.friction_model.k_cp(
-        eps_s,
-        state.theta,
-        particles.diameter,
-        state.tr_d,
-        state.s_ddot_s,
-        &params.friction,
-    );
+    // K_cp (model-spec §2.5), reusing the Princeton P_f/P_c just computed
+    let k_cp = match params.friction_model {
+        FrictionModel::Princeton => k_cp_from_princeton(eps_s, &friction, &params.friction),
+        model => model.k_cp(
+            eps_s,
+            state.theta,
+            particles.diameter,
+            state.tr_d,
+            state.s_ddot_s,
+            &params.friction,
+        ),
+    };
     let (j_vis, j_slip) = if has_gas {
         (
             viscous_damping(f_gs, state.theta),

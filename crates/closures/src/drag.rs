@@ -46,7 +46,7 @@ pub struct DragInputs {
     pub mu_g: f64,
     /// relative speed |v| = |u_g − u_s| [m/s]
     pub slip: f64,
-    /// particle diameter d [m]
+    /// particle diameter d \[m\]
     pub d_p: f64,
 }
 

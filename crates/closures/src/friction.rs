@@ -109,15 +109,15 @@ impl Default for FrictionParams {
 /// quantities are reported for diagnostics and the wall BCs; they are 0 when not evaluated.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
 pub struct FrictionalStress {
-    /// frictional pressure P_fric [Pa] (Princeton P_f; 0 for Schaeffer, whose pressure is P*)
+    /// frictional pressure P_fric \[Pa\] (Princeton P_f; 0 for Schaeffer, whose pressure is P*)
     pub p_fric: f64,
     /// frictional shear viscosity [Pa s] (Princeton μ_fric or Schaeffer μ_Schaeffer)
     pub mu_fric: f64,
     /// frictional second viscosity [Pa s] (Princeton −(2/3) μ_fric; 0 for Schaeffer)
     pub lambda_fric: f64,
-    /// Schaeffer plastic pressure P* [Pa], applied as its own gradient −∇P* (0 for Princeton)
+    /// Schaeffer plastic pressure P* \[Pa\], applied as its own gradient −∇P* (0 for Princeton)
     pub p_star: f64,
-    /// Princeton critical pressure P_c [Pa]
+    /// Princeton critical pressure P_c \[Pa\]
     pub p_c: f64,
     /// Princeton ratio P_f/P_c [-] after the cap
     pub pf_over_pc: f64,
@@ -129,7 +129,7 @@ pub struct FrictionalStress {
 
 // ---------------------------------------------------------------- Schaeffer (§2.4.1)
 
-/// Plastic pressure P* = A (εg* − εg)^10 for εg < εg*, else 0 [Pa], with εg = 1 − εs,
+/// Plastic pressure P* = A (εg* − εg)^10 for εg < εg*, else 0 \[Pa\], with εg = 1 − εs,
 /// εg* = 1 − εs,max, A = 1e24 Pa (paper Eq. 8; model-spec §2.4.1; MFIX Neg_H).
 /// Not used with the Princeton model (model-spec §3.10.3).
 #[inline]
@@ -145,7 +145,7 @@ pub fn eps_g_from_p_star(p_star: f64, p: &FrictionParams) -> f64 {
     (1.0 - p.eps_s_max) - (p_star / p.schaeffer.a).powf(1.0 / f64::from(p.schaeffer.exponent))
 }
 
-/// dP*/dεs = 10 A (εs − εs,max)^9 for εs > εs,max, else 0 [Pa] (model-spec §2.4.1, §2.5;
+/// dP*/dεs = 10 A (εs − εs,max)^9 for εs > εs,max, else 0 \[Pa\] (model-spec §2.4.1, §2.5;
 /// MFIX dPodEP_s, written with εg* − εg like P*). K_cp of the Schaeffer model.
 #[inline]
 pub fn dp_star_deps(eps_s: f64, p: &FrictionParams) -> f64 {
@@ -206,7 +206,7 @@ fn dpc_at(p: &FrictionParams) -> f64 {
         + c.d_pc * above_min.powf(c.n_pc) / c.delta.powf(c.d_pc + 1.0))
 }
 
-/// Princeton critical pressure P_c(εs) [Pa] (paper Eq. 10 middle branch; model-spec §2.4.2
+/// Princeton critical pressure P_c(εs) \[Pa\] (paper Eq. 10 middle branch; model-spec §2.4.2
 /// step 2; MFIX FRICTION_PRINCETON):
 /// - εs ≤ εs,min: 0 (friction not evaluated);
 /// - εs ≤ εs,max − δ: P_c = Fr (εs − εs,min)^2/(εs,max − εs)^5;
@@ -227,7 +227,7 @@ pub fn critical_pressure(eps_s: f64, p: &FrictionParams) -> f64 {
     }
 }
 
-/// dP_c/dεs [Pa] of [`critical_pressure`] (model-spec §2.5; MFIX `calc_k_cp.f`):
+/// dP_c/dεs \[Pa\] of [`critical_pressure`] (model-spec §2.5; MFIX `calc_k_cp.f`):
 /// Fr [2(εs − εs,min)/(εs,max − εs)^5 + 5(εs − εs,min)²/(εs,max − εs)^6] up to εs,max − δ,
 /// the constant P_c' beyond, 0 at or below εs,min.
 #[inline]
@@ -291,7 +291,7 @@ pub fn pf_over_pc_max(n: f64) -> f64 {
 /// ζ = √(θ/d² + S:S); P_f = P_c · (P_f/P_c);
 /// m_f = √2 P_f sinφ [n − (n − 1)(P_f/P_c)^{1/(n−1)}]; if P_f/P_c > (n/(n−1))^{n−1} it is set
 /// to that bound and m_f = 0; μ_fric = m_f/(2ζ) [Pa s] (no upper cap),
-/// λ_fric = −(2/3) μ_fric [Pa s], P_fric = P_f [Pa]. One solids phase: the polydisperse factor
+/// λ_fric = −(2/3) μ_fric [Pa s], P_fric = P_f \[Pa\]. One solids phase: the polydisperse factor
 /// εs/Σε_cp is 1.
 #[inline]
 pub fn princeton(
@@ -330,7 +330,7 @@ pub fn princeton(
     }
 }
 
-/// K_cp = dP_s/dεs [Pa] of the Princeton model (model-spec §2.5; MFIX `calc_k_cp.f`,
+/// K_cp = dP_s/dεs \[Pa\] of the Princeton model (model-spec §2.5; MFIX `calc_k_cp.f`,
 /// SAVAGE = 2): (P_f/P_c) · dP_c/dεs for εs > εs,min, else 0. Kinetic pressure is left out
 /// (as in MFIX). P_f/P_c as in [`princeton`], except that its cap always uses N_Pf and is
 /// applied only when tr D ≠ 0 and r ≤ 1 (MFIX code detail).
@@ -354,6 +354,18 @@ pub fn k_cp_princeton(
         ratio = ratio.min(pf_over_pc_max(p.princeton.n_pf));
     }
     ratio * dcritical_pressure_deps(eps_s, p)
+}
+
+/// K_cp \[Pa\] from an already evaluated Princeton stress: (P_f/P_c) · dP_c/dεs, with the
+/// P_f/P_c of [`princeton`]. Equal to [`k_cp_princeton`] (SAVAGE = 2): in compaction n = N_Pf,
+/// so both caps coincide, and in dilatation P_f/P_c ≤ 1 stays below either cap. Saves the
+/// second evaluation of ζ, n and P_f/P_c in [`crate::cell::evaluate`].
+#[inline]
+pub fn k_cp_from_princeton(eps_s: f64, stress: &FrictionalStress, p: &FrictionParams) -> f64 {
+    if eps_s <= p.eps_s_min {
+        return 0.0;
+    }
+    stress.pf_over_pc * dcritical_pressure_deps(eps_s, p)
 }
 
 /// Choice of frictional model (MFIX `FRICTION_MODEL`, model-spec §2.4).
@@ -389,7 +401,7 @@ impl FrictionModel {
         }
     }
 
-    /// K_cp = dP_s/dεs [Pa] for the solids volume-fraction correction (model-spec §2.5;
+    /// K_cp = dP_s/dεs \[Pa\] for the solids volume-fraction correction (model-spec §2.5;
     /// MFIX `calc_k_cp.f`): Princeton [`k_cp_princeton`], Schaeffer [`dp_star_deps`],
     /// `None` 0 (no close-packed pressure). The solver sets K_cp = 0 in wall cells.
     #[inline]

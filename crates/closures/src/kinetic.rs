@@ -23,7 +23,7 @@ pub struct SolidsState {
     pub theta: f64,
     /// solids material density ρs [kg/m³]
     pub rho_s: f64,
-    /// particle diameter d [m]
+    /// particle diameter d \[m\]
     pub d_p: f64,
     /// particle–particle restitution coefficient e [-] (`C_E`)
     pub restitution: f64,
@@ -67,7 +67,7 @@ impl GasCoupling {
     }
 }
 
-/// Kinetic solids pressure P_kin = ρs εs θ (1 + 4 η ξ) [Pa]
+/// Kinetic solids pressure P_kin = ρs εs θ (1 + 4 η ξ) \[Pa\]
 /// (paper Eq. 6; model-spec §2.2).
 #[inline]
 pub fn p_kin(s: &SolidsState) -> f64 {
@@ -173,7 +173,7 @@ pub fn dissipation(s: &SolidsState) -> f64 {
 /// "P^k" and "μ^k" (Table 2) and the KT parts that enter the granular-energy production.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
 pub struct KineticStress {
-    /// P_kin [Pa], paper Eq. 6
+    /// P_kin \[Pa\], paper Eq. 6
     pub p_kin: f64,
     /// μ₀ [Pa s]
     pub mu_dilute: f64,

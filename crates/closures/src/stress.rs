@@ -13,13 +13,13 @@ use serde::Serialize;
 /// τ_s = −P_s I + 2 μ_s D + λ_s (tr D) I.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
 pub struct SolidsStress {
-    /// P_s = P_kin + P_fric [Pa]
+    /// P_s = P_kin + P_fric \[Pa\]
     pub p_s: f64,
     /// μ_s = μ_kin + μ_fric (Princeton or Schaeffer) [Pa s]
     pub mu_s: f64,
     /// λ_s = λ_kin + λ_fric [Pa s]
     pub lambda_s: f64,
-    /// plastic pressure P* [Pa] (Schaeffer only; a separate −∇P* term)
+    /// plastic pressure P* \[Pa\] (Schaeffer only; a separate −∇P* term)
     pub p_star: f64,
 }
 

@@ -283,6 +283,26 @@ proptest! {
     }
 }
 
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    /// The K_cp of the closure set (from the Princeton P_f/P_c already computed) equals the
+    /// stand-alone MFIX CALC_K_CP form, including its cap with N_Pf.
+    #[test]
+    fn k_cp_shortcut_equals_calc_k_cp(state in cell_state(0.7), phi in 25.0..45.0f64) {
+        let params = ClosureParams {
+            friction: FrictionParams::new(0.65, 0.5, phi),
+            ..ClosureParams::default()
+        };
+        let set = evaluate(&state, &params);
+        let direct = k_cp_princeton(
+            state.eps_s, state.theta, params.particles.diameter, state.tr_d, state.s_ddot_s,
+            &params.friction,
+        );
+        prop_assert_eq!(set.k_cp, direct);
+    }
+}
+
 /// Dry and gas-coupled KT agree when the drag vanishes; the gas correction only lowers μ*, κ*.
 #[test]
 fn gas_correction_lowers_dilute_coefficients() {
