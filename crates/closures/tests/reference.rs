@@ -429,3 +429,54 @@ fn assert_printed(what: &str, got: f64, printed: &str) {
         "{what}: {got} does not round to the printed {printed}"
     );
 }
+
+/// The full closure set with gas (Syamlal–O'Brien, single-particle drag in μ*, κ* below
+/// `DIL_EP_S`) and Princeton friction, at the paper's parameters.
+#[test]
+fn closure_set_matches_reference() {
+    let v = values();
+    let p = params(&v);
+    let params = ClosureParams {
+        particles: Particles {
+            diameter: p.d_p,
+            density: p.rho_s,
+            restitution: p.e,
+        },
+        gas: Gas {
+            density: p.rho_g,
+            viscosity: p.mu_g,
+        },
+        friction: p.friction,
+        ..ClosureParams::default()
+    };
+    let rows = v["cell"].as_array().unwrap();
+    assert!(rows.len() >= 3);
+    for row in rows {
+        let state = CellState {
+            eps_s: num(row, "eps_s"),
+            theta: num(row, "theta"),
+            slip: num(row, "slip"),
+            tr_d: num(row, "tr_d"),
+            s_ddot_s: num(row, "s_ddot_s"),
+        };
+        let set = evaluate(&state, &params);
+        for (name, got) in [
+            ("g0", set.g0),
+            ("dga", set.dga),
+            ("f_gs", set.f_gs),
+            ("dga_kinetic", set.dga_kinetic),
+            ("mu_star", set.kinetic.mu_star),
+            ("mu_kin", set.kinetic.mu_kin),
+            ("kappa_kin", set.kinetic.kappa_kin),
+            ("p_s", set.stress.p_s),
+            ("mu_s", set.stress.mu_s),
+            ("lambda_s", set.stress.lambda_s),
+            ("k_cp", set.k_cp),
+            ("production", set.production),
+            ("j_vis", set.j_vis),
+            ("j_slip", set.j_slip),
+        ] {
+            assert_rel(&format!("{name} ({state:?})"), got, num(row, name), REL_TOL);
+        }
+    }
+}

@@ -267,10 +267,10 @@ def main():
                                 for es in [0.51, 0.55, 0.6, 0.63, 0.64, 0.645, 0.649, 0.65, 0.66]]
 
     out["schaeffer"] = [dict(eps_s=es, s_ddot_s=ss, **schaeffer(es, ss))
-                        for es in [0.6, 0.65, 0.651, 0.655, 0.66] for ss in [0.0, 1e-6, 100.0]]
+                        for es in [0.01, 0.6, 0.645, 0.649, 0.65, 0.651, 0.655, 0.66] for ss in [0.0, 1e-6, 100.0]]
 
     dr = []
-    for es in [0.01, 0.1, 0.2, 0.3, 0.6, 0.645]:
+    for es in [0.01, 0.1, 0.2, 0.3, 0.6, 0.645, 0.649]:
         eg = 1.0 - es
         for v in [0.0, 1e-3, 0.5, 5.0, 200.0]:
             dr.append(dict(eps_s=es, slip=v, syamlal_obrien=dga_so(eg, v), syamlal_obrien_custom=dga_so(eg, v, 0.7, 3.0),
@@ -289,6 +289,26 @@ def main():
                        p_kin=k["p_kin"], mu_kin=k["mu_kin"], lambda_kin=k["lambda_kin"],
                        production=production(k["p_kin"], k["mu_kin"], k["lambda_kin"], trd, ss)))
     out["energy"] = en
+
+    # the full closure set of one cell with gas (Syamlal-O'Brien) and Princeton friction
+    DIL_EP_S = 1e-4
+    cells = []
+    for es, th, v, trd, ss in [(5e-5, 0.5, 0.5, 0.1, 10.0), (0.01, 0.5, 0.0, 0.0, 0.0), (0.01, 0.5, 0.5, 0.1, 10.0),
+                               (0.3, 0.5, 2.0, -1.0, 50.0), (0.6, 0.01, 0.3, -0.5, 100.0),
+                               (0.645, 1e-3, 0.1, 0.5, 1.0), (0.649, 1e-4, 0.2, -0.2, 4.0)]:
+        g0 = g0_cs(es)
+        dga = dga_so(1.0 - es, v)
+        dga_k = kt_dga(1.0 - es, v) if es < DIL_EP_S else dga
+        k = kinetic(es, th, g0, dga_k)
+        f = princeton(es, th, trd, ss)
+        f_gs = es * dga
+        cells.append(dict(eps_s=es, theta=th, slip=v, tr_d=trd, s_ddot_s=ss, g0=g0, dga=dga, f_gs=f_gs,
+                          dga_kinetic=dga_k, mu_star=k["mu_star"], mu_kin=k["mu_kin"], kappa_kin=k["kappa_kin"],
+                          p_s=k["p_kin"] + f["p_fric"], mu_s=k["mu_kin"] + f["mu_fric"],
+                          lambda_s=k["lambda_kin"] + f["lambda_fric"], k_cp=f["k_cp"],
+                          production=production(k["p_kin"], k["mu_kin"], k["lambda_kin"], trd, ss),
+                          j_vis=3.0 * f_gs * th, j_slip=j_slip(es, th, g0, v)))
+    out["cell"] = cells
 
     path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "values.json")
     with open(path, "w") as f:
