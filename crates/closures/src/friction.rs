@@ -164,7 +164,7 @@ pub fn mu_schaeffer(p_star: f64, i2_dev_d: f64, p: &FrictionParams) -> f64 {
         .min(p.schaeffer.mu_max)
 }
 
-/// Schaeffer model at one state (model-spec §2.4.1): P* and μ_Schaeffer with
+/// Schaeffer model at one state (model-spec §2.4.1): P* and μ_Schaeffer with S:S floored at 0 and
 /// I₂D = S:S/2 (I₂D = ½ D':D' and S:S = D':D' for the deviator D' of D), λ = 0, P_fric = 0.
 /// Active only where εg < εg* (P* = 0 elsewhere, so μ = 0).
 #[inline]
@@ -172,7 +172,7 @@ pub fn schaeffer(eps_s: f64, s_ddot_s: f64, p: &FrictionParams) -> FrictionalStr
     let p_star = p_star(eps_s, p);
     FrictionalStress {
         p_star,
-        mu_fric: mu_schaeffer(p_star, 0.5 * s_ddot_s, p),
+        mu_fric: mu_schaeffer(p_star, 0.5 * s_ddot_s.max(0.0), p),
         ..FrictionalStress::default()
     }
 }
@@ -247,10 +247,11 @@ pub fn dcritical_pressure_deps(eps_s: f64, p: &FrictionParams) -> f64 {
 /// Strain scale ζ = √(θ/d² + S:S) [1/s] (MFIX 21.3.2 SAVAGE = 2, paper Eq. 9; model-spec
 /// §2.4.2 step 1), S:S = tr(D²) − (tr D)²/3 ≥ 0 from the cell-centred solids strain rate.
 /// θ is floored at [`THETA_SMALL`] (MFIX never has θ below it, model-spec §1.3), so ζ > 0
-/// and μ_fric = m_f/(2ζ) stays finite when there is neither strain nor fluctuation.
+/// and μ_fric = m_f/(2ζ) stays finite when there is neither strain nor fluctuation; S:S is
+/// floored at 0, removing only round-off of tr(D²) − (tr D)²/3.
 #[inline]
 pub fn strain_scale(theta: f64, d_p: f64, s_ddot_s: f64) -> f64 {
-    (theta.max(THETA_SMALL) / (d_p * d_p) + s_ddot_s).sqrt()
+    (theta.max(THETA_SMALL) / (d_p * d_p) + s_ddot_s.max(0.0)).sqrt()
 }
 
 /// Exponent n [-]: √3/(2 sinφ) if tr D ≥ 0 (dilatation), N_Pf = 1.03 if tr D < 0

@@ -120,9 +120,9 @@ pub fn mu_kin(s: &SolidsState, mu_star: f64) -> f64 {
     let xi = s.xi();
     (2.0 + LUN_ALPHA) / 3.0
         * (mu_star / (eta * (2.0 - eta) * s.g0)
-            * (1.0 + 1.6 * eta * xi)
-            * (1.0 + 1.6 * eta * (3.0 * eta - 2.0) * xi)
-            + 0.6 * eta * mu_bulk(s))
+            * (1.0 + 8.0 / 5.0 * eta * xi)
+            * (1.0 + 8.0 / 5.0 * eta * (3.0 * eta - 2.0) * xi)
+            + 3.0 / 5.0 * eta * mu_bulk(s))
 }
 
 /// Kinetic second viscosity λ_kin = η μ_b − (2/3) μ_kin [Pa s] (model-spec §2.2; the
@@ -145,7 +145,7 @@ pub fn kappa_dilute(s: &SolidsState) -> f64 {
 /// κ* = κ₀ if dry; κ* = 0 if θ < `SMALL_NUMBER`.
 #[inline]
 pub fn kappa_star(s: &SolidsState, gas: GasCoupling) -> f64 {
-    gas_modified(s, kappa_dilute(s), 1.2, gas)
+    gas_modified(s, kappa_dilute(s), 6.0 / 5.0, gas)
 }
 
 /// Granular conductivity κ_s [kg m⁻¹ s⁻¹] (model-spec §2.2, §1.3):
@@ -155,7 +155,7 @@ pub fn kappa_kin(s: &SolidsState, kappa_star: f64) -> f64 {
     let eta = s.eta();
     let xi = s.xi();
     kappa_star / s.g0
-        * ((1.0 + 2.4 * eta * xi) * (1.0 + 2.4 * eta * eta * (4.0 * eta - 3.0) * xi)
+        * ((1.0 + 12.0 / 5.0 * eta * xi) * (1.0 + 12.0 / 5.0 * eta * eta * (4.0 * eta - 3.0) * xi)
             + 64.0 / (25.0 * PI) * (41.0 - 33.0 * eta) * (eta * xi) * (eta * xi))
 }
 

@@ -97,14 +97,15 @@ fn params() -> impl Strategy<Value = ClosureParams> {
         )
 }
 
-/// Cell states with εs ∈ [0, εs,max], θ ∈ [0, 100] (both ends included).
+/// Cell states with εs ∈ [0, εs,max], θ ∈ [0, 100] (both ends included), any tr D, S:S, slip.
 fn cell_state(eps_s_max: f64) -> impl Strategy<Value = CellState> {
     (
         prop_oneof![Just(0.0), Just(eps_s_max), 0.0..=eps_s_max],
         prop_oneof![Just(0.0), Just(100.0), 0.0..=100.0f64, 0.0..1e-6f64],
         prop_oneof![Just(0.0), 0.0..100.0f64],
         prop_oneof![Just(0.0), -100.0..100.0f64],
-        prop_oneof![Just(0.0), 0.0..1e4f64],
+        // S:S ≥ 0 in exact arithmetic; −1e-13 stands for round-off of tr(D²) − (tr D)²/3
+        prop_oneof![Just(0.0), Just(-1e-13), 0.0..1e4f64],
     )
         .prop_map(|(eps_s, theta, slip, tr_d, s_ddot_s)| CellState {
             eps_s,
