@@ -1,0 +1,72 @@
+//! The run summary: what a run did, as JSON.
+
+use std::path::Path;
+
+use serde::{Deserialize, Serialize};
+
+use crate::{write_atomic, OutputError};
+
+/// How a run ended.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub enum RunStatus {
+    /// reached the end time
+    Completed,
+    /// still running (the summary is rewritten as the run goes)
+    Running,
+    /// stopped: a step failed below dt_min; the diagnosis says which equation, where, when
+    Diverged {
+        /// human-readable diagnosis
+        diagnosis: String,
+    },
+    /// stopped by the user or a signal
+    Interrupted,
+}
+
+/// Time-step statistics [s].
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct DtStats {
+    /// smallest accepted Δt
+    pub min: f64,
+    /// largest accepted Δt
+    pub max: f64,
+    /// mean accepted Δt
+    pub mean: f64,
+}
+
+/// What a run did.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct RunSummary {
+    /// case name
+    pub case: String,
+    /// fidelity the case ran at
+    pub fidelity: String,
+    /// cells in x and y
+    pub cells: (usize, usize),
+    /// simulated time reached [s]
+    pub simulated_time: f64,
+    /// wall-clock time [s]
+    pub wall_time: f64,
+    /// accepted time steps
+    pub steps: u64,
+    /// rejected (retried) time steps
+    pub rejected_steps: u64,
+    /// total outer iterations of accepted steps
+    pub outer_iterations: u64,
+    /// Δt statistics
+    pub dt: DtStats,
+    /// relative change of the total solids mass over the run [-]
+    pub solids_mass_change: f64,
+    /// largest net continuity imbalance of a converged step, relative to the flow through
+    /// the domain [-]
+    pub max_mass_imbalance: f64,
+    /// how the run ended
+    pub status: RunStatus,
+}
+
+impl RunSummary {
+    /// Writes the summary as pretty JSON, atomically.
+    pub fn write_json(&self, path: &Path) -> Result<(), OutputError> {
+        let text = serde_json::to_string_pretty(self).expect("a summary always serialises");
+        write_atomic(path, text.as_bytes())
+    }
+}

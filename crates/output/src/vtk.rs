@@ -1,0 +1,190 @@
+//! VTK XML rectilinear grids (`.vtr`) and `.pvd` time-series collections.
+//!
+//! Format: VTK "XML file formats" (RectilinearGrid, Collection), ASCII data arrays.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use runout_mesh::Grid;
+
+use crate::{write_atomic, OutputError};
+
+/// A cell-centred field to write: a scalar (1 component) or a vector (2 components per
+/// cell, written as 3-component VTK vectors with z = 0). Values run x fastest, like
+/// [`Grid::cell_index`].
+#[derive(Clone, Copy, Debug)]
+pub struct CellField<'a> {
+    /// name shown in ParaView
+    pub name: &'a str,
+    /// values, `components` per cell
+    pub values: &'a [f64],
+    /// 1 (scalar) or 2 (vector)
+    pub components: usize,
+}
+
+impl<'a> CellField<'a> {
+    /// A scalar field.
+    pub fn scalar(name: &'a str, values: &'a [f64]) -> Self {
+        CellField {
+            name,
+            values,
+            components: 1,
+        }
+    }
+
+    /// A 2-D vector field, interleaved (u0, v0, u1, v1, …).
+    pub fn vector(name: &'a str, values: &'a [f64]) -> Self {
+        CellField {
+            name,
+            values,
+            components: 2,
+        }
+    }
+}
+
+/// Writes one time level as `.vtr`. Refuses non-finite values: NaN is never written as a
+/// result (architecture.md, Errors).
+pub fn write_vtr(
+    path: &Path,
+    grid: &Grid,
+    time: f64,
+    fields: &[CellField<'_>],
+) -> Result<(), OutputError> {
+    let n = grid.cell_count();
+    for f in fields {
+        if f.values.len() != n * f.components {
+            return Err(OutputError::FieldLength {
+                name: f.name.to_string(),
+                len: f.values.len(),
+                expected: n * f.components,
+            });
+        }
+        if let Some(k) = f.values.iter().position(|v| !v.is_finite()) {
+            return Err(OutputError::NonFinite {
+                name: f.name.to_string(),
+                index: k / f.components,
+            });
+        }
+    }
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let mut s = String::with_capacity(64 + n * 24 * fields.len().max(1));
+    let extent = format!("0 {nx} 0 {ny} 0 0");
+    s.push_str("<?xml version=\"1.0\"?>\n");
+    s.push_str("<VTKFile type=\"RectilinearGrid\" version=\"1.0\" byte_order=\"LittleEndian\">\n");
+    let _ = writeln!(s, "  <RectilinearGrid WholeExtent=\"{extent}\">");
+    // The simulated time as field data (ParaView shows it; the .pvd carries it too).
+    s.push_str("    <FieldData>\n");
+    let _ = writeln!(
+        s,
+        "      <DataArray type=\"Float64\" Name=\"TimeValue\" NumberOfTuples=\"1\" format=\"ascii\">{time:e}</DataArray>"
+    );
+    s.push_str("    </FieldData>\n");
+    let _ = writeln!(s, "    <Piece Extent=\"{extent}\">");
+    s.push_str("      <CellData>\n");
+    for f in fields {
+        let comps = if f.components == 2 { 3 } else { 1 };
+        let _ = write!(
+            s,
+            "        <DataArray type=\"Float64\" Name=\"{}\" NumberOfComponents=\"{comps}\" format=\"ascii\">\n          ",
+            xml_escape(f.name)
+        );
+        if f.components == 2 {
+            for pair in f.values.chunks_exact(2) {
+                let _ = write!(s, "{:e} {:e} 0 ", pair[0], pair[1]);
+            }
+        } else {
+            for v in f.values {
+                let _ = write!(s, "{v:e} ");
+            }
+        }
+        s.push_str("\n        </DataArray>\n");
+    }
+    s.push_str("      </CellData>\n      <Coordinates>\n");
+    for (name, coords) in [
+        ("x", grid.x.faces()),
+        ("y", grid.y.faces()),
+        ("z", &[0.0][..]),
+    ] {
+        let _ = write!(
+            s,
+            "        <DataArray type=\"Float64\" Name=\"{name}\" format=\"ascii\">\n          "
+        );
+        for c in coords {
+            let _ = write!(s, "{c:e} ");
+        }
+        s.push_str("\n        </DataArray>\n");
+    }
+    s.push_str("      </Coordinates>\n    </Piece>\n  </RectilinearGrid>\n</VTKFile>\n");
+    write_atomic(path, s.as_bytes())
+}
+
+fn xml_escape(s: &str) -> String {
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}
+
+/// A `.pvd` collection: (time, `.vtr` file) entries, rewritten atomically on every push so
+/// that the series on disk is always complete up to the last written step.
+#[derive(Clone, Debug)]
+pub struct PvdSeries {
+    path: PathBuf,
+    entries: Vec<(f64, String)>,
+}
+
+impl PvdSeries {
+    /// A new, empty series written to `path` (the `.vtr` files are referenced relative to
+    /// its folder).
+    pub fn new(path: impl Into<PathBuf>) -> Self {
+        PvdSeries {
+            path: path.into(),
+            entries: Vec::new(),
+        }
+    }
+
+    /// Writes `fields` at `time` as `<stem>_<index>.vtr` next to the `.pvd` and adds it.
+    pub fn push(
+        &mut self,
+        grid: &Grid,
+        time: f64,
+        fields: &[CellField<'_>],
+    ) -> Result<PathBuf, OutputError> {
+        let stem = self
+            .path
+            .file_stem()
+            .map_or("fields".into(), |s| s.to_string_lossy().into_owned());
+        let file = format!("{stem}_{:05}.vtr", self.entries.len());
+        let dir = self.path.parent().unwrap_or(Path::new(""));
+        let vtr = dir.join(&file);
+        write_vtr(&vtr, grid, time, fields)?;
+        self.entries.push((time, file));
+        self.write()?;
+        Ok(vtr)
+    }
+
+    /// Number of time levels written.
+    pub fn len(&self) -> usize {
+        self.entries.len()
+    }
+
+    /// Whether nothing was written yet.
+    pub fn is_empty(&self) -> bool {
+        self.entries.is_empty()
+    }
+
+    fn write(&self) -> Result<(), OutputError> {
+        let mut s = String::from(
+            "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"1.0\" byte_order=\"LittleEndian\">\n  <Collection>\n",
+        );
+        for (t, f) in &self.entries {
+            let _ = writeln!(
+                s,
+                "    <DataSet timestep=\"{t:e}\" group=\"\" part=\"0\" file=\"{}\"/>",
+                xml_escape(f)
+            );
+        }
+        s.push_str("  </Collection>\n</VTKFile>\n");
+        write_atomic(&self.path, s.as_bytes())
+    }
+}
