@@ -4,6 +4,7 @@
 //! Every struct denies unknown fields, so a typo is an error, never silently ignored.
 //! Defaults are MFIX 21.3.2's (model-spec §5) unless a field says otherwise.
 
+pub use runout_closures::{Drag, FrictionModel, RadialDistribution};
 use runout_mesh::{AxisSpec, Side, Sides};
 use serde::{Deserialize, Serialize};
 
@@ -113,7 +114,7 @@ pub struct Models {
     pub radial_distribution: RadialDistribution,
     /// frictional stress model
     #[serde(default)]
-    pub friction: Friction,
+    pub friction: FrictionModel,
     /// gas–solids drag
     #[serde(default)]
     pub drag: Drag,
@@ -126,7 +127,7 @@ impl Default for Models {
         Models {
             kinetic_theory: KineticTheory::default(),
             radial_distribution: RadialDistribution::default(),
-            friction: Friction::default(),
+            friction: FrictionModel::default(),
             drag: Drag::default(),
         }
     }
@@ -155,66 +156,6 @@ impl Default for KineticTheory {
     fn default() -> Self {
         KineticTheory::Lun1984 {
             alpha: default_alpha(),
-        }
-    }
-}
-
-/// Radial distribution at contact (MFIX `RDF_TYPE`, model-spec §2.1).
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub enum RadialDistribution {
-    /// g0 = (1 − ε_s/2)/(1 − ε_s)³
-    #[default]
-    CarnahanStarling,
-    /// Ma & Ahmadi (1986)
-    MaAhmadi,
-}
-
-/// Frictional stress model (MFIX `FRICTION_MODEL`, model-spec §2.4).
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub enum Friction {
-    /// no frictional stress
-    None,
-    /// Schaeffer (1987) with MFIX's plastic pressure P* (paper Eq. 8)
-    Schaeffer,
-    /// Srivastava & Sundaresan (2003), "Princeton" (paper Eqs. 9–10 as MFIX codes them)
-    #[default]
-    Princeton,
-}
-
-/// Gas–solids drag (MFIX `DRAG_TYPE`, model-spec §2.6).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub enum Drag {
-    /// Syamlal–O'Brien with MFIX `DRAG_C1`, `DRAG_D1`
-    SyamlalOBrien {
-        /// `DRAG_C1` [-]
-        #[serde(default = "default_drag_c1")]
-        c1: f64,
-        /// `DRAG_D1` [-]
-        #[serde(default = "default_drag_d1")]
-        d1: f64,
-    },
-    /// Gidaspow (Ergun below ε_g = 0.8, Wen–Yu above)
-    Gidaspow,
-    /// Gidaspow blended with an arctan switch
-    GidaspowBlend,
-    /// Wen–Yu at every ε_g
-    WenYu,
-}
-
-fn default_drag_c1() -> f64 {
-    0.8
-}
-
-fn default_drag_d1() -> f64 {
-    2.65
-}
-
-impl Default for Drag {
-    fn default() -> Self {
-        Drag::SyamlalOBrien {
-            c1: default_drag_c1(),
-            d1: default_drag_d1(),
         }
     }
 }
