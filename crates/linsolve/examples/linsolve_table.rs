@@ -2,7 +2,7 @@
 //! momentum-like (non-symmetric) model systems at about 10k, 100k and 1M unknowns, printed
 //! as a markdown table (the table in docs/performance.md).
 //!
-//! Run: `cargo run --release -p runout-linsolve --example linsolve_table -- [--max-cells N] [--reps R]`
+//! Run: `cargo run --release -p runout-linsolve --example linsolve_table -- [--max-cells N] [--reps R] [--filter SUBSTRING]`
 //! Runtime: about 1 min up to 100k cells; the 1M row adds a few minutes (2 cores).
 
 use std::time::Duration;
@@ -35,6 +35,11 @@ fn run(
     label: &str,
     reps: usize,
 ) {
+    if let Some(f) = std::env::args().skip_while(|a| a != "--filter").nth(1) {
+        if !format!("{system} {label}").contains(&f) {
+            return;
+        }
+    }
     let mut solver = build(kind);
     let mut x = vec![0.0; a.len()];
     let t0 = std::time::Instant::now();

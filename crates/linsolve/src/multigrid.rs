@@ -20,8 +20,10 @@
 
 use std::time::{Duration, Instant};
 
-use crate::kernels::{axpy, dot, for_each_indexed, norm2};
-use crate::stencil::{apply5, check_len, reduced_rhs, residual5, Op5};
+use rayon::prelude::*;
+
+use crate::kernels::{axpy, dot, for_each_indexed, norm2, PAR_MIN_LEN};
+use crate::stencil::{apply5, check_len, reduced_rhs, residual5, rows_per_task, Op5};
 use crate::{check_rtol, LinSolveError, LinearSolver, Pattern, SolveStats, Stencil5};
 
 /// Multigrid cycle type.
@@ -134,60 +136,108 @@ impl Level {
         Ok(())
     }
 
-    /// Block Gauss–Seidel on the x lines j ≡ colour (mod 2).
+    /// Block Gauss–Seidel on the x lines j ≡ colour (mod 2). Lines of one colour only read
+    /// lines of the other colour, so they are solved in parallel.
     fn x_lines(&mut self, colour: usize) {
-        let op = &self.op;
-        let (nx, ny) = (op.nx, op.ny);
-        let x = &mut self.sol;
-        for j in (colour..ny).step_by(2) {
-            let o = nx * j;
-            for k in o..o + nx {
-                let mut d = self.rhs[k];
-                if j + 1 < ny {
-                    d += op.an[k] * x[k + nx];
-                }
-                if j > 0 {
-                    d += op.as_[k] * x[k - nx];
-                }
-                if k > o {
-                    d += op.aw[k] * x[k - 1];
-                }
-                x[k] = d * self.x_inv[k];
-            }
-            for k in (o..o + nx - 1).rev() {
-                x[k] += self.x_up[k] * x[k + 1];
-            }
+        let (nx, ny) = (self.op.nx, self.op.ny);
+        let n_lines = (ny + 1 - colour.min(ny)) / 2;
+        let x = SharedMut(self.sol.as_mut_ptr());
+        let this = &*self;
+        // SAFETY: line j writes only row j (colour c) and reads rows j ± 1 (the other
+        // colour), which no task writes during this half-sweep; all indices are < nx·ny.
+        let line = |m: usize| unsafe { this.x_line(colour + 2 * m, x) };
+        if nx * ny < PAR_MIN_LEN {
+            (0..n_lines).for_each(line);
+        } else {
+            (0..n_lines)
+                .into_par_iter()
+                .with_min_len(rows_per_task(nx))
+                .for_each(line);
         }
     }
 
-    /// Block Gauss–Seidel on the y lines i ≡ colour (mod 2), all such lines advanced
-    /// together row by row.
-    fn y_lines(&mut self, colour: usize) {
+    /// # Safety
+    /// `x` points to `sol`; no other thread may access row j or write rows j ± 1.
+    unsafe fn x_line(&self, j: usize, x: SharedMut) {
         let op = &self.op;
         let (nx, ny) = (op.nx, op.ny);
-        let x = &mut self.sol;
+        let o = nx * j;
+        let row = std::slice::from_raw_parts_mut(x.0.add(o), nx);
+        let rhs = &self.rhs[o..o + nx];
+        let inv = &self.x_inv[o..o + nx];
+        row.copy_from_slice(rhs);
+        if j + 1 < ny {
+            let up = std::slice::from_raw_parts(x.0.add(o + nx), nx);
+            for ((v, a), u) in row.iter_mut().zip(&op.an[o..o + nx]).zip(up) {
+                *v += a * u;
+            }
+        }
+        if j > 0 {
+            let down = std::slice::from_raw_parts(x.0.add(o - nx), nx);
+            for ((v, a), u) in row.iter_mut().zip(&op.as_[o..o + nx]).zip(down) {
+                *v += a * u;
+            }
+        }
+        let aw = &op.aw[o..o + nx];
+        row[0] *= inv[0];
+        for i in 1..nx {
+            row[i] = (row[i] + aw[i] * row[i - 1]) * inv[i];
+        }
+        let upper = &self.x_up[o..o + nx];
+        for i in (0..nx - 1).rev() {
+            row[i] += upper[i] * row[i + 1];
+        }
+    }
+
+    /// Block Gauss–Seidel on the y lines i ≡ colour (mod 2), all lines of a block of
+    /// columns advanced together row by row; blocks run in parallel.
+    fn y_lines(&mut self, colour: usize) {
+        let (nx, ny) = (self.op.nx, self.op.ny);
+        let x = SharedMut(self.sol.as_mut_ptr());
+        let this = &*self;
+        // SAFETY: a block writes only its own columns of colour c and reads columns of the
+        // other colour, which no task writes during this half-sweep.
+        let block = |i0: usize, i1: usize| unsafe { this.y_block(colour, i0, i1, x) };
+        if nx * ny < PAR_MIN_LEN {
+            block(0, nx);
+        } else {
+            // even block width keeps the colour pattern identical in every block
+            let width = 2 * (nx / 2 / rayon::current_num_threads().max(1) / 4).max(8);
+            (0..nx.div_ceil(width))
+                .into_par_iter()
+                .for_each(|b| block(b * width, ((b + 1) * width).min(nx)));
+        }
+    }
+
+    /// # Safety
+    /// `x` points to `sol`; no other thread may access columns i0..i1 of this colour or
+    /// write the other colour.
+    unsafe fn y_block(&self, colour: usize, i0: usize, i1: usize, x: SharedMut) {
+        let op = &self.op;
+        let (nx, ny) = (op.nx, op.ny);
+        let first = i0 + (i0 + colour) % 2;
         for j in 0..ny {
             let o = nx * j;
-            for i in (colour..nx).step_by(2) {
+            for i in (first..i1).step_by(2) {
                 let k = o + i;
                 let mut d = self.rhs[k];
                 if i + 1 < nx {
-                    d += op.ae[k] * x[k + 1];
+                    d += op.ae[k] * *x.0.add(k + 1);
                 }
                 if i > 0 {
-                    d += op.aw[k] * x[k - 1];
+                    d += op.aw[k] * *x.0.add(k - 1);
                 }
                 if j > 0 {
-                    d += op.as_[k] * x[k - nx];
+                    d += op.as_[k] * *x.0.add(k - nx);
                 }
-                x[k] = d * self.y_inv[k];
+                *x.0.add(k) = d * self.y_inv[k];
             }
         }
         for j in (0..ny.saturating_sub(1)).rev() {
             let o = nx * j;
-            for i in (colour..nx).step_by(2) {
+            for i in (first..i1).step_by(2) {
                 let k = o + i;
-                x[k] += self.y_up[k] * x[k + nx];
+                *x.0.add(k) += self.y_up[k] * *x.0.add(k + nx);
             }
         }
     }
@@ -258,12 +308,15 @@ fn galerkin(fine: &Level, coarse: &mut Level) {
 
 /// coarse_rhs = Pᵀ r.
 fn restrict(fine: &Level, r: &[f64], coarse_rhs: &mut [f64], nxc: usize) {
-    let nxf = fine.op.nx;
+    let (nxf, nyf) = (fine.op.nx, fine.op.ny);
     coarse_rhs.fill(0.0);
-    for (k, &rk) in r.iter().enumerate() {
-        if fine.active[k] {
-            let (i, j) = (k % nxf, k / nxf);
-            coarse_rhs[i / 2 + nxc * (j / 2)] += rk;
+    for j in 0..nyf {
+        let o = nxf * j;
+        let co = nxc * (j / 2);
+        for i in 0..nxf {
+            if fine.active[o + i] {
+                coarse_rhs[co + i / 2] += r[o + i];
+            }
         }
     }
 }
@@ -272,12 +325,35 @@ fn restrict(fine: &Level, r: &[f64], coarse_rhs: &mut [f64], nxc: usize) {
 fn prolong_add(fine: &mut Level, e: &[f64], nxc: usize) {
     let nxf = fine.op.nx;
     let active = &fine.active;
-    for_each_indexed(&mut fine.sol, |k, v| {
-        if active[k] {
-            *v += e[(k % nxf) / 2 + nxc * ((k / nxf) / 2)];
+    let add_row = |j: usize, row: &mut [f64]| {
+        let (o, co) = (nxf * j, nxc * (j / 2));
+        for (i, v) in row.iter_mut().enumerate() {
+            if active[o + i] {
+                *v += e[co + i / 2];
+            }
         }
-    });
+    };
+    if fine.sol.len() < PAR_MIN_LEN {
+        fine.sol
+            .chunks_mut(nxf)
+            .enumerate()
+            .for_each(|(j, r)| add_row(j, r));
+    } else {
+        fine.sol
+            .par_chunks_mut(nxf)
+            .enumerate()
+            .with_min_len(rows_per_task(nxf))
+            .for_each(|(j, r)| add_row(j, r));
+    }
 }
+
+/// A raw pointer to a level's solution shared by the line-smoother tasks, which write
+/// disjoint cells (see the SAFETY notes at the call sites).
+#[derive(Clone, Copy)]
+struct SharedMut(*mut f64);
+// SAFETY: only used for the colour-disjoint writes documented above.
+unsafe impl Send for SharedMut {}
+unsafe impl Sync for SharedMut {}
 
 /// Dense LU with partial pivoting for the coarsest level.
 #[derive(Default)]

@@ -72,11 +72,12 @@ impl PrecondImpl {
             Self::Ilu0 { inv_d } => {
                 // d_k = a_P − a_W a_E(k−1)/d_(k−1) − a_S a_N(k−nx)/d_(k−nx)
                 for k in 0..op.len() {
+                    let (i, j) = (k % nx, k / nx);
                     let mut d = op.ap[k];
-                    if k % nx > 0 {
+                    if i > 0 {
                         d -= op.aw[k] * op.ae[k - 1] * inv_d[k - 1];
                     }
-                    if k >= nx {
+                    if j > 0 {
                         d -= op.as_[k] * op.an[k - nx] * inv_d[k - nx];
                     }
                     if d == 0.0 || !d.is_finite() {
@@ -115,27 +116,33 @@ impl PrecondImpl {
             Self::Identity => z.copy_from_slice(r),
             Self::Jacobi { inv_diag } => for_each_indexed(z, |k, v| *v = r[k] * inv_diag[k]),
             Self::Ilu0 { inv_d } => {
-                // forward: (D + L) u = r
-                for k in 0..n {
-                    let mut s = r[k];
-                    if k % nx > 0 {
-                        s += op.aw[k] * z[k - 1];
+                let ny = op.ny;
+                // forward: (D + L) u = r, row by row
+                for j in 0..ny {
+                    let o = nx * j;
+                    if j > 0 {
+                        for k in o..o + nx {
+                            z[k] = r[k] + op.as_[k] * z[k - nx];
+                        }
+                    } else {
+                        z[..nx].copy_from_slice(&r[..nx]);
                     }
-                    if k >= nx {
-                        s += op.as_[k] * z[k - nx];
+                    z[o] *= inv_d[o];
+                    for k in o + 1..o + nx {
+                        z[k] = (z[k] + op.aw[k] * z[k - 1]) * inv_d[k];
                     }
-                    z[k] = s * inv_d[k];
                 }
                 // backward: (D + U) z = D u
-                for k in (0..n).rev() {
-                    let mut s = 0.0;
-                    if k % nx + 1 < nx {
-                        s += op.ae[k] * z[k + 1];
+                for j in (0..ny).rev() {
+                    let o = nx * j;
+                    if j + 1 < ny {
+                        for k in o..o + nx {
+                            z[k] += op.an[k] * z[k + nx] * inv_d[k];
+                        }
                     }
-                    if k + nx < n {
-                        s += op.an[k] * z[k + nx];
+                    for k in (o..o + nx - 1).rev() {
+                        z[k] += op.ae[k] * z[k + 1] * inv_d[k];
                     }
-                    z[k] += s * inv_d[k];
                 }
             }
             Self::LineY { inv_denom, upper } => {

@@ -340,26 +340,29 @@ pub(crate) fn reduced_rhs(a: &Stencil5, b_eff: &mut [f64]) {
     let p = &a.pattern;
     let (nx, ny) = (p.nx, p.ny);
     let fixed = p.fixed_mask();
-    let val = |k: usize| a.b[k] / a.a_p[k];
-    crate::kernels::for_each_indexed(b_eff, |k, v| {
-        let mut s = a.b[k];
-        if !fixed[k] {
-            let (i, j) = (k % nx, k / nx);
-            if i + 1 < nx && fixed[k + 1] {
-                s += a.a_e[k] * val(k + 1);
-            }
-            if i > 0 && fixed[k - 1] {
-                s += a.a_w[k] * val(k - 1);
-            }
-            if j + 1 < ny && fixed[k + nx] {
-                s += a.a_n[k] * val(k + nx);
-            }
-            if j > 0 && fixed[k - nx] {
-                s += a.a_s[k] * val(k - nx);
-            }
+    b_eff.copy_from_slice(&a.b);
+    // visit the (few) fixed cells and push their value into active neighbours' rows
+    for m in fixed
+        .iter()
+        .enumerate()
+        .filter_map(|(m, &f)| f.then_some(m))
+    {
+        let val = a.b[m] / a.a_p[m];
+        let (i, j) = (m % nx, m / nx);
+        // neighbour k and the link of k that points back to m
+        if i > 0 && !fixed[m - 1] {
+            b_eff[m - 1] += a.a_e[m - 1] * val;
         }
-        *v = s;
-    });
+        if i + 1 < nx && !fixed[m + 1] {
+            b_eff[m + 1] += a.a_w[m + 1] * val;
+        }
+        if j > 0 && !fixed[m - nx] {
+            b_eff[m - nx] += a.a_n[m - nx] * val;
+        }
+        if j + 1 < ny && !fixed[m + nx] {
+            b_eff[m + nx] += a.a_s[m + nx] * val;
+        }
+    }
 }
 
 pub(crate) fn rows_per_task(nx: usize) -> usize {
