@@ -263,5 +263,39 @@ fn main() {
                 reps,
             );
         }
+
+        // ---- diffusion-dominated non-symmetric (cell Péclet 1, CFL 100): like the
+        // εs correction in a packed bed, where K_cp diffusion dominates ----------------------
+        let mut e = momentum_like(&grid, 1.0, 100.0).expect("grid");
+        set_rhs_from_solution(&mut e, &exact).expect("sizes");
+        let sys = "diffusive-nsym";
+        run(
+            sys,
+            &e,
+            &exact,
+            &LinearSolverKind::SparseLu,
+            "faer LU",
+            reps,
+        );
+        for (rtol, cap_it) in [(1e-8, cap), (1e-4, cap)] {
+            if rtol < 1e-6 && big {
+                continue; // only the AMG-V row below at 1M to 1e-8
+            }
+            for (name, pc) in [("ILU(0)", Precond::Ilu0), ("line-y", Precond::LineY)] {
+                let label = format!("BiCGSTAB + {name}, {rtol:.0e}");
+                run(sys, &e, &exact, &bicg(rtol, cap_it, pc), &label, reps);
+            }
+        }
+        for rtol in [1e-8, 1e-4] {
+            let label = format!("BiCGSTAB + AMG-V, {rtol:.0e}");
+            run(
+                sys,
+                &e,
+                &exact,
+                &bicg(rtol, cap, Precond::MultigridV),
+                &label,
+                reps,
+            );
+        }
     }
 }
