@@ -140,15 +140,8 @@ pub fn evaluate(state: &CellState, params: &ClosureParams) -> ClosureSet {
     let particles = &params.particles;
     let eps_s = state.eps_s;
     let eps_g = 1.0 - eps_s;
-    let g0 = params.radial.g0(eps_s);
-    let solids = SolidsState {
-        eps_s,
-        theta: state.theta,
-        rho_s: particles.density,
-        d_p: particles.diameter,
-        restitution: particles.restitution,
-        g0,
-    };
+    let solids = SolidsState::new(eps_s, state.theta, particles, params.radial);
+    let g0 = solids.g0;
 
     let has_gas = params.gas.density != 0.0;
     let drag_inputs = DragInputs {

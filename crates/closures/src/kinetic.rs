@@ -6,7 +6,9 @@
 //! One solids phase: ξ = εs g0 stands for MFIX's Σ_k ε_k g0_mk. η = (1 + e)/2.
 //! MFIX stress convention τ = −P I + 2μ D + λ (tr D) I (model-spec §0.3).
 
+use crate::cell::Particles;
 use crate::guards::SMALL_NUMBER;
+use crate::radial::RadialDistribution;
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -32,6 +34,20 @@ pub struct SolidsState {
 }
 
 impl SolidsState {
+    /// State at (εs, θ) for the given particles, with g0 from the chosen radial
+    /// distribution (model-spec §2.1).
+    #[inline]
+    pub fn new(eps_s: f64, theta: f64, particles: &Particles, radial: RadialDistribution) -> Self {
+        Self {
+            eps_s,
+            theta,
+            rho_s: particles.density,
+            d_p: particles.diameter,
+            restitution: particles.restitution,
+            g0: radial.g0(eps_s),
+        }
+    }
+
     /// η = (1 + e)/2 [-] (model-spec §0.3; MFIX `check_solids_continuum.f`).
     #[inline]
     pub fn eta(&self) -> f64 {

@@ -17,6 +17,18 @@
 //! §3.10): stresses are summed, not switched (P-Eq. 5); the P-Eq. 9 exponent is n − 1; the
 //! compaction exponent is 1.03, not 0; there is no A(εg* − εg)^10 branch with Princeton.
 //!
+//! ```
+//! use runout_closures::{evaluate, CellState, ClosureParams};
+//! // the paper's parameters: d = 0.5 mm, ρs = 2000, e = 0.9, Princeton, Syamlal–O'Brien
+//! let params = ClosureParams::default();
+//! let state = CellState { eps_s: 0.6, theta: 0.01, slip: 0.3, tr_d: 0.0, s_ddot_s: 100.0 };
+//! let set = evaluate(&state, &params);
+//! // model-spec §2.4.2 check value: P_f = 1600 Pa at εs = 0.6, tr D = 0
+//! assert!((set.friction.p_fric - 1600.0).abs() < 1e-6);
+//! // stresses are summed (model-spec §2.3)
+//! assert_eq!(set.stress.mu_s, set.kinetic.mu_kin + set.friction.mu_fric);
+//! ```
+//!
 //! Units are SI throughout; angles enter in degrees and are converted once
 //! ([`friction::FrictionParams::new`]).
 #![deny(missing_docs)]
