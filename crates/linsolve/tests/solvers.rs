@@ -49,6 +49,7 @@ fn iterative_kinds(rtol: f64) -> Vec<LinearSolverKind> {
         Precond::Ilu0,
         Precond::LineY,
         Precond::MultigridV,
+        Precond::MultigridK,
     ]
     .into_iter()
     .map(|precond| LinearSolverKind::BiCgStab {
