@@ -32,8 +32,14 @@ enum Slot {
     S,
 }
 
-/// Fixed CSC pattern of the reduced operator plus the map from stencil slots to values.
-struct CscPattern {
+/// Conversion of a [`Stencil5`] to a faer CSC matrix with a fixed pattern.
+///
+/// The matrix is that of the *reduced* system the solvers work on: rows of fixed cells
+/// hold only a_P, and links between active and fixed cells are dropped (their
+/// contribution a_nb·φ_fixed is in [`CscAssembler::reduced_rhs`]). Links pointing out of
+/// the block are ignored. The pattern and the argsort are built once by
+/// [`CscAssembler::new`]; [`CscAssembler::matrix`] only refills values.
+pub struct CscAssembler {
     pattern: Pattern,
     symbolic: SymbolicSparseColMat<usize>,
     argsort: Argsort<usize>,
@@ -45,8 +51,9 @@ struct CscPattern {
     work: Vec<f64>,
 }
 
-impl CscPattern {
-    fn new(pattern: &Pattern) -> Result<Self, LinSolveError> {
+impl CscAssembler {
+    /// Builds the CSC pattern and argsort for `pattern`.
+    pub fn new(pattern: &Pattern) -> Result<Self, LinSolveError> {
         let (nx, ny) = (pattern.nx(), pattern.ny());
         let fixed = pattern.fixed_mask();
         let mut pairs = Vec::with_capacity(5 * pattern.len());
@@ -86,8 +93,24 @@ impl CscPattern {
         })
     }
 
-    /// Refills the values from `a`; returns the CSC matrix.
-    fn refill(&mut self, a: &Stencil5) -> Result<SparseColMat<usize, f64>, LinSolveError> {
+    /// The symbolic CSC structure (for a faer symbolic factorisation).
+    pub fn symbolic(&self) -> &SymbolicSparseColMat<usize> {
+        &self.symbolic
+    }
+
+    /// The reduced right-hand side for `a` (b plus a_nb·φ_fixed of fixed neighbours).
+    pub fn reduced_rhs(&mut self, a: &Stencil5) -> Result<&[f64], LinSolveError> {
+        if a.pattern() != &self.pattern {
+            return Err(LinSolveError::PatternMismatch);
+        }
+        a.validate_rhs()?;
+        reduced_rhs(a, &mut self.rhs);
+        Ok(&self.rhs)
+    }
+
+    /// Refills the values from `a` (parallel over entries) and returns the CSC matrix of the
+    /// reduced system.
+    pub fn matrix(&mut self, a: &Stencil5) -> Result<SparseColMat<usize, f64>, LinSolveError> {
         if a.pattern() != &self.pattern {
             return Err(LinSolveError::PatternMismatch);
         }
@@ -113,7 +136,7 @@ impl CscPattern {
 
     /// Solves with `solve_in_place` applied to the reduced right-hand side, then checks the
     /// true residual.
-    fn solve_with(
+    pub(crate) fn solve_with(
         &mut self,
         a: &Stencil5,
         x: &mut [f64],
@@ -155,7 +178,7 @@ impl CscPattern {
 /// faer sparse LU with the symbolic factorisation reused across refills.
 #[derive(Default)]
 pub struct SparseLuSolver {
-    csc: Option<CscPattern>,
+    csc: Option<CscAssembler>,
     symbolic: Option<SymbolicLu<usize>>,
     lu: Option<Lu<usize, f64>>,
     t_setup: Duration,
@@ -174,7 +197,7 @@ impl LinearSolver for SparseLuSolver {
     }
 
     fn set_pattern(&mut self, pattern: &Pattern) -> Result<(), LinSolveError> {
-        let csc = CscPattern::new(pattern)?;
+        let csc = CscAssembler::new(pattern)?;
         let symbolic = SymbolicLu::try_new(csc.symbolic.as_ref())
             .map_err(|e| LinSolveError::Faer(format!("{e:?}")))?;
         self.csc = Some(csc);
@@ -188,7 +211,7 @@ impl LinearSolver for SparseLuSolver {
         let (Some(csc), Some(symbolic)) = (self.csc.as_mut(), self.symbolic.as_ref()) else {
             return Err(LinSolveError::NotReady("set_pattern"));
         };
-        let mat = csc.refill(a)?;
+        let mat = csc.matrix(a)?;
         self.lu = None;
         let lu =
             Lu::try_new_with_symbolic(symbolic.clone(), mat.as_ref()).map_err(|e| match e {
@@ -218,7 +241,7 @@ impl LinearSolver for SparseLuSolver {
 /// `setup` rejects a matrix whose reduced operator is not symmetric.
 #[derive(Default)]
 pub struct CholeskySolver {
-    csc: Option<CscPattern>,
+    csc: Option<CscAssembler>,
     symbolic: Option<SymbolicLlt<usize>>,
     llt: Option<Llt<usize, f64>>,
     t_setup: Duration,
@@ -272,7 +295,7 @@ impl LinearSolver for CholeskySolver {
     }
 
     fn set_pattern(&mut self, pattern: &Pattern) -> Result<(), LinSolveError> {
-        let csc = CscPattern::new(pattern)?;
+        let csc = CscAssembler::new(pattern)?;
         let symbolic = SymbolicLlt::try_new(csc.symbolic.as_ref(), Side::Lower)
             .map_err(|e| LinSolveError::Faer(format!("{e:?}")))?;
         self.csc = Some(csc);
@@ -286,7 +309,7 @@ impl LinearSolver for CholeskySolver {
         let (Some(csc), Some(symbolic)) = (self.csc.as_mut(), self.symbolic.as_ref()) else {
             return Err(LinSolveError::NotReady("set_pattern"));
         };
-        let mat = csc.refill(a)?;
+        let mat = csc.matrix(a)?;
         self.llt = None;
         check_symmetric(&csc.op)?;
         let llt = Llt::try_new_with_symbolic(symbolic.clone(), mat.as_ref(), Side::Lower).map_err(
