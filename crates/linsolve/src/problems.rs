@@ -11,11 +11,11 @@ use crate::{CellKind, LinSolveError, Pattern, Stencil5};
 /// `growth` per cell away from it until they reach `max_ratio · h0`.
 #[derive(Clone, Copy, Debug)]
 pub struct FocusAxis {
-    /// Width of the cells in the focus band [m].
+    /// Width of the cells in the focus band, m.
     pub h0: f64,
-    /// Growth ratio per cell outside the band [-].
+    /// Growth ratio per cell outside the band (dimensionless).
     pub growth: f64,
-    /// Largest cell width as a multiple of `h0` [-].
+    /// Largest cell width as a multiple of `h0` (dimensionless).
     pub max_ratio: f64,
     /// Band as fractions of the cell count, `[start, end)`.
     pub band: (f64, f64),
