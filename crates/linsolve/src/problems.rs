@@ -155,33 +155,32 @@ pub fn pressure_like(g: &Grid) -> Result<Stencil5, LinSolveError> {
     };
     let harmonic = |a: f64, b: f64, wa: f64, wb: f64| (wa + wb) / (wa / a + wb / b);
     let mut a = Stencil5::new(pattern);
-    for j in 0..ny {
+    a.par_fill_rows(|j, row| {
         for i in 0..nx {
-            let k = i + nx * j;
             if (i, j) == reference {
-                a.a_p[k] = 1.0;
+                row.a_p[i] = 1.0;
                 continue;
             }
             let gp = gamma(i, j);
             if i + 1 < nx {
                 let gf = harmonic(gp, gamma(i + 1, j), g.dx(i), g.dx(i + 1));
-                a.a_e[k] = gf * g.dy(j) / (g.xc(i + 1) - g.xc(i));
+                row.a_e[i] = gf * g.dy(j) / (g.xc(i + 1) - g.xc(i));
             }
             if i > 0 {
                 let gf = harmonic(gp, gamma(i - 1, j), g.dx(i), g.dx(i - 1));
-                a.a_w[k] = gf * g.dy(j) / (g.xc(i) - g.xc(i - 1));
+                row.a_w[i] = gf * g.dy(j) / (g.xc(i) - g.xc(i - 1));
             }
             if j + 1 < ny {
                 let gf = harmonic(gp, gamma(i, j + 1), g.dy(j), g.dy(j + 1));
-                a.a_n[k] = gf * g.dx(i) / (g.yc(j + 1) - g.yc(j));
+                row.a_n[i] = gf * g.dx(i) / (g.yc(j + 1) - g.yc(j));
             }
             if j > 0 {
                 let gf = harmonic(gp, gamma(i, j - 1), g.dy(j), g.dy(j - 1));
-                a.a_s[k] = gf * g.dx(i) / (g.yc(j) - g.yc(j - 1));
+                row.a_s[i] = gf * g.dx(i) / (g.yc(j) - g.yc(j - 1));
             }
-            a.a_p[k] = a.a_e[k] + a.a_w[k] + a.a_n[k] + a.a_s[k];
+            row.a_p[i] = row.a_e[i] + row.a_w[i] + row.a_n[i] + row.a_s[i];
         }
-    }
+    });
     Ok(a)
 }
 
@@ -214,9 +213,8 @@ pub fn momentum_like(g: &Grid, peclet_max: f64, cfl: f64) -> Result<Stencil5, Li
     let scale = peclet_max / pe;
     let dt = cfl / (courant * scale);
     let mut a = Stencil5::new(Pattern::new(nx, ny)?);
-    for j in 0..ny {
+    a.par_fill_rows(|j, row| {
         for i in 0..nx {
-            let k = i + nx * j;
             let (dx, dy) = (g.dx(i), g.dy(j));
             // face fluxes (positive in +x / +y) and diffusion conductances
             let fe = if i + 1 < nx {
@@ -263,19 +261,19 @@ pub fn momentum_like(g: &Grid, peclet_max: f64, cfl: f64) -> Result<Stencil5, Li
                 } else {
                     0.5 * dy
                 };
-            a.a_e[k] = de + (-fe).max(0.0);
-            a.a_w[k] = dw + fw.max(0.0);
-            a.a_n[k] = dn + (-fn_).max(0.0);
-            a.a_s[k] = ds + fs.max(0.0);
+            row.a_e[i] = de + (-fe).max(0.0);
+            row.a_w[i] = dw + fw.max(0.0);
+            row.a_n[i] = dn + (-fn_).max(0.0);
+            row.a_s[i] = ds + fs.max(0.0);
             // the links to the walls (φ_wall = 0) stay in a_P but drop out of the matrix
-            a.a_p[k] = a.a_e[k]
-                + a.a_w[k]
-                + a.a_n[k]
-                + a.a_s[k]
+            row.a_p[i] = row.a_e[i]
+                + row.a_w[i]
+                + row.a_n[i]
+                + row.a_s[i]
                 + (fe - fw + fn_ - fs)
                 + rho * dx * dy / dt;
         }
-    }
+    });
     Ok(a)
 }
 

@@ -161,6 +161,39 @@ impl Stencil5 {
         false
     }
 
+    /// Fills the coefficients row by row (one row = one j, cells i = 0..nx), in parallel
+    /// over rows with rayon for blocks of more than 16k cells. `fill(j, row)` gets mutable
+    /// slices of length nx of every coefficient and of b for row j.
+    pub fn par_fill_rows<F>(&mut self, fill: F)
+    where
+        F: Fn(usize, RowMut<'_>) + Sync + Send,
+    {
+        let nx = self.pattern.nx;
+        let rows = self
+            .a_p
+            .par_chunks_mut(nx)
+            .zip(self.a_e.par_chunks_mut(nx))
+            .zip(self.a_w.par_chunks_mut(nx))
+            .zip(self.a_n.par_chunks_mut(nx))
+            .zip(self.a_s.par_chunks_mut(nx))
+            .zip(self.b.par_chunks_mut(nx))
+            .enumerate()
+            .with_min_len(rows_per_task(nx));
+        rows.for_each(|(j, (((((a_p, a_e), a_w), a_n), a_s), b))| {
+            fill(
+                j,
+                RowMut {
+                    a_p,
+                    a_e,
+                    a_w,
+                    a_n,
+                    a_s,
+                    b,
+                },
+            )
+        });
+    }
+
     /// y = A x for the full matrix described in the module docs.
     pub fn matvec(&self, x: &[f64], y: &mut [f64]) -> Result<(), LinSolveError> {
         check_len("x", self.len(), x.len())?;
@@ -228,6 +261,22 @@ impl Stencil5 {
             None => Ok(()),
         }
     }
+}
+
+/// Mutable view of one row (fixed j) of a [`Stencil5`], for [`Stencil5::par_fill_rows`].
+pub struct RowMut<'a> {
+    /// a_P of the row.
+    pub a_p: &'a mut [f64],
+    /// a_E of the row.
+    pub a_e: &'a mut [f64],
+    /// a_W of the row.
+    pub a_w: &'a mut [f64],
+    /// a_N of the row.
+    pub a_n: &'a mut [f64],
+    /// a_S of the row.
+    pub a_s: &'a mut [f64],
+    /// b of the row.
+    pub b: &'a mut [f64],
 }
 
 pub(crate) fn check_len(
