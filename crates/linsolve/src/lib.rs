@@ -18,7 +18,7 @@
 //! use runout_linsolve::{build, LinearSolverKind, MultigridParams, Pattern, Stencil5};
 //! let (nx, ny) = (8, 4);
 //! let mut pattern = Pattern::new(nx, ny)?;
-//! pattern.fix(0, 0); // reference pressure cell
+//! pattern.fix(0, 0)?; // reference pressure cell
 //! let mut a = Stencil5::new(pattern.clone());
 //! for j in 0..ny {
 //!     for i in 0..nx {

@@ -67,13 +67,12 @@ impl Pattern {
         Ok(p)
     }
 
-    /// Marks cell `(i, j)` as fixed.
-    pub fn fix(&mut self, i: usize, j: usize) {
-        assert!(
-            i < self.nx && j < self.ny,
-            "cell ({i}, {j}) outside the block"
-        );
+    /// Marks cell `(i, j)` as fixed; an error if it lies outside the block.
+    pub fn fix(&mut self, i: usize, j: usize) -> Result<(), LinSolveError> {
+        check_len("fix: i < nx", self.nx, self.nx.max(i + 1))?;
+        check_len("fix: j < ny", self.ny, self.ny.max(j + 1))?;
         self.fixed[i + self.nx * j] = true;
+        Ok(())
     }
 
     /// Cells in x.
@@ -114,8 +113,8 @@ impl Pattern {
 
 /// A 5-point matrix with its right-hand side, `a_P φ_P = Σ a_nb φ_nb + b`.
 ///
-/// Coefficient vectors are public so that assembly code can fill them directly (in
-/// parallel, e.g. `a.a_p.par_chunks_mut(nx)` row by row); their lengths never change.
+/// Coefficient vectors are public so that assembly code can fill them directly, or row by
+/// row in parallel with [`Stencil5::par_fill_rows`]; their lengths must not change.
 #[derive(Clone, Debug)]
 pub struct Stencil5 {
     pattern: Pattern,

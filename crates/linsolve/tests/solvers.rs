@@ -454,6 +454,16 @@ fn invalid_tolerance_is_an_error() {
         ));
     }
     assert!(Pattern::new(0, 3).is_err());
+    let mut p = Pattern::new(4, 3).unwrap();
+    assert!(p.fix(3, 2).is_ok() && p.kind(11) == CellKind::Fixed);
+    assert!(matches!(
+        p.fix(4, 0),
+        Err(LinSolveError::DimensionMismatch { .. })
+    ));
+    assert!(matches!(
+        p.fix(0, 3),
+        Err(LinSolveError::DimensionMismatch { .. })
+    ));
 }
 
 #[test]
