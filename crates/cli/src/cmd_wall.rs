@@ -1,0 +1,445 @@
+//! `runout wall`: the wall-condition calculator (issue 4). Evaluates one solids wall model of
+//! model-spec §3 (runout-walls) at one near-wall state and prints the Robin coefficients of
+//! the solids tangential velocity and of θ, with the diagnostics the paper plots
+//! (h_w^u, φ, COL, FRI, slip), as pretty JSON.
+
+use anyhow::{ensure, Context};
+use clap::ValueEnum;
+use runout_closures::{
+    ClosureParams, Drag, FrictionModel, FrictionParams, Gas, Particles, RadialDistribution,
+};
+use runout_walls::{MomentumWall, MomentumWallState, SolidsWallModel, ThetaWall, ThetaWallState};
+use serde::Serialize;
+use std::io::Write;
+
+use crate::cmd_closures::{FrictionChoice, RadialChoice};
+
+/// θ_w assumed for the user partial-slip θ condition when `--theta-w` is not given
+/// [m²/s²]: the value of the paper's Fig. 1 (shared/docs/cases.md, units note).
+const DEFAULT_THETA_W: f64 = 0.01;
+
+/// Field names of the JSON output, shown by `runout wall --help`.
+const OUTPUT_FIELDS: &str = "\
+OUTPUT (JSON, SI units):
+  inputs                     the near-wall state and parameters used (echo of the options)
+  model                      the wall model with its validated parameters
+  momentum.face.{g,h,c}      g du/dn + h u_face = c for the solids tangential velocity
+                             (n from the fluid into the wall; g = 1, c = h U_w)
+  momentum.diagnostics       branch, h_u [1/m] (null = infinite: no-slip), specularity [-],
+                             col [Pa s/m], fri [Pa], slip [m/s], theta (after the floor),
+                             mu_kin, mu_fric [Pa s], p_kin, p_fric [Pa], zeta [1/s]
+  granular_temperature.face.{g,h,c}
+                             g dtheta/dn + h theta_face = c: JJ/Jenkins g = kappa [kg/(m s)],
+                             h [kg/(m2 s)], c [kg/s3]; user partial slip g = 1, h [1/m],
+                             c = c_w + h theta_w
+  granular_temperature.diagnostics
+                             branch, theta, kappa, h_theta, c_theta, specularity, slip, p_kin
+The momentum condition uses --eps-s (interpolated at the velocity face) and --eps-s-fluid
+(the fluid cell: dilute skip and friction test); the theta condition uses --eps-s-fluid.
+Sources: shared/docs/model-spec.md section 3; rustdoc of runout-walls.";
+
+/// Solids wall condition (paper §2.2, model-spec §3).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum, Serialize)]
+pub enum WallModelChoice {
+    /// zero solids velocity on the wall, zero theta flux
+    NoSlip,
+    /// zero tangential stress, zero theta flux
+    FreeSlip,
+    /// user partial slip, paper Eqs. 12-13 (--h-u, --h-theta, --c-theta, --theta-w)
+    PartialSlip,
+    /// Johnson & Jackson (1987) with a constant --specularity
+    JohnsonJackson,
+    /// Johnson-Jackson with Li & Benyahia's specularity phi(r) (optional --phi0)
+    RevisitedJj,
+    /// Jenkins (1992) small-friction, all-sliding limit
+    Jenkins,
+}
+
+/// Print the Robin coefficients and diagnostics of one solids wall model at one near-wall
+/// state as JSON. Material defaults are the paper's sensitivity-analysis values (paper
+/// Table 3: d = 0.5 mm, rho_s = 2000, e = 0.9, e_w = 0.7, wall friction 11 deg, internal
+/// friction 35 deg, eps_s,max = 0.65, air).
+#[derive(clap::Args, Debug, Clone)]
+#[command(after_help = OUTPUT_FIELDS)]
+pub struct WallArgs {
+    /// wall model
+    #[arg(long, value_enum)]
+    pub model: WallModelChoice,
+    /// specularity coefficient phi [-] (johnson-jackson; MFIX PHIP)
+    #[arg(long)]
+    pub specularity: Option<f64>,
+    /// phi0 override for revisited-jj (MFIX PHIP0); computed from k when absent
+    #[arg(long)]
+    pub phi0: Option<f64>,
+    /// particle-wall restitution e_w [-]
+    #[arg(long, default_value_t = 0.7)]
+    pub wall_restitution: f64,
+    /// wall friction angle delta_w [degrees]
+    #[arg(long, default_value_t = 11.0)]
+    pub wall_friction_angle: f64,
+    /// wall velocity U_w [m/s] (slip is measured against it)
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    pub u_w: f64,
+    /// partial-slip h_w^u [1/m] (MFIX BC_HW_S)
+    #[arg(long)]
+    pub h_u: Option<f64>,
+    /// partial-slip h_w^theta [1/m] (MFIX BC_HW_THETA_M, manual units)
+    #[arg(long)]
+    pub h_theta: Option<f64>,
+    /// partial-slip c_w [m/s2] (MFIX BC_C_THETA_M, manual units)
+    #[arg(long, allow_negative_numbers = true)]
+    pub c_theta: Option<f64>,
+    /// partial-slip theta_w [m2/s2] (MFIX BC_THETAW_M; default 0.01, assumed in cases.md)
+    #[arg(long)]
+    pub theta_w: Option<f64>,
+    /// solids fraction at the wall velocity face (interpolated) [-]
+    #[arg(long)]
+    pub eps_s: f64,
+    /// solids fraction of the fluid cell next to the wall [-] (default: --eps-s)
+    #[arg(long)]
+    pub eps_s_fluid: Option<f64>,
+    /// granular temperature at the wall [m2/s2] (values <= 0 become 1e-8, as in MFIX)
+    #[arg(long, allow_negative_numbers = true)]
+    pub theta: f64,
+    /// solids slip speed |u_s - U_w| at the wall face [m/s]
+    #[arg(long, default_value_t = 0.0)]
+    pub slip: f64,
+    /// gas-solids relative speed |u_g - u_s| at the wall face [m/s] (Wen-Yu drag in mu*,
+    /// kappa*). Default: |--slip + --u-w|, the gas at rest on the wall (gas no-slip, as on
+    /// the paper's floor). Exactly 0 triggers MFIX's DgA = 1e32, i.e. mu* = kappa* = 0
+    #[arg(long)]
+    pub gas_slip: Option<f64>,
+    /// solids dilatation tr D at the wall [1/s]
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    pub tr_d: f64,
+    /// S:S = tr(D^2) - (tr D)^2/3 at the wall [1/s2] (floored at 1e-10 inside, as in MFIX)
+    #[arg(long, default_value_t = 0.0)]
+    pub s_ddot_s: f64,
+    /// normal-normal deviatoric strain rate S_nn = D_nn - tr D/3 at the wall [1/s]
+    #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
+    pub s_nn: f64,
+    /// particle diameter d [m]
+    #[arg(long, default_value_t = 5e-4)]
+    pub diameter: f64,
+    /// solids material density rho_s [kg/m3]
+    #[arg(long, default_value_t = 2000.0)]
+    pub density: f64,
+    /// particle-particle restitution coefficient e [-]
+    #[arg(long, default_value_t = 0.9)]
+    pub restitution: f64,
+    /// maximum packing eps_s,max = 1 - EP_STAR [-]
+    #[arg(long, default_value_t = 0.65)]
+    pub eps_s_max: f64,
+    /// onset of Princeton friction eps_s,min = EPS_F_MIN [-]
+    #[arg(long, default_value_t = 0.5)]
+    pub eps_s_min: f64,
+    /// internal friction angle [degrees]
+    #[arg(long, default_value_t = 35.0)]
+    pub phi_internal: f64,
+    /// gas density rho_g [kg/m3]; 0 = dry granular flow (mu* = mu0, kappa* = kappa0)
+    #[arg(long, default_value_t = 1.2)]
+    pub gas_density: f64,
+    /// gas viscosity mu_g [Pa s]
+    #[arg(long, default_value_t = 1.8e-5)]
+    pub gas_viscosity: f64,
+    /// frictional model (the frictional wall term FRI needs princeton)
+    #[arg(long, value_enum, default_value_t = FrictionChoice::Princeton)]
+    pub friction: FrictionChoice,
+    /// radial distribution function
+    #[arg(long, value_enum, default_value_t = RadialChoice::CarnahanStarling)]
+    pub radial: RadialChoice,
+}
+
+/// The echoed inputs of the JSON output.
+#[derive(Serialize)]
+struct Inputs {
+    model: WallModelChoice,
+    momentum_state: MomentumWallState,
+    theta_state: ThetaWallState,
+    diameter: f64,
+    density: f64,
+    restitution: f64,
+    eps_s_max: f64,
+    eps_s_min: f64,
+    phi_internal_deg: f64,
+    gas_density: f64,
+    gas_viscosity: f64,
+    friction: String,
+    radial: String,
+}
+
+#[derive(Serialize)]
+struct Output {
+    inputs: Inputs,
+    model: SolidsWallModel,
+    momentum: MomentumWall,
+    granular_temperature: ThetaWall,
+}
+
+impl WallArgs {
+    /// Reject states and parameters outside the models' validity ranges.
+    fn validate(&self) -> anyhow::Result<()> {
+        for (name, eps) in [
+            ("--eps-s", self.eps_s),
+            ("--eps-s-fluid", self.eps_s_fluid()),
+        ] {
+            ensure!(
+                (0.0..1.0).contains(&eps),
+                "{name} must be in [0, 1), got {eps}"
+            );
+        }
+        ensure!(self.theta.is_finite(), "--theta must be finite");
+        for (name, v) in [
+            ("--slip", self.slip),
+            ("--gas-slip", self.gas_slip()),
+            ("--s-ddot-s", self.s_ddot_s),
+        ] {
+            ensure!(v >= 0.0 && v.is_finite(), "{name} must be >= 0, got {v}");
+        }
+        ensure!(
+            self.tr_d.is_finite() && self.s_nn.is_finite(),
+            "--tr-d, --s-nn must be finite"
+        );
+        ensure!(
+            self.diameter > 0.0,
+            "--diameter must be > 0, got {}",
+            self.diameter
+        );
+        ensure!(
+            self.density > 0.0,
+            "--density must be > 0, got {}",
+            self.density
+        );
+        ensure!(
+            self.restitution > 0.0 && self.restitution <= 1.0,
+            "--restitution must be in (0, 1], got {}",
+            self.restitution
+        );
+        ensure!(
+            0.0 < self.eps_s_min && self.eps_s_min < self.eps_s_max && self.eps_s_max < 1.0,
+            "need 0 < --eps-s-min < --eps-s-max < 1, got {} and {}",
+            self.eps_s_min,
+            self.eps_s_max
+        );
+        // n = sqrt(3)/(2 sin phi) must exceed 1 in dilatation (model-spec §2.4.2)
+        ensure!(
+            self.phi_internal > 0.0 && self.phi_internal < 60.0,
+            "--phi-internal must be in (0, 60) degrees, got {}",
+            self.phi_internal
+        );
+        ensure!(self.gas_density >= 0.0, "--gas-density must be >= 0");
+        ensure!(self.gas_viscosity > 0.0, "--gas-viscosity must be > 0");
+        Ok(())
+    }
+
+    fn eps_s_fluid(&self) -> f64 {
+        self.eps_s_fluid.unwrap_or(self.eps_s)
+    }
+
+    /// |u_g − u_s| at the wall face; with the gas at rest on the wall (u_g,face = 0) and the
+    /// solids face velocity U_w + slip (one tangential component) it is |slip + U_w|.
+    fn gas_slip(&self) -> f64 {
+        self.gas_slip.unwrap_or((self.slip + self.u_w).abs())
+    }
+
+    /// The wall model, its parameters validated by runout-walls.
+    fn model(&self) -> anyhow::Result<SolidsWallModel> {
+        let (e_w, angle, u_w) = (self.wall_restitution, self.wall_friction_angle, self.u_w);
+        let model = match self.model {
+            WallModelChoice::NoSlip => SolidsWallModel::NoSlip,
+            WallModelChoice::FreeSlip => SolidsWallModel::FreeSlip,
+            WallModelChoice::PartialSlip => SolidsWallModel::partial_slip(
+                self.h_u.context("--model partial-slip needs --h-u")?,
+                u_w,
+                self.h_theta
+                    .context("--model partial-slip needs --h-theta")?,
+                self.theta_w.unwrap_or(DEFAULT_THETA_W),
+                self.c_theta
+                    .context("--model partial-slip needs --c-theta")?,
+            )?,
+            WallModelChoice::JohnsonJackson => SolidsWallModel::johnson_jackson(
+                self.specularity
+                    .context("--model johnson-jackson needs --specularity")?,
+                e_w,
+                angle,
+                u_w,
+            )?,
+            WallModelChoice::RevisitedJj => {
+                SolidsWallModel::revisited_johnson_jackson(e_w, angle, self.phi0, u_w)?
+            }
+            WallModelChoice::Jenkins => SolidsWallModel::jenkins(e_w, angle, u_w)?,
+        };
+        Ok(model)
+    }
+
+    fn params(&self) -> ClosureParams {
+        ClosureParams {
+            particles: Particles {
+                diameter: self.diameter,
+                density: self.density,
+                restitution: self.restitution,
+            },
+            gas: Gas {
+                density: self.gas_density,
+                viscosity: self.gas_viscosity,
+            },
+            friction: FrictionParams::new(self.eps_s_max, self.eps_s_min, self.phi_internal),
+            radial: match self.radial {
+                RadialChoice::CarnahanStarling => RadialDistribution::CarnahanStarling,
+                RadialChoice::MaAhmadi => RadialDistribution::MaAhmadi,
+            },
+            friction_model: match self.friction {
+                FrictionChoice::Princeton => FrictionModel::Princeton,
+                FrictionChoice::Schaeffer => FrictionModel::Schaeffer,
+                FrictionChoice::None => FrictionModel::None,
+            },
+            // not used by the wall models (they estimate drag with Wen-Yu, model-spec §2.6)
+            drag: Drag::default(),
+        }
+    }
+}
+
+/// Run `runout wall`: validate the options, evaluate the wall model's momentum and
+/// granular-temperature conditions and print them to stdout as pretty JSON (field names in
+/// the `--help` text).
+pub fn run(args: &WallArgs) -> anyhow::Result<()> {
+    args.validate()?;
+    let model = args.model()?;
+    let params = args.params();
+    let momentum_state = MomentumWallState {
+        eps_s_fluid: args.eps_s_fluid(),
+        eps_s: args.eps_s,
+        theta: args.theta,
+        slip: args.slip,
+        gas_slip: args.gas_slip(),
+        tr_d: args.tr_d,
+        s_ddot_s: args.s_ddot_s,
+        s_nn: args.s_nn,
+    };
+    let theta_state = ThetaWallState {
+        eps_s: args.eps_s_fluid(),
+        theta: args.theta,
+        slip: args.slip,
+        gas_slip: args.gas_slip(),
+    };
+    let output = Output {
+        inputs: Inputs {
+            model: args.model,
+            momentum_state,
+            theta_state,
+            diameter: args.diameter,
+            density: args.density,
+            restitution: args.restitution,
+            eps_s_max: args.eps_s_max,
+            eps_s_min: args.eps_s_min,
+            phi_internal_deg: args.phi_internal,
+            gas_density: args.gas_density,
+            gas_viscosity: args.gas_viscosity,
+            friction: format!("{:?}", args.friction),
+            radial: format!("{:?}", args.radial),
+        },
+        model,
+        momentum: model.momentum(&momentum_state, &params),
+        granular_temperature: model.granular_temperature(&theta_state, &params),
+    };
+    let mut out = std::io::stdout().lock();
+    serde_json::to_writer_pretty(&mut out, &output)?;
+    writeln!(out)?;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::Parser;
+
+    #[derive(Parser)]
+    struct Cli {
+        #[command(flatten)]
+        args: WallArgs,
+    }
+
+    fn parse(options: &[&str]) -> Result<WallArgs, clap::Error> {
+        Cli::try_parse_from(std::iter::once("wall").chain(options.iter().copied())).map(|c| c.args)
+    }
+
+    #[test]
+    fn johnson_jackson_evaluates_the_library_model_with_paper_defaults() {
+        let args = parse(&[
+            "--model",
+            "johnson-jackson",
+            "--specularity",
+            "0.1",
+            "--eps-s",
+            "0.55",
+            "--theta",
+            "0.01",
+            "--slip",
+            "5",
+            "--s-ddot-s",
+            "5000",
+        ])
+        .unwrap();
+        args.validate().unwrap();
+        let model = args.model().unwrap();
+        // paper Table 3 wall: e_w = 0.7, δ_w = 11°; gas at rest on the wall
+        assert_eq!(
+            model,
+            SolidsWallModel::johnson_jackson(0.1, 0.7, 11.0, 0.0).unwrap()
+        );
+        assert_eq!(args.gas_slip(), 5.0);
+        let state = MomentumWallState {
+            eps_s_fluid: 0.55,
+            eps_s: 0.55,
+            theta: 0.01,
+            slip: 5.0,
+            gas_slip: 5.0,
+            tr_d: 0.0,
+            s_ddot_s: 5000.0,
+            s_nn: 0.0,
+        };
+        let want = model.momentum(&state, &ClosureParams::default());
+        assert_eq!(model.momentum(&state, &args.params()), want);
+    }
+
+    #[test]
+    fn missing_or_invalid_model_parameters_are_errors() {
+        let jj = parse(&[
+            "--model",
+            "johnson-jackson",
+            "--eps-s",
+            "0.5",
+            "--theta",
+            "0.1",
+        ]);
+        let err = jj.unwrap().model().unwrap_err().to_string();
+        assert!(err.contains("--specularity"), "{err}");
+        let ps = parse(&[
+            "--model",
+            "partial-slip",
+            "--eps-s",
+            "0.5",
+            "--theta",
+            "0.1",
+        ]);
+        assert!(ps.unwrap().model().is_err());
+        let bad = parse(&[
+            "--model",
+            "johnson-jackson",
+            "--specularity",
+            "2",
+            "--eps-s",
+            "0.5",
+            "--theta",
+            "0.1",
+        ]);
+        let err = bad.unwrap().model().unwrap_err().to_string();
+        assert!(
+            err.contains("specularity") && err.contains("[0, 1]"),
+            "{err}"
+        );
+        let eps = parse(&["--model", "jenkins", "--eps-s", "1.2", "--theta", "0.1"]);
+        assert!(eps.unwrap().validate().is_err());
+        assert!(parse(&["--model", "nonsense", "--eps-s", "0.5", "--theta", "0.1"]).is_err());
+    }
+}
