@@ -1,0 +1,719 @@
+//! Incompressible single-phase SIMPLE on a stretched staggered grid (model-spec §4).
+//!
+//! u lives on x-faces ((nx+1) × ny, faces i = 0 and nx on the domain ends), v on y-faces
+//! (nx × (ny+1)), p at cell centres. Each outer iteration: momentum predictor with the
+//! current pressure (upwind or Superbee by deferred correction, implicit Euler, Patankar
+//! under-relaxation, model-spec §4.2–4.4, §4.10), pressure correction from discrete
+//! continuity (§4.6 with one phase), velocity and pressure correction, residuals (§4.11).
+//!
+//! Walls impose zero normal velocity and, for the tangential component, the eliminated
+//! Robin closure of model-spec §3.2 ([`RobinFace`]) with the distance from the fluid
+//! centre to its ghost (the first cell's width, §3.1). An outlet holds the pressure on its
+//! face and has zero normal gradient of both velocity components.
+
+use runout_linsolve::{build, LinSolveError, LinearSolver, LinearSolverKind, Pattern, Stencil5};
+use runout_mesh::{Grid, Sides};
+use runout_walls::RobinFace;
+
+use crate::transport::{assemble, FaceData, Scheme};
+
+/// Condition on one side of the domain.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SideBc {
+    /// Impermeable wall; the closure of the tangential velocity component.
+    Wall(RobinFace),
+    /// Pressure outlet (or inlet) holding this pressure on the boundary face [Pa].
+    Outlet(f64),
+}
+
+impl SideBc {
+    fn is_outlet(&self) -> bool {
+        matches!(self, SideBc::Outlet(_))
+    }
+}
+
+/// Constant fluid properties.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Fluid {
+    /// density ρ [kg m⁻³]
+    pub density: f64,
+    /// dynamic viscosity μ [Pa s]
+    pub viscosity: f64,
+}
+
+/// Iteration settings (MFIX defaults, model-spec §4.10–4.11).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Settings {
+    /// convection scheme
+    pub scheme: Scheme,
+    /// momentum under-relaxation (`UR_FAC(3..4)`)
+    pub relax_velocity: f64,
+    /// pressure under-relaxation (`UR_FAC(1)`)
+    pub relax_pressure: f64,
+    /// linear solver for the momentum equations
+    pub momentum_solver: LinearSolverKind,
+    /// linear solver for the pressure correction
+    pub pressure_solver: LinearSolverKind,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            scheme: Scheme::Upwind,
+            relax_velocity: 0.5,
+            relax_pressure: 0.8,
+            momentum_solver: LinearSolverKind::transport_default(1e-8, 200),
+            pressure_solver: LinearSolverKind::pressure_default(),
+        }
+    }
+}
+
+/// Errors of the single-phase solver.
+#[derive(Debug, thiserror::Error)]
+pub enum SolverError {
+    /// A linear solve failed.
+    #[error("{equation}: {source}")]
+    Linear {
+        /// which equation
+        equation: &'static str,
+        /// the solver error
+        source: LinSolveError,
+    },
+    /// A non-finite value appeared.
+    #[error("{equation}: non-finite value at node {node} after outer iteration {iteration}")]
+    NonFinite {
+        /// which equation
+        equation: &'static str,
+        /// linear node index
+        node: usize,
+        /// outer iteration
+        iteration: usize,
+    },
+}
+
+/// Normalised residuals of one outer iteration (model-spec §4.11).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Residuals {
+    /// u momentum: Σ|b + Σ a_nb u_nb − a_P u_P| / Σ|a_P u_P| (before relaxation)
+    pub u: f64,
+    /// v momentum, same form
+    pub v: f64,
+    /// mean |mass imbalance| of the predicted velocities over the cells [kg s⁻¹ per m depth]
+    pub mass: f64,
+}
+
+/// Outcome of [`SinglePhase::solve_steady`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SteadyReport {
+    /// outer iterations done
+    pub iterations: usize,
+    /// residuals of the last iteration
+    pub residuals: Residuals,
+    /// whether the tolerance was met
+    pub converged: bool,
+}
+
+/// The single-phase solver with all its work storage (allocated once).
+pub struct SinglePhase {
+    grid: Grid,
+    fluid: Fluid,
+    bcs: Sides<SideBc>,
+    gravity: (f64, f64),
+    settings: Settings,
+    /// u on x-faces, index i + (nx+1) j
+    pub u: Vec<f64>,
+    /// v on y-faces, index i + nx j
+    pub v: Vec<f64>,
+    /// pressure at cell centres, index i + nx j [Pa]
+    pub p: Vec<f64>,
+    u_old: Vec<f64>,
+    v_old: Vec<f64>,
+    d_u: Vec<f64>,
+    d_v: Vec<f64>,
+    p_corr: Vec<f64>,
+    u_faces: FaceData,
+    v_faces: FaceData,
+    a_u: Stencil5,
+    a_v: Stencil5,
+    a_p: Stencil5,
+    solver_u: Box<dyn LinearSolver>,
+    solver_v: Box<dyn LinearSolver>,
+    solver_p: Box<dyn LinearSolver>,
+    pressure_pinned: bool,
+}
+
+impl SinglePhase {
+    /// Sets up the solver for `grid` with fluid at rest and zero pressure.
+    pub fn new(
+        grid: Grid,
+        fluid: Fluid,
+        bcs: Sides<SideBc>,
+        gravity: (f64, f64),
+        settings: Settings,
+    ) -> Result<Self, SolverError> {
+        let (nx, ny) = (grid.nx(), grid.ny());
+        let lin = |equation| move |source| SolverError::Linear { equation, source };
+        let mut pu = Pattern::new(nx + 1, ny).map_err(lin("u"))?;
+        for j in 0..ny {
+            if !bcs.west.is_outlet() {
+                pu.fix(0, j).map_err(lin("u"))?;
+            }
+            if !bcs.east.is_outlet() {
+                pu.fix(nx, j).map_err(lin("u"))?;
+            }
+        }
+        let mut pv = Pattern::new(nx, ny + 1).map_err(lin("v"))?;
+        for i in 0..nx {
+            if !bcs.south.is_outlet() {
+                pv.fix(i, 0).map_err(lin("v"))?;
+            }
+            if !bcs.north.is_outlet() {
+                pv.fix(i, ny).map_err(lin("v"))?;
+            }
+        }
+        let mut pp = Pattern::new(nx, ny).map_err(lin("p'"))?;
+        // A closed domain fixes the pressure level in one cell (its continuity follows
+        // from the others').
+        let pressure_pinned = !bcs.iter().any(|(_, b)| b.is_outlet());
+        if pressure_pinned {
+            pp.fix(0, 0).map_err(lin("p'"))?;
+        }
+        let mut solver_u = build(&settings.momentum_solver);
+        let mut solver_v = build(&settings.momentum_solver);
+        let mut solver_p = build(&settings.pressure_solver);
+        solver_u.set_pattern(&pu).map_err(lin("u"))?;
+        solver_v.set_pattern(&pv).map_err(lin("v"))?;
+        solver_p.set_pattern(&pp).map_err(lin("p'"))?;
+        Ok(SinglePhase {
+            u: vec![0.0; (nx + 1) * ny],
+            v: vec![0.0; nx * (ny + 1)],
+            p: vec![0.0; nx * ny],
+            u_old: vec![0.0; (nx + 1) * ny],
+            v_old: vec![0.0; nx * (ny + 1)],
+            d_u: vec![0.0; (nx + 1) * ny],
+            d_v: vec![0.0; nx * (ny + 1)],
+            p_corr: vec![0.0; nx * ny],
+            u_faces: FaceData::zeros(nx + 1, ny),
+            v_faces: FaceData::zeros(nx, ny + 1),
+            a_u: Stencil5::new(pu),
+            a_v: Stencil5::new(pv),
+            a_p: Stencil5::new(pp),
+            solver_u,
+            solver_v,
+            solver_p,
+            pressure_pinned,
+            grid,
+            fluid,
+            bcs,
+            gravity,
+            settings,
+        })
+    }
+
+    /// The grid.
+    pub fn grid(&self) -> &Grid {
+        &self.grid
+    }
+
+    /// Stores the current fields as the old time level.
+    pub fn begin_step(&mut self) {
+        self.u_old.copy_from_slice(&self.u);
+        self.v_old.copy_from_slice(&self.v);
+    }
+
+    /// Restores the fields of the start of the step (after a failed step).
+    pub fn restore_step(&mut self) {
+        self.u.copy_from_slice(&self.u_old);
+        self.v.copy_from_slice(&self.v_old);
+    }
+
+    /// One SIMPLE outer iteration with time step `dt` (`f64::INFINITY` for a steady
+    /// iteration). Returns the residuals of the momentum predictor and of continuity.
+    pub fn outer_iteration(&mut self, dt: f64, iteration: usize) -> Result<Residuals, SolverError> {
+        let ru = self.momentum_u(dt)?;
+        let rv = self.momentum_v(dt)?;
+        let mass = self.pressure_correction()?;
+        for (name, field) in [("u", &self.u), ("v", &self.v), ("p", &self.p)] {
+            if let Some(node) = field.iter().position(|x| !x.is_finite()) {
+                return Err(SolverError::NonFinite {
+                    equation: name,
+                    node,
+                    iteration,
+                });
+            }
+        }
+        Ok(Residuals { u: ru, v: rv, mass })
+    }
+
+    /// Relaxes the assembled system and returns the pre-relaxation residual normalised as
+    /// MFIX does (model-spec §4.11): Σ|b + Σ a_nb φ_nb − a_P φ_P| / Σ|a_P| |vel_P|, where
+    /// |vel_P| is the speed from both staggered components stored at the same (i, j).
+    fn finish_momentum(
+        a: &mut Stencil5,
+        phi: &[f64],
+        speed: impl Fn(usize) -> f64,
+        relax: f64,
+    ) -> f64 {
+        let mut num = 0.0;
+        let mut den = 0.0;
+        let nx = a.pattern().nx();
+        for k in 0..phi.len() {
+            if a.pattern().fixed_mask()[k] {
+                continue;
+            }
+            let mut nb = 0.0;
+            if a.a_e[k] != 0.0 {
+                nb += a.a_e[k] * phi[k + 1];
+            }
+            if a.a_w[k] != 0.0 {
+                nb += a.a_w[k] * phi[k - 1];
+            }
+            if a.a_n[k] != 0.0 {
+                nb += a.a_n[k] * phi[k + nx];
+            }
+            if a.a_s[k] != 0.0 {
+                nb += a.a_s[k] * phi[k - nx];
+            }
+            num += (a.b[k] + nb - a.a_p[k] * phi[k]).abs();
+            den += a.a_p[k].abs() * speed(k);
+            // Patankar under-relaxation (model-spec §4.10)
+            let ap = a.a_p[k] / relax;
+            a.b[k] += (1.0 - relax) * ap * phi[k];
+            a.a_p[k] = ap;
+        }
+        if den > 0.0 {
+            num / den
+        } else {
+            num
+        }
+    }
+
+    fn momentum_u(&mut self, dt: f64) -> Result<f64, SolverError> {
+        let (nx, ny) = (self.grid.nx(), self.grid.ny());
+        let (rho, mu) = (self.fluid.density, self.fluid.viscosity);
+        let dx = self.grid.x.widths();
+        let dy = self.grid.y.widths();
+        let dyc = self.grid.y.face_spacing();
+        let mx = nx + 1;
+        // Faces of the u control volumes.
+        {
+            let f = &mut self.u_faces;
+            for j in 0..ny {
+                for i in 1..=nx {
+                    // x-face between u-nodes i-1 and i lies at cell centre i-1
+                    let k = i + (mx + 1) * j;
+                    f.flux_x[k] = rho * 0.5 * (self.u[i - 1 + mx * j] + self.u[i + mx * j]) * dy[j];
+                    f.cond_x[k] = mu * dy[j] / dx[i - 1];
+                }
+            }
+            for j in 1..ny {
+                for i in 0..mx {
+                    let k = i + mx * j;
+                    let mut flux = 0.0;
+                    if i >= 1 {
+                        flux += self.v[i - 1 + nx * j] * 0.5 * dx[i - 1];
+                    }
+                    if i < nx {
+                        flux += self.v[i + nx * j] * 0.5 * dx[i];
+                    }
+                    f.flux_y[k] = rho * flux;
+                    f.cond_y[k] = mu * u_cv_width(dx, i) / dyc[j];
+                }
+            }
+        }
+        assemble(&self.u_faces, &self.u, self.settings.scheme, &mut self.a_u);
+        let a = &mut self.a_u;
+        let (p_west, p_east) = (
+            outlet_pressure(&self.bcs.west),
+            outlet_pressure(&self.bcs.east),
+        );
+        for j in 0..ny {
+            for i in 0..mx {
+                let k = i + mx * j;
+                if a.pattern().fixed_mask()[k] {
+                    a.a_p[k] = 1.0;
+                    a.b[k] = 0.0;
+                    a.a_e[k] = 0.0;
+                    a.a_w[k] = 0.0;
+                    a.a_n[k] = 0.0;
+                    a.a_s[k] = 0.0;
+                    continue;
+                }
+                let width = u_cv_width(dx, i);
+                let volume = width * dy[j];
+                // walls below and above: tangential Robin closure (model-spec §3.2)
+                if j == 0 {
+                    if let SideBc::Wall(face) = self.bcs.south {
+                        let (ap, b) = face.implicit_parts(mu, dy[0]);
+                        a.a_p[k] += ap * width;
+                        a.b[k] += b * width;
+                    }
+                }
+                if j == ny - 1 {
+                    if let SideBc::Wall(face) = self.bcs.north {
+                        let (ap, b) = face.implicit_parts(mu, dy[ny - 1]);
+                        a.a_p[k] += ap * width;
+                        a.b[k] += b * width;
+                    }
+                }
+                // transient (implicit Euler, model-spec §4.3)
+                let a0 = rho * volume / dt;
+                a.a_p[k] += a0;
+                a.b[k] += a0 * self.u_old[k];
+                // pressure force and gravity
+                let p_w = if i == 0 {
+                    p_west
+                } else {
+                    self.p[i - 1 + nx * j]
+                };
+                let p_e = if i == nx { p_east } else { self.p[i + nx * j] };
+                a.b[k] += (p_w - p_e) * dy[j] + rho * self.gravity.0 * volume;
+            }
+        }
+        let v = &self.v;
+        let speed = |k: usize| {
+            let (i, j) = (k % mx, k / mx);
+            self.u[k].hypot(v[i.min(nx - 1) + nx * j])
+        };
+        let r = Self::finish_momentum(a, &self.u, speed, self.settings.relax_velocity);
+        for k in 0..self.d_u.len() {
+            self.d_u[k] = if a.pattern().fixed_mask()[k] {
+                0.0
+            } else {
+                dy[k / mx] / a.a_p[k]
+            };
+        }
+        self.solver_u
+            .setup_and_solve(a, &mut self.u)
+            .map_err(|source| SolverError::Linear {
+                equation: "u momentum",
+                source,
+            })?;
+        Ok(r)
+    }
+
+    fn momentum_v(&mut self, dt: f64) -> Result<f64, SolverError> {
+        let (nx, ny) = (self.grid.nx(), self.grid.ny());
+        let (rho, mu) = (self.fluid.density, self.fluid.viscosity);
+        let dx = self.grid.x.widths();
+        let dy = self.grid.y.widths();
+        let dxc = self.grid.x.face_spacing();
+        let my = ny + 1;
+        {
+            let f = &mut self.v_faces;
+            // x-faces of the v control volumes, between v-nodes (i-1, j) and (i, j), at x-face i
+            for j in 0..my {
+                for i in 1..nx {
+                    let k = i + (nx + 1) * j;
+                    let mut flux = 0.0;
+                    if j >= 1 {
+                        flux += self.u[i + (nx + 1) * (j - 1)] * 0.5 * dy[j - 1];
+                    }
+                    if j < ny {
+                        flux += self.u[i + (nx + 1) * j] * 0.5 * dy[j];
+                    }
+                    f.flux_x[k] = rho * flux;
+                    f.cond_x[k] = mu * v_cv_height(dy, j) / dxc[i];
+                }
+            }
+            // y-faces between v-nodes j-1 and j lie at cell centre j-1
+            for j in 1..my {
+                for i in 0..nx {
+                    let k = i + nx * j;
+                    f.flux_y[k] =
+                        rho * 0.5 * (self.v[i + nx * (j - 1)] + self.v[i + nx * j]) * dx[i];
+                    f.cond_y[k] = mu * dx[i] / dy[j - 1];
+                }
+            }
+        }
+        assemble(&self.v_faces, &self.v, self.settings.scheme, &mut self.a_v);
+        let a = &mut self.a_v;
+        let (p_south, p_north) = (
+            outlet_pressure(&self.bcs.south),
+            outlet_pressure(&self.bcs.north),
+        );
+        for j in 0..my {
+            for i in 0..nx {
+                let k = i + nx * j;
+                if a.pattern().fixed_mask()[k] {
+                    a.a_p[k] = 1.0;
+                    a.b[k] = 0.0;
+                    a.a_e[k] = 0.0;
+                    a.a_w[k] = 0.0;
+                    a.a_n[k] = 0.0;
+                    a.a_s[k] = 0.0;
+                    continue;
+                }
+                let height = v_cv_height(dy, j);
+                let volume = height * dx[i];
+                if i == 0 {
+                    if let SideBc::Wall(face) = self.bcs.west {
+                        let (ap, b) = face.implicit_parts(mu, dx[0]);
+                        a.a_p[k] += ap * height;
+                        a.b[k] += b * height;
+                    }
+                }
+                if i == nx - 1 {
+                    if let SideBc::Wall(face) = self.bcs.east {
+                        let (ap, b) = face.implicit_parts(mu, dx[nx - 1]);
+                        a.a_p[k] += ap * height;
+                        a.b[k] += b * height;
+                    }
+                }
+                let a0 = rho * volume / dt;
+                a.a_p[k] += a0;
+                a.b[k] += a0 * self.v_old[k];
+                let p_s = if j == 0 {
+                    p_south
+                } else {
+                    self.p[i + nx * (j - 1)]
+                };
+                let p_n = if j == ny { p_north } else { self.p[i + nx * j] };
+                a.b[k] += (p_s - p_n) * dx[i] + rho * self.gravity.1 * volume;
+            }
+        }
+        let u = &self.u;
+        let speed = |k: usize| {
+            let (i, j) = (k % nx, k / nx);
+            self.v[k].hypot(u[i + (nx + 1) * j.min(ny - 1)])
+        };
+        let r = Self::finish_momentum(a, &self.v, speed, self.settings.relax_velocity);
+        for k in 0..self.d_v.len() {
+            let i = k % nx;
+            self.d_v[k] = if a.pattern().fixed_mask()[k] {
+                0.0
+            } else {
+                dx[i] / a.a_p[k]
+            };
+        }
+        self.solver_v
+            .setup_and_solve(a, &mut self.v)
+            .map_err(|source| SolverError::Linear {
+                equation: "v momentum",
+                source,
+            })?;
+        Ok(r)
+    }
+
+    /// Pressure correction from cell continuity (model-spec §4.6 for one incompressible
+    /// phase); corrects u, v and p. Returns the mean |mass imbalance| before correction.
+    fn pressure_correction(&mut self) -> Result<f64, SolverError> {
+        let (nx, ny) = (self.grid.nx(), self.grid.ny());
+        let rho = self.fluid.density;
+        let dx = self.grid.x.widths();
+        let dy = self.grid.y.widths();
+        let a = &mut self.a_p;
+        let mut imbalance = 0.0;
+        for j in 0..ny {
+            for i in 0..nx {
+                let k = i + nx * j;
+                let (kw, ke) = (i + (nx + 1) * j, i + 1 + (nx + 1) * j);
+                let (ks, kn) = (i + nx * j, i + nx * (j + 1));
+                let b =
+                    rho * ((self.u[kw] - self.u[ke]) * dy[j] + (self.v[ks] - self.v[kn]) * dx[i]);
+                imbalance += b.abs();
+                if self.pressure_pinned && k == 0 {
+                    a.a_p[k] = 1.0;
+                    a.b[k] = 0.0;
+                    a.a_e[k] = 0.0;
+                    a.a_w[k] = 0.0;
+                    a.a_n[k] = 0.0;
+                    a.a_s[k] = 0.0;
+                    continue;
+                }
+                let ce = rho * self.d_u[ke] * dy[j];
+                let cw = rho * self.d_u[kw] * dy[j];
+                let cn = rho * self.d_v[kn] * dx[i];
+                let cs = rho * self.d_v[ks] * dx[i];
+                // links to neighbour cells; a boundary face with a velocity unknown (an
+                // outlet, where p' = 0 on the face) contributes only to a_P
+                a.a_e[k] = if i + 1 < nx { ce } else { 0.0 };
+                a.a_w[k] = if i > 0 { cw } else { 0.0 };
+                a.a_n[k] = if j + 1 < ny { cn } else { 0.0 };
+                a.a_s[k] = if j > 0 { cs } else { 0.0 };
+                a.a_p[k] = ce + cw + cn + cs;
+                a.b[k] = b;
+            }
+        }
+        self.p_corr.iter_mut().for_each(|x| *x = 0.0);
+        self.solver_p
+            .setup_and_solve(a, &mut self.p_corr)
+            .map_err(|source| SolverError::Linear {
+                equation: "pressure correction",
+                source,
+            })?;
+        // velocity correction with the full p', pressure with ω_p (model-spec §4.6)
+        let pc = &self.p_corr;
+        for j in 0..ny {
+            for i in 0..=nx {
+                let k = i + (nx + 1) * j;
+                if self.d_u[k] == 0.0 {
+                    continue;
+                }
+                let p_w = if i == 0 { 0.0 } else { pc[i - 1 + nx * j] };
+                let p_e = if i == nx { 0.0 } else { pc[i + nx * j] };
+                self.u[k] += self.d_u[k] * (p_w - p_e);
+            }
+        }
+        for j in 0..=ny {
+            for i in 0..nx {
+                let k = i + nx * j;
+                if self.d_v[k] == 0.0 {
+                    continue;
+                }
+                let p_s = if j == 0 { 0.0 } else { pc[i + nx * (j - 1)] };
+                let p_n = if j == ny { 0.0 } else { pc[i + nx * j] };
+                self.v[k] += self.d_v[k] * (p_s - p_n);
+            }
+        }
+        let w = self.settings.relax_pressure;
+        self.p.iter_mut().zip(pc).for_each(|(p, c)| *p += w * c);
+        Ok(imbalance / (nx * ny) as f64)
+    }
+
+    /// Steady SIMPLE iterations (no transient term) until the momentum residuals sum to at
+    /// most `tol` and the mean mass imbalance is at most `tol · mass_scale`.
+    pub fn solve_steady(
+        &mut self,
+        max_iterations: usize,
+        tol: f64,
+        mass_scale: f64,
+    ) -> Result<SteadyReport, SolverError> {
+        self.begin_step();
+        let mut last = Residuals::default();
+        for it in 0..max_iterations {
+            last = self.outer_iteration(f64::INFINITY, it)?;
+            if it > 0 && last.u + last.v <= tol && last.mass <= tol * mass_scale {
+                return Ok(SteadyReport {
+                    iterations: it + 1,
+                    residuals: last,
+                    converged: true,
+                });
+            }
+        }
+        Ok(SteadyReport {
+            iterations: max_iterations,
+            residuals: last,
+            converged: false,
+        })
+    }
+
+    /// Net continuity imbalance of the current velocities, Σ over cells of
+    /// |ρ (inflow − outflow)| [kg s⁻¹ per m depth].
+    pub fn mass_imbalance(&self) -> f64 {
+        let (nx, ny) = (self.grid.nx(), self.grid.ny());
+        let dx = self.grid.x.widths();
+        let dy = self.grid.y.widths();
+        let mut total = 0.0;
+        for j in 0..ny {
+            for i in 0..nx {
+                let (kw, ke) = (i + (nx + 1) * j, i + 1 + (nx + 1) * j);
+                let (ks, kn) = (i + nx * j, i + nx * (j + 1));
+                total += (self.fluid.density
+                    * ((self.u[kw] - self.u[ke]) * dy[j] + (self.v[ks] - self.v[kn]) * dx[i]))
+                    .abs();
+            }
+        }
+        total
+    }
+
+    /// u interpolated bilinearly at (x, y) from its staggered nodes, with the wall face
+    /// values of the Robin closure below the first and above the last row.
+    pub fn u_at(&self, x: f64, y: f64) -> f64 {
+        let nx = self.grid.nx();
+        let xs = self.grid.x.faces();
+        let yc = self.grid.y.centres();
+        let column = |i: usize| -> (Vec<f64>, Vec<f64>) {
+            let mut ys = vec![self.grid.y.start()];
+            let mut us = vec![face_value(
+                &self.bcs.south,
+                self.u[i],
+                self.grid.y.widths()[0],
+            )];
+            for (j, &y) in yc.iter().enumerate() {
+                ys.push(y);
+                us.push(self.u[i + (nx + 1) * j]);
+            }
+            let last = self.u[i + (nx + 1) * (yc.len() - 1)];
+            ys.push(self.grid.y.end());
+            us.push(face_value(
+                &self.bcs.north,
+                last,
+                *self.grid.y.widths().last().expect("cells"),
+            ));
+            (ys, us)
+        };
+        let i = xs.partition_point(|&f| f <= x).clamp(1, nx) - 1;
+        let t = (x - xs[i]) / (xs[i + 1] - xs[i]);
+        let (ya, ua) = column(i);
+        let (_, ub) = column(i + 1);
+        (1.0 - t) * interp(&ya, &ua, y) + t * interp(&ya, &ub, y)
+    }
+
+    /// v interpolated bilinearly at (x, y), with wall face values at the two ends.
+    pub fn v_at(&self, x: f64, y: f64) -> f64 {
+        let (nx, ny) = (self.grid.nx(), self.grid.ny());
+        let ys = self.grid.y.faces();
+        let xc = self.grid.x.centres();
+        let row = |j: usize| -> (Vec<f64>, Vec<f64>) {
+            let mut xs = vec![self.grid.x.start()];
+            let mut vs = vec![face_value(
+                &self.bcs.west,
+                self.v[nx * j],
+                self.grid.x.widths()[0],
+            )];
+            for (i, &x) in xc.iter().enumerate() {
+                xs.push(x);
+                vs.push(self.v[i + nx * j]);
+            }
+            xs.push(self.grid.x.end());
+            vs.push(face_value(
+                &self.bcs.east,
+                self.v[nx - 1 + nx * j],
+                self.grid.x.widths()[nx - 1],
+            ));
+            (xs, vs)
+        };
+        let j = ys.partition_point(|&f| f <= y).clamp(1, ny) - 1;
+        let t = (y - ys[j]) / (ys[j + 1] - ys[j]);
+        let (xa, va) = row(j);
+        let (_, vb) = row(j + 1);
+        (1.0 - t) * interp(&xa, &va, x) + t * interp(&xa, &vb, x)
+    }
+}
+
+fn outlet_pressure(bc: &SideBc) -> f64 {
+    match bc {
+        SideBc::Outlet(p) => *p,
+        SideBc::Wall(_) => 0.0,
+    }
+}
+
+fn face_value(bc: &SideBc, fluid_value: f64, delta: f64) -> f64 {
+    match bc {
+        SideBc::Wall(face) => face.face_value(fluid_value, delta),
+        SideBc::Outlet(_) => fluid_value,
+    }
+}
+
+fn u_cv_width(dx: &[f64], i: usize) -> f64 {
+    let nx = dx.len();
+    if i == 0 {
+        0.5 * dx[0]
+    } else if i == nx {
+        0.5 * dx[nx - 1]
+    } else {
+        0.5 * (dx[i - 1] + dx[i])
+    }
+}
+
+fn v_cv_height(dy: &[f64], j: usize) -> f64 {
+    u_cv_width(dy, j)
+}
+
+/// Piecewise-linear interpolation in increasing abscissae, clamped at the ends.
+fn interp(xs: &[f64], ys: &[f64], x: f64) -> f64 {
+    let k = xs.partition_point(|&a| a <= x).clamp(1, xs.len() - 1);
+    let t = ((x - xs[k - 1]) / (xs[k] - xs[k - 1])).clamp(0.0, 1.0);
+    (1.0 - t) * ys[k - 1] + t * ys[k]
+}
