@@ -237,13 +237,16 @@ impl SolidsWallModel {
     /// h → ∞ limit, u_face = U_w; the face coefficients are always finite.
     pub fn momentum(&self, state: &MomentumWallState, params: &ClosureParams) -> MomentumWall {
         match self {
-            Self::NoSlip => MomentumWall::fixed(RobinFace::dirichlet(0.0), MomentumBranch::NoSlip),
+            Self::NoSlip => {
+                MomentumWall::fixed(RobinFace::dirichlet(0.0), MomentumBranch::NoSlip, state)
+            }
             Self::FreeSlip => {
-                MomentumWall::fixed(RobinFace::ZERO_GRADIENT, MomentumBranch::FreeSlip)
+                MomentumWall::fixed(RobinFace::ZERO_GRADIENT, MomentumBranch::FreeSlip, state)
             }
             Self::PartialSlip(user) => MomentumWall::fixed(
                 RobinFace::partial_slip(user.h_u, user.u_w),
                 MomentumBranch::User,
+                state,
             ),
             Self::JohnsonJackson {
                 specularity,
@@ -543,11 +546,13 @@ pub struct MomentumWall {
 }
 
 impl MomentumWall {
-    fn fixed(face: RobinFace, branch: MomentumBranch) -> Self {
+    /// A state-independent face (no-slip, free-slip, user), with the state's slip echoed.
+    fn fixed(face: RobinFace, branch: MomentumBranch, state: &MomentumWallState) -> Self {
         Self {
             face,
             diagnostics: MomentumDiagnostics {
                 branch,
+                slip: state.slip,
                 h_u: if face.g == 0.0 { f64::INFINITY } else { face.h },
                 ..MomentumDiagnostics::default()
             },

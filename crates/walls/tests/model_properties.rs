@@ -363,3 +363,60 @@ fn invalid_parameters_name_the_field() {
     assert!(SolidsWallModel::partial_slip(-1.0, 0.0, 1.0, 0.0, 0.0).is_err());
     assert!(SolidsWallModel::johnson_jackson(f64::NAN, E_W, DELTA_W, 0.0).is_err());
 }
+
+/// verification-notes §2a table ("JJ h_u and h_θ do not depend on θ"): dry Lun (1984)
+/// closures, CS g0, e = 0.9, e_w = 0.7, εs,max = 0.65, kinetic branch: h_u d/φ and
+/// h_θ d = (H_w/κ) d at εs = 0.03 … 0.64, printed to 3 significant digits.
+#[test]
+fn verification_notes_dry_table() {
+    let table = [
+        (0.03, 0.398, 0.108),
+        (0.1, 1.37, 0.351),
+        (0.2, 2.30, 0.578),
+        (0.3, 2.49, 0.645),
+        (0.4, 2.31, 0.622),
+        (0.5, 2.05, 0.565),
+        (0.6, 1.79, 0.504),
+        (0.64, 1.70, 0.480),
+    ];
+    let p = params(true, FrictionModel::None);
+    let d = p.particles.diameter;
+    let phi = 0.1;
+    let wall = SolidsWallModel::johnson_jackson(phi, E_W, DELTA_W, 0.0).unwrap();
+    for theta in [1e-4, 0.5] {
+        for (eps_s, hu_d_over_phi, htheta_d) in table {
+            let m = wall.momentum(
+                &MomentumWallState {
+                    eps_s_fluid: eps_s,
+                    eps_s,
+                    theta,
+                    slip: 1.0,
+                    gas_slip: 0.0,
+                    tr_d: 0.0,
+                    s_ddot_s: 0.0,
+                    s_nn: 0.0,
+                },
+                &p,
+            );
+            let got = m.diagnostics.h_u * d / phi;
+            assert!(
+                (got / hu_d_over_phi - 1.0).abs() < 5e-3,
+                "εs {eps_s}: h_u d/φ = {got}"
+            );
+            let t = wall.granular_temperature(
+                &ThetaWallState {
+                    eps_s,
+                    theta,
+                    slip: 1.0,
+                    gas_slip: 0.0,
+                },
+                &p,
+            );
+            let got = t.face.h / t.face.g * d;
+            assert!(
+                (got / htheta_d - 1.0).abs() < 5e-3,
+                "εs {eps_s}: h_θ d = {got}"
+            );
+        }
+    }
+}
