@@ -102,6 +102,17 @@ pub struct Residuals {
     pub mass: f64,
 }
 
+/// Outcome of [`SinglePhase::step`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StepOutcome {
+    /// outer iterations used
+    pub iterations: usize,
+    /// whether the step converged (if not, the fields were restored)
+    pub converged: bool,
+    /// the last residual sum
+    pub residual: f64,
+}
+
 /// Outcome of [`SinglePhase::solve_steady`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SteadyReport {
@@ -569,6 +580,60 @@ impl SinglePhase {
         let w = self.settings.relax_pressure;
         self.p.iter_mut().zip(pc).for_each(|(p, c)| *p += w * c);
         Ok(imbalance / (nx * ny) as f64)
+    }
+
+    /// One implicit-Euler time step of size `dt`: outer iterations until the sum of the
+    /// normalised residuals (momentum as in [`Residuals`], continuity relative to the first
+    /// iteration's imbalance, model-spec §4.11) is at most `tol`, after at least two
+    /// iterations. A step that does not converge within `max_iterations`, or whose sum
+    /// exceeds `diverge`, is undone (fields restored) and reported as not converged, so the
+    /// caller can retry with a smaller Δt (model-spec §4.12).
+    pub fn step(
+        &mut self,
+        dt: f64,
+        tol: f64,
+        diverge: f64,
+        max_iterations: usize,
+    ) -> Result<StepOutcome, SolverError> {
+        self.begin_step();
+        let mut first_mass = None;
+        let mut total = f64::INFINITY;
+        for it in 0..max_iterations {
+            let r = match self.outer_iteration(dt, it) {
+                Ok(r) => r,
+                Err(SolverError::NonFinite { .. }) => {
+                    self.restore_step();
+                    return Ok(StepOutcome {
+                        iterations: it + 1,
+                        converged: false,
+                        residual: f64::INFINITY,
+                    });
+                }
+                Err(e) => return Err(e),
+            };
+            let norm = *first_mass.get_or_insert(if r.mass > f64::MIN_POSITIVE {
+                r.mass
+            } else {
+                1.0
+            });
+            total = r.u + r.v + r.mass / norm;
+            if it >= 1 && total <= tol {
+                return Ok(StepOutcome {
+                    iterations: it + 1,
+                    converged: true,
+                    residual: total,
+                });
+            }
+            if it >= 1 && total >= diverge {
+                break;
+            }
+        }
+        self.restore_step();
+        Ok(StepOutcome {
+            iterations: max_iterations,
+            converged: false,
+            residual: total,
+        })
     }
 
     /// Steady SIMPLE iterations (no transient term) until the momentum residuals sum to at
