@@ -3,6 +3,10 @@
 //! - `sweep`: the paper's case matrix (every sweep and stand-alone case under `cases/`),
 //!   expanded, validated and listed; solving arrives with the two-fluid solver (issue 7).
 //! - `bench linsolve`: the linear-solver timing table of docs/performance.md.
+//! - `report analytic`: family A, the closed-form profiles of paper Fig. 1, as SVG and CSV
+//!   in docs/analytic/.
+
+mod analytic;
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -33,6 +37,11 @@ enum Task {
         #[arg(long, default_value = "cases")]
         cases: PathBuf,
     },
+    /// Figures and tables: `cargo xtask report analytic` (paper Fig. 1 into docs/analytic/).
+    Report {
+        /// what to report (analytic)
+        what: String,
+    },
     /// Benchmarks: `cargo xtask bench linsolve [-- --max-cells N]`.
     Bench {
         /// what to benchmark (linsolve)
@@ -45,7 +54,10 @@ enum Task {
 
 /// The workspace root (xtask lives one level below it).
 fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("workspace root").to_path_buf()
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .expect("workspace root")
+        .to_path_buf()
 }
 
 fn ron_files(dir: &Path, out: &mut Vec<PathBuf>) -> Result<()> {
@@ -97,8 +109,14 @@ fn sweep(fidelity: Fidelity, shard: Option<(usize, usize)>, cases_dir: &Path) ->
     }
     // A case file that serves as a sweep's base is not a run of its own.
     let canonical = |p: &Path| p.canonicalize().unwrap_or_else(|_| p.to_path_buf());
-    let bases: BTreeSet<PathBuf> =
-        loaded.iter().flat_map(|(_, cases)| cases.iter().filter_map(|c| c.base.as_deref().map(canonical))).collect();
+    let bases: BTreeSet<PathBuf> = loaded
+        .iter()
+        .flat_map(|(_, cases)| {
+            cases
+                .iter()
+                .filter_map(|c| c.base.as_deref().map(canonical))
+        })
+        .collect();
     let runs: Vec<_> = loaded
         .into_iter()
         .filter(|(f, _)| !bases.contains(&canonical(f)))
@@ -106,12 +124,20 @@ fn sweep(fidelity: Fidelity, shard: Option<(usize, usize)>, cases_dir: &Path) ->
         .collect();
     let selected: Vec<_> = match shard {
         None => runs.iter().collect(),
-        Some((i, n)) => runs.iter().enumerate().filter(|(k, _)| k % n == i - 1).map(|(_, r)| r).collect(),
+        Some((i, n)) => runs
+            .iter()
+            .enumerate()
+            .filter(|(k, _)| k % n == i - 1)
+            .map(|(_, r)| r)
+            .collect(),
     };
     println!(
         "case matrix at fidelity `{fidelity}`: {} flow case(s){}, {} analytic famil{}",
         selected.len(),
-        shard.map_or(String::new(), |(i, n)| format!(" (shard {i}/{n} of {})", runs.len())),
+        shard.map_or(String::new(), |(i, n)| format!(
+            " (shard {i}/{n} of {})",
+            runs.len()
+        )),
         analytic.len(),
         if analytic.len() == 1 { "y" } else { "ies" }
     );
@@ -130,7 +156,10 @@ fn sweep(fidelity: Fidelity, shard: Option<(usize, usize)>, cases_dir: &Path) ->
         );
     }
     for (name, f) in &analytic {
-        println!("  {name:<34} closed form (no flow solve)   {}", f.strip_prefix(root()).unwrap_or(f).display());
+        println!(
+            "  {name:<34} closed form (no flow solve)   {}",
+            f.strip_prefix(root()).unwrap_or(f).display()
+        );
     }
     println!("total cells over the matrix: {cells}");
     println!(
@@ -143,19 +172,40 @@ fn sweep(fidelity: Fidelity, shard: Option<(usize, usize)>, cases_dir: &Path) ->
 fn main() -> Result<()> {
     let cli = Cli::parse();
     match cli.task {
-        Task::Sweep { fidelity, shard, cases } => {
+        Task::Sweep {
+            fidelity,
+            shard,
+            cases,
+        } => {
             let fidelity: Fidelity = fidelity.parse().map_err(anyhow::Error::msg)?;
             let shard = shard.as_deref().map(parse_shard).transpose()?;
-            let dir = if cases.is_absolute() { cases } else { root().join(cases) };
+            let dir = if cases.is_absolute() {
+                cases
+            } else {
+                root().join(cases)
+            };
             sweep(fidelity, shard, &dir)
         }
+        Task::Report { what } => match what.as_str() {
+            "analytic" => analytic::report(&root()),
+            other => bail!("unknown report `{other}` (known: analytic)"),
+        },
         Task::Bench { what, args } => match what.as_str() {
             "linsolve" => {
-                let status = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
-                    .current_dir(root())
-                    .args(["run", "--release", "-p", "runout-linsolve", "--example", "linsolve_table", "--"])
-                    .args(&args)
-                    .status()?;
+                let status =
+                    Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
+                        .current_dir(root())
+                        .args([
+                            "run",
+                            "--release",
+                            "-p",
+                            "runout-linsolve",
+                            "--example",
+                            "linsolve_table",
+                            "--",
+                        ])
+                        .args(&args)
+                        .status()?;
                 if !status.success() {
                     bail!("linsolve benchmark failed: {status}");
                 }

@@ -3,9 +3,12 @@
 //! - `runout check <files or dirs...>`: validate case, sweep and analytic files and list the
 //!   cases they expand to;
 //! - `runout mesh <file>`: print the grid summary of a case (or of each case of a sweep);
-//! - `runout closures --eps-s … --theta …`: every closure value at one state, as JSON.
+//! - `runout closures --eps-s … --theta …`: every closure value at one state, as JSON;
+//! - `runout wall --model … --eps-s … --theta … --slip …`: a wall model's Robin coefficients
+//!   and diagnostics (h_w^u, φ, COL, FRI), as JSON.
 
 mod cmd_closures;
+mod cmd_wall;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -46,6 +49,9 @@ enum Command {
     /// Print every closure value (kinetic theory, friction, drag, K_cp, granular-energy
     /// sources) at one state as JSON.
     Closures(cmd_closures::ClosuresArgs),
+    /// Print a wall model's Robin coefficients for velocity and granular temperature, with
+    /// the diagnostics the paper plots (h_w^u, φ, COL, FRI, slip), as JSON.
+    Wall(cmd_wall::WallArgs),
 }
 
 fn parse_fidelity(s: &str) -> Result<Fidelity, String> {
@@ -186,6 +192,13 @@ fn main() -> ExitCode {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {
                 eprintln!("runout closures: {e:#}");
+                ExitCode::FAILURE
+            }
+        },
+        Command::Wall(args) => match cmd_wall::run(&args) {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("runout wall: {e:#}");
                 ExitCode::FAILURE
             }
         },
