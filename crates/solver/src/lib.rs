@@ -10,6 +10,7 @@
 
 pub mod single_phase;
 pub mod transport;
+pub mod verify;
 
 pub use single_phase::{
     Fluid, Residuals, Settings, SideBc, SinglePhase, SolverError, SteadyReport,
