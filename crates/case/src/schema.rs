@@ -22,7 +22,9 @@ pub struct Case {
     /// The gas phase; `None` for a dry granular case (no gas momentum, no drag).
     #[serde(default)]
     pub gas: Option<Gas>,
-    /// Solids phases 1..M (the paper has M = 1; nothing assumes it).
+    /// Solids phases 1..M (the paper has M = 1; nothing assumes it). Empty for a
+    /// single-phase (gas only) case.
+    #[serde(default)]
     pub solids: Vec<Solids>,
     /// Closure choices.
     #[serde(default)]
@@ -186,6 +188,12 @@ pub enum GasWall {
     NoSlip,
     /// zero tangential stress
     FreeSlip,
+    /// face velocity held at `u_w` (a moving wall, e.g. a cavity lid; MFIX PSW without
+    /// `BC_HW_G`, model-spec §3.2)
+    Moving {
+        /// wall velocity along the wall [m s⁻¹]
+        u_w: f64,
+    },
     /// du/dn + h (u − u_w) = 0 (paper Eq. 12 for the gas)
     PartialSlip {
         /// h [m⁻¹]

@@ -135,8 +135,12 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
         c.positive("gas.reference_pressure", gas.reference_pressure);
     }
 
-    if case.solids.is_empty() {
-        c.fail("solids", "[]", "at least one solids phase");
+    if case.solids.is_empty() && case.gas.is_none() {
+        c.fail(
+            "solids",
+            "[]",
+            "at least one solids phase, or a gas (a single-phase case)",
+        );
     }
     for (k, s) in case.solids.iter().enumerate() {
         let p = format!("solids[{k}]");
@@ -476,9 +480,13 @@ fn check_boundary(c: &mut Checker, p: &str, b: &Boundary, has_gas: bool) {
             }
         }
         Boundary::Wall { gas, solids } => {
-            if let GasWall::PartialSlip { h_u, u_w } = gas {
-                c.non_negative(format!("{p}.gas.h_u"), *h_u);
-                c.finite(format!("{p}.gas.u_w"), *u_w);
+            match gas {
+                GasWall::PartialSlip { h_u, u_w } => {
+                    c.non_negative(format!("{p}.gas.h_u"), *h_u);
+                    c.finite(format!("{p}.gas.u_w"), *u_w);
+                }
+                GasWall::Moving { u_w } => c.finite(format!("{p}.gas.u_w"), *u_w),
+                GasWall::NoSlip | GasWall::FreeSlip => {}
             }
             let q = format!("{p}.solids");
             let wall_angle = |c: &mut Checker, v: f64| {

@@ -2,6 +2,8 @@
 //!
 //! - `runout check <files or dirs...>`: validate case, sweep and analytic files and list the
 //!   cases they expand to;
+//! - `runout run <file>`: run a case (single-phase gas cases today; the two-fluid model is
+//!   issue 7) and write VTK fields, CSV monitors and a JSON summary;
 //! - `runout mesh <file>`: print the grid summary of a case (or of each case of a sweep);
 //! - `runout closures --eps-s … --theta …`: every closure value at one state, as JSON;
 //! - `runout wall --model … --eps-s … --theta … --slip …`: a wall model's Robin coefficients
@@ -14,6 +16,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
+use indicatif::{ProgressBar, ProgressStyle};
 use runout_case::{load, Fidelity, Loaded};
 use tracing::info;
 
@@ -45,6 +48,21 @@ enum Command {
         /// smoke, coarse or paper
         #[arg(long, default_value = "paper", value_parser = parse_fidelity)]
         fidelity: Fidelity,
+    },
+    /// Run a case (or every case of a sweep) and write fields (VTK), monitors (CSV) and a
+    /// run summary (JSON) into `runs/<case>/<fidelity>/` or `--out`.
+    Run {
+        /// a case or sweep file
+        file: PathBuf,
+        /// smoke, coarse or paper
+        #[arg(long, default_value = "paper", value_parser = parse_fidelity)]
+        fidelity: Fidelity,
+        /// output folder (default runs/<case>/<fidelity>)
+        #[arg(long)]
+        out: Option<PathBuf>,
+        /// no progress bar
+        #[arg(long)]
+        quiet: bool,
     },
     /// Print every closure value (kinetic theory, friction, drag, K_cp, granular-energy
     /// sources) at one state as JSON.
@@ -176,6 +194,74 @@ fn mesh(file: &Path, fidelity: Fidelity) -> ExitCode {
     ExitCode::SUCCESS
 }
 
+fn run(file: &Path, fidelity: Fidelity, out: Option<&Path>, quiet: bool) -> ExitCode {
+    let cases = match load(file) {
+        Ok(Loaded::Cases(c)) => c,
+        Ok(Loaded::Analytic(a)) => {
+            eprintln!(
+                "{}: `{}` is an analytic family: use `cargo xtask report analytic`",
+                file.display(),
+                a.name
+            );
+            return ExitCode::FAILURE;
+        }
+        Err(e) => {
+            eprintln!("{e}");
+            return ExitCode::FAILURE;
+        }
+    };
+    let mut status = ExitCode::SUCCESS;
+    for sc in &cases {
+        let dir = match out {
+            Some(o) if cases.len() == 1 => o.to_path_buf(),
+            Some(o) => o.join(&sc.case.name),
+            None => runout_solver::run::default_out_dir(Path::new("."), &sc.case.name, fidelity),
+        };
+        let bar = if quiet {
+            ProgressBar::hidden()
+        } else {
+            ProgressBar::new(1000)
+        };
+        bar.set_style(
+            ProgressStyle::with_template("{prefix} [{bar:30}] {msg} (eta {eta})")
+                .expect("a valid template")
+                .progress_chars("=> "),
+        );
+        bar.set_prefix(sc.case.name.clone());
+        let result = runout_solver::run_case(&sc.case, fidelity, &dir, |p| {
+            bar.set_position((1000.0 * p.time / p.end_time) as u64);
+            bar.set_message(format!(
+                "t = {:.4} s, dt = {:.2e} s, {} it, {} steps",
+                p.time, p.dt, p.iterations, p.steps
+            ));
+        });
+        bar.finish_and_clear();
+        match result {
+            Ok(summary) => {
+                println!(
+                    "{}: {:?} at t = {} s, {} steps ({} rejected), {} outer iterations, {:.2} s wall; output in {}",
+                    summary.case,
+                    summary.status,
+                    summary.simulated_time,
+                    summary.steps,
+                    summary.rejected_steps,
+                    summary.outer_iterations,
+                    summary.wall_time,
+                    dir.display()
+                );
+                if summary.status != runout_output::RunStatus::Completed {
+                    status = ExitCode::FAILURE;
+                }
+            }
+            Err(e) => {
+                eprintln!("{}: {e}", file.display());
+                status = ExitCode::FAILURE;
+            }
+        }
+    }
+    status
+}
+
 fn main() -> ExitCode {
     tracing_subscriber::fmt()
         .with_env_filter(
@@ -188,6 +274,12 @@ fn main() -> ExitCode {
     match cli.command {
         Command::Check { paths } => check(&paths),
         Command::Mesh { file, fidelity } => mesh(&file, fidelity),
+        Command::Run {
+            file,
+            fidelity,
+            out,
+            quiet,
+        } => run(&file, fidelity, out.as_deref(), quiet),
         Command::Closures(args) => match cmd_closures::run(&args) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {

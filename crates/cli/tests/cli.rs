@@ -18,7 +18,11 @@ fn root() -> PathBuf {
 }
 
 fn text(o: &Output) -> String {
-    format!("{}{}", String::from_utf8_lossy(&o.stdout), String::from_utf8_lossy(&o.stderr))
+    format!(
+        "{}{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    )
 }
 
 #[test]
@@ -41,7 +45,10 @@ fn check_rejects_bad_files_without_panicking() {
     let o = runout(&["check", bad.to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(1), "{}", text(&o));
     let t = text(&o);
-    assert!(t.contains("neg.ron") && t.contains("solids[0].diameter") && t.contains("(0, inf)"), "{t}");
+    assert!(
+        t.contains("neg.ron") && t.contains("solids[0].diameter") && t.contains("(0, inf)"),
+        "{t}"
+    );
     assert!(!t.contains("panicked"), "{t}");
     let o = runout(&["check", dir.join("missing.ron").to_str().unwrap()]);
     assert_eq!(o.status.code(), Some(1));
@@ -53,7 +60,10 @@ fn mesh_prints_the_two_paper_grids() {
     let o = runout(&["mesh", "cases/sensitivity/base.ron"]);
     assert!(o.status.success(), "{}", text(&o));
     let t = text(&o);
-    assert!(t.contains("x: [0, 20] m, dx min 0.020000 m, max 0.020000 m"), "{t}");
+    assert!(
+        t.contains("x: [0, 20] m, dx min 0.020000 m, max 0.020000 m"),
+        "{t}"
+    );
     assert!(t.contains("y: [0, 1.8] m, dy min 0.005000 m"), "{t}");
     let o = runout(&["mesh", "cases/flume/base.ron"]);
     let t = text(&o);
@@ -61,4 +71,85 @@ fn mesh_prints_the_two_paper_grids() {
     assert!(t.contains("y: [0, 1.8] m, dy min 0.010000 m"), "{t}");
     let o = runout(&["mesh", "--fidelity", "smoke", "cases/mfix/M-slide.ron"]);
     assert!(text(&o).contains("cells: 40 x 10 = 400"), "{}", text(&o));
+}
+
+#[test]
+fn run_writes_fields_monitors_and_summary() {
+    let out = std::env::temp_dir().join(format!("runout-run-{}", std::process::id()));
+    let o = runout(&[
+        "run",
+        "examples/cavity-re100.ron",
+        "--fidelity",
+        "smoke",
+        "--quiet",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", text(&o));
+    let summary = std::fs::read_to_string(out.join("summary.json")).unwrap();
+    assert!(summary.contains("\"Completed\""), "{summary}");
+    let pvd = std::fs::read_to_string(out.join("fields.pvd")).unwrap();
+    assert!(pvd.matches("<DataSet").count() >= 2, "{pvd}");
+    assert!(out.join("resolved.ron").exists());
+}
+
+#[test]
+fn run_refuses_a_two_fluid_case_before_any_step() {
+    let out = std::env::temp_dir().join(format!("runout-run-tfm-{}", std::process::id()));
+    let o = runout(&[
+        "run",
+        "cases/mfix/M-slide.ron",
+        "--fidelity",
+        "smoke",
+        "--quiet",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    let t = text(&o);
+    assert!(t.contains("two-fluid model is not implemented yet"), "{t}");
+    assert!(!out.join("summary.json").exists());
+}
+
+#[test]
+fn a_run_that_cannot_converge_stops_with_a_diagnosis_and_keeps_its_output() {
+    let dir = std::env::temp_dir().join(format!("runout-run-div-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    // two outer iterations can never reach a 1e-12 residual: every step fails until dt < dt_min
+    let text0 = std::fs::read_to_string(root().join("examples/cavity-re100.ron")).unwrap();
+    let bad = text0
+        .replacen(
+            "tolerances: (residual: 1e-4)",
+            "tolerances: (residual: 1e-12, max_iterations: 2)",
+            1,
+        )
+        .replacen("min: 1e-5", "min: 5e-3", 1);
+    assert_ne!(bad, text0);
+    let case = dir.join("stuck.ron");
+    std::fs::write(&case, bad).unwrap();
+    let out = dir.join("out");
+    let o = runout(&[
+        "run",
+        case.to_str().unwrap(),
+        "--fidelity",
+        "smoke",
+        "--quiet",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o));
+    let summary = std::fs::read_to_string(out.join("summary.json")).unwrap();
+    assert!(
+        summary.contains("Diverged") && summary.contains("dt_min"),
+        "{summary}"
+    );
+    // the diagnosis names the equations, where their largest residual is, and the history
+    assert!(
+        summary.contains("u momentum")
+            && summary.contains("largest at x =")
+            && summary.contains("residual history"),
+        "{summary}"
+    );
+    // the initial fields were written and kept
+    assert!(out.join("fields_00000.vtr").exists());
 }

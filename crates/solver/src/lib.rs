@@ -8,10 +8,12 @@
 // than zipped iterators there.
 #![allow(clippy::needless_range_loop)]
 
+pub mod run;
 pub mod single_phase;
 pub mod transport;
 pub mod verify;
 
+pub use run::{run_case, DtController, Progress, RunError};
 pub use single_phase::{
     Fluid, Residuals, Settings, SideBc, SinglePhase, SolverError, SteadyReport,
 };

@@ -24,11 +24,32 @@ pub enum SideBc {
     Wall(RobinFace),
     /// Pressure outlet (or inlet) holding this pressure on the boundary face [Pa].
     Outlet(f64),
+    /// Pressure outlet holding the fluid's hydrostatic pressure along it,
+    /// p(s) = p0 + ρ g_s s, with s the distance from the side's first corner (south end of
+    /// a west/east side, west end of a south/north side) and g_s the gravity component
+    /// along the side; it follows the gravity of the moment (cases.md "Top outlet under
+    /// tilted gravity").
+    HydrostaticOutlet {
+        /// pressure at the first corner [Pa]
+        p0: f64,
+        /// density of the column [kg m⁻³]
+        density: f64,
+    },
 }
 
 impl SideBc {
     fn is_outlet(&self) -> bool {
-        matches!(self, SideBc::Outlet(_))
+        !matches!(self, SideBc::Wall(_))
+    }
+
+    /// Pressure on the outlet at distance `s` from its first corner, with `g_along` the
+    /// gravity component along the side; `None` for a wall.
+    fn pressure(&self, s: f64, g_along: f64) -> Option<f64> {
+        match *self {
+            SideBc::Wall(_) => None,
+            SideBc::Outlet(p) => Some(p),
+            SideBc::HydrostaticOutlet { p0, density } => Some(p0 + density * g_along * s),
+        }
     }
 }
 
@@ -100,6 +121,12 @@ pub struct Residuals {
     pub v: f64,
     /// mean |mass imbalance| of the predicted velocities over the cells [kg s⁻¹ per m depth]
     pub mass: f64,
+    /// u-face index (i + (nx+1) j) with the largest |u-momentum imbalance|
+    pub worst_u: usize,
+    /// v-face index (i + nx j) with the largest |v-momentum imbalance|
+    pub worst_v: usize,
+    /// cell index (i + nx j) with the largest |mass imbalance|
+    pub worst_mass: usize,
 }
 
 /// Outcome of [`SinglePhase::step`].
@@ -111,7 +138,15 @@ pub struct StepOutcome {
     pub converged: bool,
     /// the last residual sum
     pub residual: f64,
+    /// the residuals of the last outer iteration
+    pub last: Residuals,
+    /// the residual sums of the last (up to) [`HISTORY`] outer iterations, oldest first,
+    /// unused slots NaN
+    pub history: [f64; HISTORY],
 }
+
+/// Outer iterations kept in [`StepOutcome::history`].
+pub const HISTORY: usize = 8;
 
 /// Outcome of [`SinglePhase::solve_steady`].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -226,6 +261,34 @@ impl SinglePhase {
         &self.grid
     }
 
+    /// Gravity (g_x, g_y) [m s⁻²].
+    pub fn gravity(&self) -> (f64, f64) {
+        self.gravity
+    }
+
+    /// Sets gravity (a schedule may tilt it during a run).
+    pub fn set_gravity(&mut self, gravity: (f64, f64)) {
+        self.gravity = gravity;
+    }
+
+    /// The fluid.
+    pub fn fluid(&self) -> Fluid {
+        self.fluid
+    }
+
+    /// Cell-centred velocities (u, v) interleaved, the mean of the two faces of each cell
+    /// (MFIX AVG_X_E, model-spec §4.1), into `out` (length 2 · cells).
+    pub fn centre_velocities(&self, out: &mut [f64]) {
+        let (nx, ny) = (self.grid.nx(), self.grid.ny());
+        for j in 0..ny {
+            for i in 0..nx {
+                let k = i + nx * j;
+                out[2 * k] = 0.5 * (self.u[i + (nx + 1) * j] + self.u[i + 1 + (nx + 1) * j]);
+                out[2 * k + 1] = 0.5 * (self.v[k] + self.v[k + nx]);
+            }
+        }
+    }
+
     /// Stores the current fields as the old time level.
     pub fn begin_step(&mut self) {
         self.u_old.copy_from_slice(&self.u);
@@ -241,9 +304,9 @@ impl SinglePhase {
     /// One SIMPLE outer iteration with time step `dt` (`f64::INFINITY` for a steady
     /// iteration). Returns the residuals of the momentum predictor and of continuity.
     pub fn outer_iteration(&mut self, dt: f64, iteration: usize) -> Result<Residuals, SolverError> {
-        let ru = self.momentum_u(dt)?;
-        let rv = self.momentum_v(dt)?;
-        let mass = self.pressure_correction()?;
+        let (ru, worst_u) = self.momentum_u(dt)?;
+        let (rv, worst_v) = self.momentum_v(dt)?;
+        let (mass, worst_mass) = self.pressure_correction()?;
         for (name, field) in [("u", &self.u), ("v", &self.v), ("p", &self.p)] {
             if let Some(node) = field.iter().position(|x| !x.is_finite()) {
                 return Err(SolverError::NonFinite {
@@ -253,7 +316,14 @@ impl SinglePhase {
                 });
             }
         }
-        Ok(Residuals { u: ru, v: rv, mass })
+        Ok(Residuals {
+            u: ru,
+            v: rv,
+            mass,
+            worst_u,
+            worst_v,
+            worst_mass,
+        })
     }
 
     /// Relaxes the assembled system and returns the pre-relaxation residual normalised as
@@ -264,9 +334,10 @@ impl SinglePhase {
         phi: &[f64],
         speed: impl Fn(usize) -> f64,
         relax: f64,
-    ) -> f64 {
+    ) -> (f64, usize) {
         let mut num = 0.0;
         let mut den = 0.0;
+        let (mut worst, mut worst_abs) = (0, -1.0);
         let nx = a.pattern().nx();
         for k in 0..phi.len() {
             if a.pattern().fixed_mask()[k] {
@@ -285,21 +356,21 @@ impl SinglePhase {
             if a.a_s[k] != 0.0 {
                 nb += a.a_s[k] * phi[k - nx];
             }
-            num += (a.b[k] + nb - a.a_p[k] * phi[k]).abs();
+            let r = (a.b[k] + nb - a.a_p[k] * phi[k]).abs();
+            if r > worst_abs {
+                (worst, worst_abs) = (k, r);
+            }
+            num += r;
             den += a.a_p[k].abs() * speed(k);
             // Patankar under-relaxation (model-spec §4.10)
             let ap = a.a_p[k] / relax;
             a.b[k] += (1.0 - relax) * ap * phi[k];
             a.a_p[k] = ap;
         }
-        if den > 0.0 {
-            num / den
-        } else {
-            num
-        }
+        (if den > 0.0 { num / den } else { num }, worst)
     }
 
-    fn momentum_u(&mut self, dt: f64) -> Result<f64, SolverError> {
+    fn momentum_u(&mut self, dt: f64) -> Result<(f64, usize), SolverError> {
         let (nx, ny) = (self.grid.nx(), self.grid.ny());
         let (rho, mu) = (self.fluid.density, self.fluid.viscosity);
         let dx = self.grid.x.widths();
@@ -334,11 +405,12 @@ impl SinglePhase {
         }
         assemble(&self.u_faces, &self.u, self.settings.scheme, &mut self.a_u);
         let a = &mut self.a_u;
-        let (p_west, p_east) = (
-            outlet_pressure(&self.bcs.west),
-            outlet_pressure(&self.bcs.east),
-        );
+        let y0 = self.grid.y.start();
+        let yc = self.grid.y.centres();
+        let g_y = self.gravity.1;
         for j in 0..ny {
+            let p_west = self.bcs.west.pressure(yc[j] - y0, g_y).unwrap_or(0.0);
+            let p_east = self.bcs.east.pressure(yc[j] - y0, g_y).unwrap_or(0.0);
             for i in 0..mx {
                 let k = i + mx * j;
                 if a.pattern().fixed_mask()[k] {
@@ -403,7 +475,7 @@ impl SinglePhase {
         Ok(r)
     }
 
-    fn momentum_v(&mut self, dt: f64) -> Result<f64, SolverError> {
+    fn momentum_v(&mut self, dt: f64) -> Result<(f64, usize), SolverError> {
         let (nx, ny) = (self.grid.nx(), self.grid.ny());
         let (rho, mu) = (self.fluid.density, self.fluid.viscosity);
         let dx = self.grid.x.widths();
@@ -439,12 +511,13 @@ impl SinglePhase {
         }
         assemble(&self.v_faces, &self.v, self.settings.scheme, &mut self.a_v);
         let a = &mut self.a_v;
-        let (p_south, p_north) = (
-            outlet_pressure(&self.bcs.south),
-            outlet_pressure(&self.bcs.north),
-        );
+        let x0 = self.grid.x.start();
+        let xc = self.grid.x.centres();
+        let g_x = self.gravity.0;
         for j in 0..my {
             for i in 0..nx {
+                let p_south = self.bcs.south.pressure(xc[i] - x0, g_x).unwrap_or(0.0);
+                let p_north = self.bcs.north.pressure(xc[i] - x0, g_x).unwrap_or(0.0);
                 let k = i + nx * j;
                 if a.pattern().fixed_mask()[k] {
                     a.a_p[k] = 1.0;
@@ -508,13 +581,14 @@ impl SinglePhase {
 
     /// Pressure correction from cell continuity (model-spec §4.6 for one incompressible
     /// phase); corrects u, v and p. Returns the mean |mass imbalance| before correction.
-    fn pressure_correction(&mut self) -> Result<f64, SolverError> {
+    fn pressure_correction(&mut self) -> Result<(f64, usize), SolverError> {
         let (nx, ny) = (self.grid.nx(), self.grid.ny());
         let rho = self.fluid.density;
         let dx = self.grid.x.widths();
         let dy = self.grid.y.widths();
         let a = &mut self.a_p;
         let mut imbalance = 0.0;
+        let (mut worst, mut worst_abs) = (0, -1.0);
         for j in 0..ny {
             for i in 0..nx {
                 let k = i + nx * j;
@@ -523,6 +597,9 @@ impl SinglePhase {
                 let b =
                     rho * ((self.u[kw] - self.u[ke]) * dy[j] + (self.v[ks] - self.v[kn]) * dx[i]);
                 imbalance += b.abs();
+                if b.abs() > worst_abs {
+                    (worst, worst_abs) = (k, b.abs());
+                }
                 if self.pressure_pinned && k == 0 {
                     a.a_p[k] = 1.0;
                     a.b[k] = 0.0;
@@ -579,7 +656,7 @@ impl SinglePhase {
         }
         let w = self.settings.relax_pressure;
         self.p.iter_mut().zip(pc).for_each(|(p, c)| *p += w * c);
-        Ok(imbalance / (nx * ny) as f64)
+        Ok((imbalance / (nx * ny) as f64, worst))
     }
 
     /// One implicit-Euler time step of size `dt`: outer iterations until the sum of the
@@ -597,17 +674,21 @@ impl SinglePhase {
     ) -> Result<StepOutcome, SolverError> {
         self.begin_step();
         let mut first_mass = None;
-        let mut total = f64::INFINITY;
+        let mut out = StepOutcome {
+            iterations: 0,
+            converged: false,
+            residual: f64::INFINITY,
+            last: Residuals::default(),
+            history: [f64::NAN; HISTORY],
+        };
         for it in 0..max_iterations {
+            out.iterations = it + 1;
             let r = match self.outer_iteration(dt, it) {
                 Ok(r) => r,
                 Err(SolverError::NonFinite { .. }) => {
                     self.restore_step();
-                    return Ok(StepOutcome {
-                        iterations: it + 1,
-                        converged: false,
-                        residual: f64::INFINITY,
-                    });
+                    out.residual = f64::INFINITY;
+                    return Ok(out);
                 }
                 Err(e) => return Err(e),
             };
@@ -616,24 +697,37 @@ impl SinglePhase {
             } else {
                 1.0
             });
-            total = r.u + r.v + r.mass / norm;
-            if it >= 1 && total <= tol {
-                return Ok(StepOutcome {
-                    iterations: it + 1,
-                    converged: true,
-                    residual: total,
-                });
+            out.residual = r.u + r.v + r.mass / norm;
+            out.last = r;
+            out.history.rotate_left(1);
+            out.history[HISTORY - 1] = out.residual;
+            if it >= 1 && out.residual <= tol {
+                out.converged = true;
+                return Ok(out);
             }
-            if it >= 1 && total >= diverge {
+            if it >= 1 && out.residual >= diverge {
                 break;
             }
         }
         self.restore_step();
-        Ok(StepOutcome {
-            iterations: max_iterations,
-            converged: false,
-            residual: total,
-        })
+        Ok(out)
+    }
+
+    /// Where the largest residual of each equation lies: (equation, normalised residual,
+    /// x, y of the node).
+    pub fn locate_residual(&self, r: &Residuals) -> [(&'static str, f64, f64, f64); 3] {
+        let nx = self.grid.nx();
+        let (iu, ju) = (r.worst_u % (nx + 1), r.worst_u / (nx + 1));
+        let (iv, jv) = (r.worst_v % nx, r.worst_v / nx);
+        let (ic, jc) = (r.worst_mass % nx, r.worst_mass / nx);
+        let (xu, yu) = self.grid.u_face_position(iu, ju);
+        let (xv, yv) = self.grid.v_face_position(iv, jv);
+        let (xc, yc) = self.grid.cell_centre(ic, jc);
+        [
+            ("u momentum", r.u, xu, yu),
+            ("v momentum", r.v, xv, yv),
+            ("continuity", r.mass, xc, yc),
+        ]
     }
 
     /// Steady SIMPLE iterations (no transient term) until the momentum residuals sum to at
@@ -747,17 +841,10 @@ impl SinglePhase {
     }
 }
 
-fn outlet_pressure(bc: &SideBc) -> f64 {
-    match bc {
-        SideBc::Outlet(p) => *p,
-        SideBc::Wall(_) => 0.0,
-    }
-}
-
 fn face_value(bc: &SideBc, fluid_value: f64, delta: f64) -> f64 {
     match bc {
         SideBc::Wall(face) => face.face_value(fluid_value, delta),
-        SideBc::Outlet(_) => fluid_value,
+        SideBc::Outlet(_) | SideBc::HydrostaticOutlet { .. } => fluid_value,
     }
 }
 
