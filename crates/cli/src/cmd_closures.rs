@@ -4,10 +4,9 @@
 
 use anyhow::ensure;
 use clap::ValueEnum;
-use runout_closures::{
-    evaluate, CellState, ClosureParams, Drag, FrictionModel, FrictionParams, Gas, Particles,
-    RadialDistribution,
-};
+use runout_closures::{evaluate, CellState, ClosureParams, Drag};
+
+use crate::material::MaterialArgs;
 use serde::Serialize;
 use std::io::Write;
 
@@ -34,17 +33,6 @@ OUTPUT (JSON, SI units):
                     slip production [W m-3]
 Sources: shared/docs/model-spec.md section 2 and 1.3; rustdoc of runout-closures.";
 
-/// Frictional model (MFIX `FRICTION_MODEL`, model-spec §2.4).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum FrictionChoice {
-    /// Srivastava & Sundaresan (2003), the paper's model
-    Princeton,
-    /// Schaeffer (1987) with the plastic pressure P*
-    Schaeffer,
-    /// kinetic theory only
-    None,
-}
-
 /// Gas–solids drag law (MFIX `DRAG_TYPE`, model-spec §2.6).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum DragChoice {
@@ -56,15 +44,6 @@ pub enum DragChoice {
     GidaspowBlend,
     /// Wen–Yu for all eps_g
     WenYu,
-}
-
-/// Radial distribution function (MFIX `RDF_TYPE`, model-spec §2.1).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum RadialChoice {
-    /// Carnahan–Starling as MFIX codes it
-    CarnahanStarling,
-    /// Ma–Ahmadi
-    MaAhmadi,
 }
 
 /// Print every closure value (g0, Lun kinetic theory, friction, K_cp, drag, granular-energy
@@ -79,30 +58,6 @@ pub struct ClosuresArgs {
     /// granular temperature theta [m2/s2], >= 0
     #[arg(long, allow_negative_numbers = true)]
     pub theta: f64,
-    /// particle diameter d [m]
-    #[arg(long, default_value_t = 5e-4)]
-    pub diameter: f64,
-    /// solids material density rho_s [kg/m3]
-    #[arg(long, default_value_t = 2000.0)]
-    pub density: f64,
-    /// particle-particle restitution coefficient e [-]
-    #[arg(long, default_value_t = 0.9)]
-    pub restitution: f64,
-    /// maximum packing eps_s,max = 1 - EP_STAR [-]
-    #[arg(long, default_value_t = 0.65)]
-    pub eps_s_max: f64,
-    /// onset of Princeton friction eps_s,min = EPS_F_MIN [-]
-    #[arg(long, default_value_t = 0.5)]
-    pub eps_s_min: f64,
-    /// internal friction angle phi [degrees]
-    #[arg(long, default_value_t = 35.0)]
-    pub phi_internal: f64,
-    /// gas density rho_g [kg/m3]; 0 = dry granular flow (no drag, mu* = mu0)
-    #[arg(long, default_value_t = 1.2)]
-    pub gas_density: f64,
-    /// gas viscosity mu_g [Pa s]
-    #[arg(long, default_value_t = 1.8e-5)]
-    pub gas_viscosity: f64,
     /// gas-solids relative speed |u_g - u_s| [m/s]
     #[arg(long, default_value_t = 0.0)]
     pub slip: f64,
@@ -112,9 +67,6 @@ pub struct ClosuresArgs {
     /// S:S = tr(D^2) - (tr D)^2/3 of the solids strain rate [1/s2], >= 0
     #[arg(long, default_value_t = 0.0)]
     pub s_ddot_s: f64,
-    /// frictional model
-    #[arg(long, value_enum, default_value_t = FrictionChoice::Princeton)]
-    pub friction: FrictionChoice,
     /// gas-solids drag law
     #[arg(long, value_enum, default_value_t = DragChoice::SyamlalObrien)]
     pub drag: DragChoice,
@@ -124,35 +76,26 @@ pub struct ClosuresArgs {
     /// Syamlal-O'Brien DRAG_D1 [-]
     #[arg(long, default_value_t = 2.65)]
     pub drag_d1: f64,
-    /// radial distribution function
-    #[arg(long, value_enum, default_value_t = RadialChoice::CarnahanStarling)]
-    pub radial: RadialChoice,
+    /// particle, gas and closure options
+    #[command(flatten)]
+    pub material: MaterialArgs,
 }
 
 /// The echoed inputs of the JSON output.
 #[derive(Serialize)]
-struct Inputs {
+struct Inputs<'a> {
     eps_s: f64,
     theta: f64,
     slip: f64,
     tr_d: f64,
     s_ddot_s: f64,
-    diameter: f64,
-    density: f64,
-    restitution: f64,
-    eps_s_max: f64,
-    eps_s_min: f64,
-    phi_internal_deg: f64,
-    gas_density: f64,
-    gas_viscosity: f64,
-    friction: String,
     drag: String,
-    radial: String,
+    material: &'a MaterialArgs,
 }
 
 #[derive(Serialize)]
-struct Output {
-    inputs: Inputs,
+struct Output<'a> {
+    inputs: Inputs<'a>,
     closures: runout_closures::ClosureSet,
 }
 
@@ -169,43 +112,6 @@ impl ClosuresArgs {
             "--theta must be >= 0, got {}",
             self.theta
         );
-        ensure!(
-            self.diameter > 0.0,
-            "--diameter must be > 0, got {}",
-            self.diameter
-        );
-        ensure!(
-            self.density > 0.0,
-            "--density must be > 0, got {}",
-            self.density
-        );
-        ensure!(
-            self.restitution > 0.0 && self.restitution <= 1.0,
-            "--restitution must be in (0, 1], got {}",
-            self.restitution
-        );
-        ensure!(
-            0.0 < self.eps_s_min && self.eps_s_min < self.eps_s_max && self.eps_s_max < 1.0,
-            "need 0 < --eps-s-min < --eps-s-max < 1, got {} and {}",
-            self.eps_s_min,
-            self.eps_s_max
-        );
-        // n = sqrt(3)/(2 sin phi) must exceed 1 in dilatation (model-spec §2.4.2)
-        ensure!(
-            self.phi_internal > 0.0 && self.phi_internal < 60.0,
-            "--phi-internal must be in (0, 60) degrees, got {}",
-            self.phi_internal
-        );
-        ensure!(
-            self.gas_density >= 0.0,
-            "--gas-density must be >= 0, got {}",
-            self.gas_density
-        );
-        ensure!(
-            self.gas_viscosity > 0.0,
-            "--gas-viscosity must be > 0, got {}",
-            self.gas_viscosity
-        );
         ensure!(self.slip >= 0.0, "--slip must be >= 0, got {}", self.slip);
         ensure!(
             self.s_ddot_s >= 0.0,
@@ -213,40 +119,19 @@ impl ClosuresArgs {
             self.s_ddot_s
         );
         ensure!(self.tr_d.is_finite(), "--tr-d must be finite");
-        Ok(())
+        self.material.validate()
     }
 
     fn params(&self) -> ClosureParams {
-        ClosureParams {
-            particles: Particles {
-                diameter: self.diameter,
-                density: self.density,
-                restitution: self.restitution,
+        self.material.params(match self.drag {
+            DragChoice::SyamlalObrien => Drag::SyamlalOBrien {
+                c1: self.drag_c1,
+                d1: self.drag_d1,
             },
-            gas: Gas {
-                density: self.gas_density,
-                viscosity: self.gas_viscosity,
-            },
-            friction: FrictionParams::new(self.eps_s_max, self.eps_s_min, self.phi_internal),
-            radial: match self.radial {
-                RadialChoice::CarnahanStarling => RadialDistribution::CarnahanStarling,
-                RadialChoice::MaAhmadi => RadialDistribution::MaAhmadi,
-            },
-            friction_model: match self.friction {
-                FrictionChoice::Princeton => FrictionModel::Princeton,
-                FrictionChoice::Schaeffer => FrictionModel::Schaeffer,
-                FrictionChoice::None => FrictionModel::None,
-            },
-            drag: match self.drag {
-                DragChoice::SyamlalObrien => Drag::SyamlalOBrien {
-                    c1: self.drag_c1,
-                    d1: self.drag_d1,
-                },
-                DragChoice::Gidaspow => Drag::Gidaspow,
-                DragChoice::GidaspowBlend => Drag::GidaspowBlend,
-                DragChoice::WenYu => Drag::WenYu,
-            },
-        }
+            DragChoice::Gidaspow => Drag::Gidaspow,
+            DragChoice::GidaspowBlend => Drag::GidaspowBlend,
+            DragChoice::WenYu => Drag::WenYu,
+        })
     }
 }
 
@@ -262,7 +147,6 @@ pub fn run(args: &ClosuresArgs) -> anyhow::Result<()> {
         tr_d: args.tr_d,
         s_ddot_s: args.s_ddot_s,
     };
-    let closures = evaluate(&state, &params);
     let output = Output {
         inputs: Inputs {
             eps_s: args.eps_s,
@@ -270,19 +154,10 @@ pub fn run(args: &ClosuresArgs) -> anyhow::Result<()> {
             slip: args.slip,
             tr_d: args.tr_d,
             s_ddot_s: args.s_ddot_s,
-            diameter: args.diameter,
-            density: args.density,
-            restitution: args.restitution,
-            eps_s_max: args.eps_s_max,
-            eps_s_min: args.eps_s_min,
-            phi_internal_deg: args.phi_internal,
-            gas_density: args.gas_density,
-            gas_viscosity: args.gas_viscosity,
-            friction: choice_name(&args.friction),
             drag: choice_name(&args.drag),
-            radial: choice_name(&args.radial),
+            material: &args.material,
         },
-        closures,
+        closures: evaluate(&state, &params),
     };
     // an error (e.g. a closed pipe) is returned, not a panic as with println!
     let mut stdout = std::io::stdout().lock();
@@ -303,6 +178,7 @@ fn choice_name<T: ValueEnum>(choice: &T) -> String {
 mod tests {
     use super::*;
     use clap::Parser;
+    use runout_closures::{FrictionModel, RadialDistribution};
 
     #[derive(Parser)]
     struct Wrapper {
@@ -339,7 +215,7 @@ mod tests {
             assert!(parse(&line).validate().is_err(), "{line:?}");
         }
         let mut args = parse(&["--eps-s", "0.5", "--theta", "0.1"]);
-        args.phi_internal = 60.0;
+        args.material.phi_internal = 60.0;
         assert!(args.validate().is_err());
     }
 

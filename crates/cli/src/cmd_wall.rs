@@ -5,14 +5,12 @@
 
 use anyhow::{ensure, Context};
 use clap::ValueEnum;
-use runout_closures::{
-    ClosureParams, Drag, FrictionModel, FrictionParams, Gas, Particles, RadialDistribution,
-};
+use runout_closures::{ClosureParams, Drag};
 use runout_walls::{MomentumWall, MomentumWallState, SolidsWallModel, ThetaWall, ThetaWallState};
 use serde::Serialize;
 use std::io::Write;
 
-use crate::cmd_closures::{FrictionChoice, RadialChoice};
+use crate::material::MaterialArgs;
 
 /// θ_w assumed for the user partial-slip θ condition when `--theta-w` is not given
 /// [m²/s²]: the value of the paper's Fig. 1 (shared/docs/cases.md, units note).
@@ -118,59 +116,23 @@ pub struct WallArgs {
     /// normal-normal deviatoric strain rate S_nn = D_nn - tr D/3 at the wall [1/s]
     #[arg(long, default_value_t = 0.0, allow_negative_numbers = true)]
     pub s_nn: f64,
-    /// particle diameter d [m]
-    #[arg(long, default_value_t = 5e-4)]
-    pub diameter: f64,
-    /// solids material density rho_s [kg/m3]
-    #[arg(long, default_value_t = 2000.0)]
-    pub density: f64,
-    /// particle-particle restitution coefficient e [-]
-    #[arg(long, default_value_t = 0.9)]
-    pub restitution: f64,
-    /// maximum packing eps_s,max = 1 - EP_STAR [-]
-    #[arg(long, default_value_t = 0.65)]
-    pub eps_s_max: f64,
-    /// onset of Princeton friction eps_s,min = EPS_F_MIN [-]
-    #[arg(long, default_value_t = 0.5)]
-    pub eps_s_min: f64,
-    /// internal friction angle [degrees]
-    #[arg(long, default_value_t = 35.0)]
-    pub phi_internal: f64,
-    /// gas density rho_g [kg/m3]; 0 = dry granular flow (mu* = mu0, kappa* = kappa0)
-    #[arg(long, default_value_t = 1.2)]
-    pub gas_density: f64,
-    /// gas viscosity mu_g [Pa s]
-    #[arg(long, default_value_t = 1.8e-5)]
-    pub gas_viscosity: f64,
-    /// frictional model (the frictional wall term FRI needs princeton)
-    #[arg(long, value_enum, default_value_t = FrictionChoice::Princeton)]
-    pub friction: FrictionChoice,
-    /// radial distribution function
-    #[arg(long, value_enum, default_value_t = RadialChoice::CarnahanStarling)]
-    pub radial: RadialChoice,
+    /// particle, gas and closure options (the frictional wall term FRI needs princeton)
+    #[command(flatten)]
+    pub material: MaterialArgs,
 }
 
 /// The echoed inputs of the JSON output.
 #[derive(Serialize)]
-struct Inputs {
+struct Inputs<'a> {
     model: WallModelChoice,
     momentum_state: MomentumWallState,
     theta_state: ThetaWallState,
-    diameter: f64,
-    density: f64,
-    restitution: f64,
-    eps_s_max: f64,
-    eps_s_min: f64,
-    phi_internal_deg: f64,
-    gas_density: f64,
-    gas_viscosity: f64,
-    friction: String,
-    radial: String,
+    material: &'a MaterialArgs,
 }
 
 #[derive(Serialize)]
-struct Output {
-    inputs: Inputs,
+struct Output<'a> {
+    inputs: Inputs<'a>,
     model: SolidsWallModel,
     momentum: MomentumWall,
     granular_temperature: ThetaWall,
@@ -200,36 +162,7 @@ impl WallArgs {
             self.tr_d.is_finite() && self.s_nn.is_finite(),
             "--tr-d, --s-nn must be finite"
         );
-        ensure!(
-            self.diameter > 0.0,
-            "--diameter must be > 0, got {}",
-            self.diameter
-        );
-        ensure!(
-            self.density > 0.0,
-            "--density must be > 0, got {}",
-            self.density
-        );
-        ensure!(
-            self.restitution > 0.0 && self.restitution <= 1.0,
-            "--restitution must be in (0, 1], got {}",
-            self.restitution
-        );
-        ensure!(
-            0.0 < self.eps_s_min && self.eps_s_min < self.eps_s_max && self.eps_s_max < 1.0,
-            "need 0 < --eps-s-min < --eps-s-max < 1, got {} and {}",
-            self.eps_s_min,
-            self.eps_s_max
-        );
-        // n = sqrt(3)/(2 sin phi) must exceed 1 in dilatation (model-spec §2.4.2)
-        ensure!(
-            self.phi_internal > 0.0 && self.phi_internal < 60.0,
-            "--phi-internal must be in (0, 60) degrees, got {}",
-            self.phi_internal
-        );
-        ensure!(self.gas_density >= 0.0, "--gas-density must be >= 0");
-        ensure!(self.gas_viscosity > 0.0, "--gas-viscosity must be > 0");
-        Ok(())
+        self.material.validate()
     }
 
     fn eps_s_fluid(&self) -> f64 {
@@ -273,29 +206,9 @@ impl WallArgs {
     }
 
     fn params(&self) -> ClosureParams {
-        ClosureParams {
-            particles: Particles {
-                diameter: self.diameter,
-                density: self.density,
-                restitution: self.restitution,
-            },
-            gas: Gas {
-                density: self.gas_density,
-                viscosity: self.gas_viscosity,
-            },
-            friction: FrictionParams::new(self.eps_s_max, self.eps_s_min, self.phi_internal),
-            radial: match self.radial {
-                RadialChoice::CarnahanStarling => RadialDistribution::CarnahanStarling,
-                RadialChoice::MaAhmadi => RadialDistribution::MaAhmadi,
-            },
-            friction_model: match self.friction {
-                FrictionChoice::Princeton => FrictionModel::Princeton,
-                FrictionChoice::Schaeffer => FrictionModel::Schaeffer,
-                FrictionChoice::None => FrictionModel::None,
-            },
-            // not used by the wall models (they estimate drag with Wen-Yu, model-spec §2.6)
-            drag: Drag::default(),
-        }
+        // the drag law is not used by the wall models (they estimate drag with Wen-Yu,
+        // model-spec §2.6)
+        self.material.params(Drag::default())
     }
 }
 
@@ -327,16 +240,7 @@ pub fn run(args: &WallArgs) -> anyhow::Result<()> {
             model: args.model,
             momentum_state,
             theta_state,
-            diameter: args.diameter,
-            density: args.density,
-            restitution: args.restitution,
-            eps_s_max: args.eps_s_max,
-            eps_s_min: args.eps_s_min,
-            phi_internal_deg: args.phi_internal,
-            gas_density: args.gas_density,
-            gas_viscosity: args.gas_viscosity,
-            friction: format!("{:?}", args.friction),
-            radial: format!("{:?}", args.radial),
+            material: &args.material,
         },
         model,
         momentum: model.momentum(&momentum_state, &params),

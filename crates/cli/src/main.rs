@@ -11,6 +11,7 @@
 
 mod cmd_closures;
 mod cmd_wall;
+mod material;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -156,21 +157,30 @@ fn check(paths: &[PathBuf]) -> ExitCode {
     }
 }
 
-fn mesh(file: &Path, fidelity: Fidelity) -> ExitCode {
-    let cases = match load(file) {
-        Ok(Loaded::Cases(c)) => c,
+/// The cases of a case or sweep file; `None` (after printing why) for an invalid file or
+/// an analytic family, which has no grid and no flow to run.
+fn flow_cases(file: &Path) -> Option<Vec<runout_case::SourcedCase>> {
+    match load(file) {
+        Ok(Loaded::Cases(c)) => Some(c),
         Ok(Loaded::Analytic(a)) => {
             eprintln!(
-                "{}: `{}` is an analytic family: it has no grid",
+                "{}: `{}` is an analytic family (closed-form profiles, no grid): use `cargo xtask \
+                 report analytic`",
                 file.display(),
                 a.name
             );
-            return ExitCode::FAILURE;
+            None
         }
         Err(e) => {
             eprintln!("{e}");
-            return ExitCode::FAILURE;
+            None
         }
+    }
+}
+
+fn mesh(file: &Path, fidelity: Fidelity) -> ExitCode {
+    let Some(cases) = flow_cases(file) else {
+        return ExitCode::FAILURE;
     };
     let mut printed: Vec<runout_mesh::GridSummary> = Vec::new();
     for sc in cases {
@@ -195,20 +205,8 @@ fn mesh(file: &Path, fidelity: Fidelity) -> ExitCode {
 }
 
 fn run(file: &Path, fidelity: Fidelity, out: Option<&Path>, quiet: bool) -> ExitCode {
-    let cases = match load(file) {
-        Ok(Loaded::Cases(c)) => c,
-        Ok(Loaded::Analytic(a)) => {
-            eprintln!(
-                "{}: `{}` is an analytic family: use `cargo xtask report analytic`",
-                file.display(),
-                a.name
-            );
-            return ExitCode::FAILURE;
-        }
-        Err(e) => {
-            eprintln!("{e}");
-            return ExitCode::FAILURE;
-        }
+    let Some(cases) = flow_cases(file) else {
+        return ExitCode::FAILURE;
     };
     let mut status = ExitCode::SUCCESS;
     for sc in &cases {
