@@ -1,0 +1,543 @@
+//! `cargo xtask verify <name> [--report]`: the full-size verification problems of the
+//! single-phase core (issue 6), from `runout_solver::verify`.
+//!
+//! - `cavity`: 129 × 129 lid-driven cavity with Superbee at Re = 100 and 1000 against Ghia,
+//!   Ghia & Shin (1982), target: largest centreline deviation < 1% of the lid speed; at
+//!   Re = 1000 also against the spectral values of Botella & Peyret (1998).
+//! - `cavity-re1000`: the investigation of the Re = 1000 deviation (docs/verification.md):
+//!   every sample against both references, centreline extrema, a tighter steady tolerance
+//!   and the 65 × 65 grid.
+//! - `poiseuille`: partial-slip channel, observed order on uniform and stretched grids.
+//! - `taylor-green`: space order (Richardson in time) and time order (self-convergence),
+//!   and the per-step mass check.
+//! - `all`: cavity, poiseuille and taylor-green.
+//!
+//! `--report` adds the error-against-run-time study for the cavity and the Poiseuille
+//! channel over grid levels and both convection schemes: CSV tables, SVG plots and a
+//! Markdown table in docs/verification/.
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use anyhow::{bail, Context, Result};
+use plotters::prelude::*;
+use runout_solver::verify::{
+    cavity, cavity_solve, centreline_extrema, compare_centrelines, mass_conservation,
+    poiseuille_order, taylor_green_space_order, taylor_green_time_order, CavitySetup,
+    CentrelineComparison, ChannelGrid, OrderStudy, BOTELLA_PEYRET_RE1000,
+    BOTELLA_PEYRET_RE1000_EXTREMA, GHIA_RE1000, MASS_TOLERANCE,
+};
+use runout_solver::Scheme;
+
+/// Cells per side of the acceptance cavity (Ghia's grid has 129 lines).
+const CAVITY_CELLS: usize = 129;
+/// Largest centreline deviation allowed at 129 × 129 (issue 6): 1% of the lid speed.
+const CAVITY_TARGET: f64 = 0.01;
+/// Smallest observed order of the Poiseuille velocity (issue 6).
+const POISEUILLE_MIN_ORDER: f64 = 1.8;
+/// Output directory of `--report`, relative to the workspace root.
+const OUTPUT_DIR: &str = "docs/verification";
+/// SVG size [px].
+const FIGURE_SIZE: (u32, u32) = (1000, 700);
+/// Line colours, cycled per series.
+const COLOURS: [RGBColor; 6] = [
+    RGBColor(31, 119, 180),
+    RGBColor(214, 39, 40),
+    RGBColor(44, 160, 44),
+    RGBColor(148, 103, 189),
+    RGBColor(255, 127, 14),
+    RGBColor(0, 0, 0),
+];
+
+/// Runs verification `name` (`cavity`, `cavity-re1000`, `poiseuille`, `taylor-green`,
+/// `all`) and prints its numbers; with `report`, also writes the error-against-run-time
+/// study into `root/docs/verification/`. Fails if a check misses its target.
+pub fn verify(name: &str, report: bool, root: &Path) -> Result<()> {
+    let mut failures = Vec::new();
+    match name {
+        "cavity" => cavity_check(&mut failures)?,
+        "cavity-re1000" => cavity_re1000()?,
+        "poiseuille" => poiseuille_check(&mut failures)?,
+        "taylor-green" => taylor_green_check(&mut failures)?,
+        "all" => {
+            cavity_check(&mut failures)?;
+            poiseuille_check(&mut failures)?;
+            taylor_green_check(&mut failures)?;
+        }
+        other => bail!(
+            "unknown verification `{other}` (known: cavity, cavity-re1000, poiseuille, \
+             taylor-green, all)"
+        ),
+    }
+    if report {
+        error_time_report(root)?;
+    }
+    if !failures.is_empty() {
+        bail!(
+            "{} check(s) failed:\n  {}",
+            failures.len(),
+            failures.join("\n  ")
+        );
+    }
+    Ok(())
+}
+
+fn verdict(ok: bool) -> &'static str {
+    if ok {
+        "PASS"
+    } else {
+        "FAIL"
+    }
+}
+
+fn cavity_check(failures: &mut Vec<String>) -> Result<()> {
+    println!("lid-driven cavity, {CAVITY_CELLS} x {CAVITY_CELLS}, Superbee, against Ghia, Ghia & Shin (1982)");
+    for re in [100.0, 1000.0] {
+        let r = cavity(&CavitySetup::new(CAVITY_CELLS, re, Scheme::Superbee))?;
+        let (which, worst) = r.ghia.worst();
+        let ok = r.converged && r.max_error < CAVITY_TARGET && r.mass_ratio <= MASS_TOLERANCE;
+        println!(
+            "  Re = {re:>4}: max |error| {:.5} ({which} at {:.4}: ours {:.5}, Ghia {:.5}); \
+             {} outer iterations, {:.1} s, mass ratio {:.1e}  {}",
+            r.max_error,
+            worst.position,
+            worst.computed,
+            worst.reference,
+            r.outer_iterations,
+            r.wall_time,
+            r.mass_ratio,
+            verdict(ok)
+        );
+        if !ok {
+            failures.push(format!(
+                "cavity Re = {re}: max centreline error {:.5} (target < {CAVITY_TARGET}), \
+                 converged {}, mass ratio {:.1e}",
+                r.max_error, r.converged, r.mass_ratio
+            ));
+        }
+    }
+    Ok(())
+}
+
+fn print_comparison(title: &str, ghia: &CentrelineComparison, botella: &CentrelineComparison) {
+    println!("  {title}");
+    println!(
+        "    {:>2} {:>7} {:>9} {:>9} {:>10} {:>9} {:>9} {:>9}",
+        "", "at", "ours", "Ghia", "Botella", "-Ghia", "-Botella", "Ghia-Bot"
+    );
+    for (name, g, b) in [("u", &ghia.u, &botella.u), ("v", &ghia.v, &botella.v)] {
+        for (sg, sb) in g.iter().zip(b.iter()) {
+            println!(
+                "    {name:>2} {:>7.4} {:>9.5} {:>9.5} {:>10.7} {:>+9.5} {:>+9.5} {:>+9.5}",
+                sg.position,
+                sg.computed,
+                sg.reference,
+                sb.reference,
+                sg.computed - sg.reference,
+                sb.computed - sb.reference,
+                sg.reference - sb.reference
+            );
+        }
+    }
+    let ghia_vs_botella = ghia
+        .u
+        .iter()
+        .zip(&botella.u)
+        .chain(ghia.v.iter().zip(&botella.v))
+        .map(|(g, b)| (g.reference - b.reference).abs())
+        .fold(0.0, f64::max);
+    println!(
+        "    max |ours - Ghia| {:.5}, max |ours - Botella| {:.5}, max |Ghia - Botella| {:.5}",
+        ghia.max_error(),
+        botella.max_error(),
+        ghia_vs_botella
+    );
+}
+
+/// The Re = 1000 investigation of docs/verification.md.
+fn cavity_re1000() -> Result<()> {
+    println!("lid-driven cavity, Re = 1000, Superbee: ours against Ghia (1982) and Botella & Peyret (1998)");
+    let b = BOTELLA_PEYRET_RE1000_EXTREMA;
+    let mut rows = Vec::new();
+    for (cells, tolerance) in [(CAVITY_CELLS, 1e-7), (CAVITY_CELLS, 1e-9), (65, 1e-7)] {
+        let setup = CavitySetup {
+            tolerance,
+            max_iterations: 60_000,
+            ..CavitySetup::new(cells, 1000.0, Scheme::Superbee)
+        };
+        let run = cavity_solve(&setup)?;
+        let g = compare_centrelines(&run.solver, &GHIA_RE1000);
+        let bp = compare_centrelines(&run.solver, &BOTELLA_PEYRET_RE1000);
+        print_comparison(
+            &format!(
+                "{cells} x {cells}, steady tolerance {tolerance:e}: {} outer iterations (converged {}), {:.1} s",
+                run.report.iterations, run.report.converged, run.wall_time
+            ),
+            &g,
+            &bp,
+        );
+        let e = centreline_extrema(&run.solver);
+        println!(
+            "    extrema: u_min {:.5} at y {:.4} (Botella {:.7} at {:.4}); v_max {:.5} at x {:.4} \
+             (Botella {:.7} at {:.4}); v_min {:.5} at x {:.4} (Botella {:.7} at {:.4})",
+            e.u_min,
+            e.y_u_min,
+            b.u_min,
+            b.y_u_min,
+            e.v_max,
+            e.x_v_max,
+            b.v_max,
+            b.x_v_max,
+            e.v_min,
+            e.x_v_min,
+            b.v_min,
+            b.x_v_min
+        );
+        rows.push((cells, tolerance, g, bp, run.solver));
+    }
+    // tolerance effect and grid effect, point by point
+    let fine = &rows[0].4;
+    let tight = &rows[1].4;
+    let coarse = &rows[2].4;
+    let diff = |a: &runout_solver::SinglePhase, b: &runout_solver::SinglePhase| {
+        let ca = compare_centrelines(a, &GHIA_RE1000);
+        let cb = compare_centrelines(b, &GHIA_RE1000);
+        ca.u.iter()
+            .zip(&cb.u)
+            .chain(ca.v.iter().zip(&cb.v))
+            .map(|(x, y)| (x.computed - y.computed).abs())
+            .fold(0.0, f64::max)
+    };
+    println!(
+        "  largest change of a sample: tolerance 1e-7 -> 1e-9 at 129: {:.2e}; 65 -> 129 cells: {:.5}",
+        diff(fine, tight),
+        diff(fine, coarse)
+    );
+    Ok(())
+}
+
+fn print_study(study: &OrderStudy) {
+    println!("  {}", study.label);
+    for (k, level) in study.levels.iter().enumerate() {
+        let error = study
+            .errors
+            .get(k)
+            .map_or(String::from("-"), |e| format!("{e:.3e}"));
+        let order = if k == 0 {
+            String::from("-")
+        } else {
+            study
+                .orders
+                .get(k - 1)
+                .map_or(String::from("-"), |p| format!("{p:.3}"))
+        };
+        println!(
+            "    cells {:>4} steps {:>3}: error {error:>10}  order {order:>6}  {:>6} outer its  {:>8.3} s  mass {:.1e}",
+            level.cells, level.steps, level.outer_iterations, level.wall_time, level.mass_ratio
+        );
+    }
+}
+
+fn poiseuille_check(failures: &mut Vec<String>) -> Result<()> {
+    println!("plane Poiseuille flow, partial-slip walls, against the closed form");
+    for (grid, levels) in [
+        (ChannelGrid::Uniform, vec![8, 16, 32, 64, 128]),
+        (
+            ChannelGrid::Stretched { growth: 1.2 },
+            vec![4, 8, 16, 32, 64],
+        ),
+    ] {
+        let study = poiseuille_order(grid, &levels, Scheme::Superbee)?;
+        print_study(&study);
+        let ok =
+            study.min_order() >= POISEUILLE_MIN_ORDER && study.worst_mass_ratio() <= MASS_TOLERANCE;
+        println!(
+            "    smallest order {:.3} (target >= {POISEUILLE_MIN_ORDER})  {}",
+            study.min_order(),
+            verdict(ok)
+        );
+        if !ok {
+            failures.push(format!("{}: orders {:?}", study.label, study.orders));
+        }
+    }
+    Ok(())
+}
+
+fn taylor_green_check(failures: &mut Vec<String>) -> Result<()> {
+    println!("Taylor-Green vortex in a free-slip box (manufactured unsteady solution)");
+    let space = taylor_green_space_order(&[8, 16, 32], 8)?;
+    print_study(&space);
+    let ok = space.min_order() >= 1.8;
+    println!(
+        "    smallest space order {:.3} (expect 2)  {}",
+        space.min_order(),
+        verdict(ok)
+    );
+    if !ok {
+        failures.push(format!("{}: orders {:?}", space.label, space.orders));
+    }
+    let time = taylor_green_time_order(32, &[5, 10, 20, 40])?;
+    print_study(&time);
+    let ok = time.orders.iter().all(|p| (0.9..1.2).contains(p));
+    println!(
+        "    time orders {:?} (expect 1)  {}",
+        time.orders,
+        verdict(ok)
+    );
+    if !ok {
+        failures.push(format!("{}: orders {:?}", time.label, time.orders));
+    }
+    let mass = mass_conservation(32, 20)?;
+    let worst = mass
+        .worst
+        .max(space.worst_mass_ratio())
+        .max(time.worst_mass_ratio());
+    let ok = mass.passed() && worst <= MASS_TOLERANCE;
+    println!(
+        "  mass: net continuity imbalance of every converged step / flow through the domain: \
+         worst {worst:.2e} over all runs above (limit {MASS_TOLERANCE:e})  {}",
+        verdict(ok)
+    );
+    if !ok {
+        failures.push(format!("mass conservation: worst ratio {worst:e}"));
+    }
+    Ok(())
+}
+
+// ---------------------------------------------------------------------------------------
+// Error against run time
+// ---------------------------------------------------------------------------------------
+
+/// One point of the error-against-run-time study.
+struct Point {
+    series: String,
+    cells: usize,
+    error: f64,
+    wall_time: f64,
+    outer_iterations: usize,
+}
+
+fn scheme_name(s: Scheme) -> &'static str {
+    match s {
+        Scheme::Upwind => "Upwind",
+        Scheme::Superbee => "Superbee",
+    }
+}
+
+fn error_time_report(root: &Path) -> Result<()> {
+    let out = root.join(OUTPUT_DIR);
+    std::fs::create_dir_all(&out).with_context(|| format!("creating {}", out.display()))?;
+    let mut markdown = String::new();
+
+    // Cavity: max centreline error against Ghia over grid levels, both schemes.
+    println!("error against run time: lid-driven cavity (max |u, v - Ghia| on the centrelines)");
+    let mut cavity_points = Vec::new();
+    for re in [100.0, 1000.0] {
+        for scheme in [Scheme::Upwind, Scheme::Superbee] {
+            for cells in [16, 32, 64, 128] {
+                let r = cavity(&CavitySetup::new(cells, re, scheme))?;
+                if !r.converged {
+                    bail!("cavity {cells} Re {re} {scheme:?} did not converge");
+                }
+                println!(
+                    "  Re {re:>4} {:<8} {cells:>3}: error {:.4}  {:>6} its  {:>7.2} s",
+                    scheme_name(scheme),
+                    r.max_error,
+                    r.outer_iterations,
+                    r.wall_time
+                );
+                cavity_points.push(Point {
+                    series: format!("Re {re} {}", scheme_name(scheme)),
+                    cells,
+                    error: r.max_error,
+                    wall_time: r.wall_time,
+                    outer_iterations: r.outer_iterations,
+                });
+            }
+        }
+    }
+    write_csv(&out.join("cavity_error_time.csv"), &cavity_points)?;
+    draw(
+        &out.join("cavity_error_time.svg"),
+        "Lid-driven cavity: max centreline error vs Ghia (1982) against wall time",
+        "max |u, v - Ghia| / lid speed",
+        &cavity_points,
+    )?;
+    table(
+        &mut markdown,
+        "Lid-driven cavity (max centreline deviation from Ghia, lid speed 1)",
+        &cavity_points,
+    );
+
+    // Poiseuille: max error against the closed form, uniform and stretched grids.
+    println!("error against run time: partial-slip Poiseuille (max |u - exact|)");
+    let mut channel_points = Vec::new();
+    for (grid, name, levels) in [
+        (
+            ChannelGrid::Uniform,
+            "uniform",
+            vec![8, 16, 32, 64, 128, 256],
+        ),
+        (
+            ChannelGrid::Stretched { growth: 1.2 },
+            "stretched",
+            vec![4, 8, 16, 32, 64, 128],
+        ),
+    ] {
+        for scheme in [Scheme::Upwind, Scheme::Superbee] {
+            let study = poiseuille_order(grid, &levels, scheme)?;
+            for (level, error) in study.levels.iter().zip(&study.errors) {
+                println!(
+                    "  {name:<9} {:<8} {:>3} cells: error {error:.3e}  {:>4} its  {:>7.3} s",
+                    scheme_name(scheme),
+                    level.cells,
+                    level.outer_iterations,
+                    level.wall_time
+                );
+                channel_points.push(Point {
+                    series: format!("{name} {}", scheme_name(scheme)),
+                    cells: level.cells,
+                    error: *error,
+                    wall_time: level.wall_time,
+                    outer_iterations: level.outer_iterations,
+                });
+            }
+        }
+    }
+    write_csv(&out.join("poiseuille_error_time.csv"), &channel_points)?;
+    draw(
+        &out.join("poiseuille_error_time.svg"),
+        "Partial-slip Poiseuille: max error vs closed form against wall time",
+        "max |u - u_exact| [m/s]",
+        &channel_points,
+    )?;
+    table(
+        &mut markdown,
+        "Partial-slip Poiseuille (max |u − u_exact|, cells across the channel, 4 along)",
+        &channel_points,
+    );
+    std::fs::write(out.join("error_time.md"), markdown)?;
+    println!(
+        "wrote {OUTPUT_DIR}/{{cavity,poiseuille}}_error_time.{{csv,svg}} and {OUTPUT_DIR}/error_time.md"
+    );
+    Ok(())
+}
+
+fn write_csv(path: &Path, points: &[Point]) -> Result<()> {
+    let mut w = csv::Writer::from_path(path)?;
+    w.write_record([
+        "series",
+        "cells",
+        "error",
+        "wall_time_s",
+        "outer_iterations",
+    ])?;
+    for p in points {
+        w.write_record([
+            p.series.clone(),
+            p.cells.to_string(),
+            format!("{:e}", p.error),
+            format!("{:.4}", p.wall_time),
+            p.outer_iterations.to_string(),
+        ])?;
+    }
+    w.flush()?;
+    Ok(())
+}
+
+fn table(md: &mut String, title: &str, points: &[Point]) {
+    let _ = writeln!(md, "**{title}**\n");
+    let _ = writeln!(
+        md,
+        "| series | cells | error | wall time [s] | outer iterations |"
+    );
+    let _ = writeln!(md, "|---|---:|---:|---:|---:|");
+    for p in points {
+        let _ = writeln!(
+            md,
+            "| {} | {} | {:.3e} | {:.3} | {} |",
+            p.series, p.cells, p.error, p.wall_time, p.outer_iterations
+        );
+    }
+    let _ = writeln!(md);
+}
+
+/// Log-log plot of error against wall time, one line per series, points labelled by cells.
+fn draw(path: &Path, title: &str, y_label: &str, points: &[Point]) -> Result<()> {
+    let mut series: Vec<&str> = Vec::new();
+    for p in points {
+        if !series.contains(&p.series.as_str()) {
+            series.push(&p.series);
+        }
+    }
+    let (t_lo, t_hi) = bounds(points.iter().map(|p| p.wall_time.max(1e-4)));
+    let (e_lo, e_hi) = bounds(points.iter().map(|p| p.error.max(1e-16)));
+    let area = SVGBackend::new(path, FIGURE_SIZE).into_drawing_area();
+    area.fill(&WHITE).map_err(plot_error)?;
+    let mut chart = ChartBuilder::on(&area)
+        .caption(title, ("sans-serif", 18))
+        .margin(15)
+        .x_label_area_size(45)
+        .y_label_area_size(70)
+        .build_cartesian_2d(
+            (t_lo / 2.0..t_hi * 2.0).log_scale(),
+            (e_lo / 2.0..e_hi * 2.0).log_scale(),
+        )
+        .map_err(plot_error)?;
+    chart
+        .configure_mesh()
+        .x_desc("wall time [s] (labels: cells)")
+        .y_desc(y_label)
+        .draw()
+        .map_err(plot_error)?;
+    for (k, name) in series.iter().enumerate() {
+        let colour = COLOURS[k % COLOURS.len()];
+        let pts: Vec<(f64, f64, usize)> = points
+            .iter()
+            .filter(|p| p.series == *name)
+            .map(|p| (p.wall_time.max(1e-4), p.error.max(1e-16), p.cells))
+            .collect();
+        chart
+            .draw_series(LineSeries::new(
+                pts.iter().map(|&(t, e, _)| (t, e)),
+                colour.stroke_width(2),
+            ))
+            .map_err(plot_error)?
+            .label(name.to_string())
+            .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour));
+        chart
+            .draw_series(
+                pts.iter()
+                    .map(|&(t, e, _)| Circle::new((t, e), 4, colour.filled())),
+            )
+            .map_err(plot_error)?;
+        chart
+            .draw_series(pts.iter().map(|&(t, e, n)| {
+                Text::new(
+                    format!("{n}"),
+                    (t, e),
+                    ("sans-serif", 12).into_font().color(&colour),
+                )
+            }))
+            .map_err(plot_error)?;
+    }
+    chart
+        .configure_series_labels()
+        .position(SeriesLabelPosition::UpperRight)
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .draw()
+        .map_err(plot_error)?;
+    area.present().map_err(plot_error)?;
+    Ok(())
+}
+
+fn bounds(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    values.fold((f64::INFINITY, 0.0_f64), |(lo, hi), v| {
+        (lo.min(v), hi.max(v))
+    })
+}
+
+fn plot_error<E: std::fmt::Debug>(e: E) -> anyhow::Error {
+    anyhow::anyhow!("plotting the verification report: {e:?}")
+}
