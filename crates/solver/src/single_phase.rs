@@ -414,30 +414,17 @@ impl SinglePhase {
             for i in 0..mx {
                 let k = i + mx * j;
                 if a.pattern().fixed_mask()[k] {
-                    a.a_p[k] = 1.0;
-                    a.b[k] = 0.0;
-                    a.a_e[k] = 0.0;
-                    a.a_w[k] = 0.0;
-                    a.a_n[k] = 0.0;
-                    a.a_s[k] = 0.0;
+                    fixed_row(a, k, 0.0);
                     continue;
                 }
                 let width = u_cv_width(dx, i);
                 let volume = width * dy[j];
                 // walls below and above: tangential Robin closure (model-spec §3.2)
                 if j == 0 {
-                    if let SideBc::Wall(face) = self.bcs.south {
-                        let (ap, b) = face.implicit_parts(mu, dy[0]);
-                        a.a_p[k] += ap * width;
-                        a.b[k] += b * width;
-                    }
+                    add_wall_face(a, k, &self.bcs.south, mu, dy[0], width);
                 }
                 if j == ny - 1 {
-                    if let SideBc::Wall(face) = self.bcs.north {
-                        let (ap, b) = face.implicit_parts(mu, dy[ny - 1]);
-                        a.a_p[k] += ap * width;
-                        a.b[k] += b * width;
-                    }
+                    add_wall_face(a, k, &self.bcs.north, mu, dy[ny - 1], width);
                 }
                 // transient (implicit Euler, model-spec §4.3)
                 let a0 = rho * volume / dt;
@@ -520,29 +507,16 @@ impl SinglePhase {
                 let p_north = self.bcs.north.pressure(xc[i] - x0, g_x).unwrap_or(0.0);
                 let k = i + nx * j;
                 if a.pattern().fixed_mask()[k] {
-                    a.a_p[k] = 1.0;
-                    a.b[k] = 0.0;
-                    a.a_e[k] = 0.0;
-                    a.a_w[k] = 0.0;
-                    a.a_n[k] = 0.0;
-                    a.a_s[k] = 0.0;
+                    fixed_row(a, k, 0.0);
                     continue;
                 }
                 let height = v_cv_height(dy, j);
                 let volume = height * dx[i];
                 if i == 0 {
-                    if let SideBc::Wall(face) = self.bcs.west {
-                        let (ap, b) = face.implicit_parts(mu, dx[0]);
-                        a.a_p[k] += ap * height;
-                        a.b[k] += b * height;
-                    }
+                    add_wall_face(a, k, &self.bcs.west, mu, dx[0], height);
                 }
                 if i == nx - 1 {
-                    if let SideBc::Wall(face) = self.bcs.east {
-                        let (ap, b) = face.implicit_parts(mu, dx[nx - 1]);
-                        a.a_p[k] += ap * height;
-                        a.b[k] += b * height;
-                    }
+                    add_wall_face(a, k, &self.bcs.east, mu, dx[nx - 1], height);
                 }
                 let a0 = rho * volume / dt;
                 a.a_p[k] += a0;
@@ -601,12 +575,7 @@ impl SinglePhase {
                     (worst, worst_abs) = (k, b.abs());
                 }
                 if self.pressure_pinned && k == 0 {
-                    a.a_p[k] = 1.0;
-                    a.b[k] = 0.0;
-                    a.a_e[k] = 0.0;
-                    a.a_w[k] = 0.0;
-                    a.a_n[k] = 0.0;
-                    a.a_s[k] = 0.0;
+                    fixed_row(a, k, 0.0);
                     continue;
                 }
                 let ce = rho * self.d_u[ke] * dy[j];
@@ -838,6 +807,27 @@ impl SinglePhase {
         let (xa, va) = row(j);
         let (_, vb) = row(j + 1);
         (1.0 - t) * interp(&xa, &va, x) + t * interp(&xa, &vb, x)
+    }
+}
+
+/// Makes row k read a_P φ = b with φ = `value` and no neighbour links.
+fn fixed_row(a: &mut Stencil5, k: usize, value: f64) {
+    a.a_p[k] = 1.0;
+    a.b[k] = value;
+    a.a_e[k] = 0.0;
+    a.a_w[k] = 0.0;
+    a.a_n[k] = 0.0;
+    a.a_s[k] = 0.0;
+}
+
+/// Adds the eliminated wall-face closure (model-spec §3.2) of a tangential component to row
+/// k: Γ h/(g + hΔ/2) to a_P and Γ c/(g + hΔ/2) to b, times the face area. Nothing on an
+/// outlet (zero normal gradient).
+fn add_wall_face(a: &mut Stencil5, k: usize, bc: &SideBc, gamma: f64, delta: f64, area: f64) {
+    if let SideBc::Wall(face) = bc {
+        let (ap, b) = face.implicit_parts(gamma, delta);
+        a.a_p[k] += ap * area;
+        a.b[k] += b * area;
     }
 }
 
