@@ -14,7 +14,7 @@ mod schema;
 mod sweep;
 mod validate;
 
-pub use load::{load, load_case, CaseError, Fidelity, Loaded, SourcedCase};
+pub use load::{case_files, load, load_case, CaseError, Fidelity, Loaded, SourcedCase};
 pub use schema::*;
 pub use sweep::{expand, Param, Sweep};
 pub use validate::{validate_analytic, validate_case, FieldError};

@@ -216,6 +216,36 @@ pub fn load_case(file: &Path) -> Result<Case, CaseError> {
     Ok(case)
 }
 
+/// Every `.ron` file named in `paths` or found below a named directory, each directory's
+/// entries in sorted order. A directory that cannot be read is returned as a path, so that
+/// [`load`] reports it.
+pub fn case_files(paths: &[PathBuf]) -> Vec<PathBuf> {
+    fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
+        let Ok(entries) = std::fs::read_dir(dir) else {
+            out.push(dir.to_path_buf());
+            return;
+        };
+        let mut entries: Vec<PathBuf> = entries.filter_map(|e| e.ok().map(|e| e.path())).collect();
+        entries.sort();
+        for p in entries {
+            if p.is_dir() {
+                walk(&p, out);
+            } else if p.extension().is_some_and(|e| e == "ron") {
+                out.push(p);
+            }
+        }
+    }
+    let mut out = Vec::new();
+    for p in paths {
+        if p.is_dir() {
+            walk(p, &mut out);
+        } else {
+            out.push(p.clone());
+        }
+    }
+    out
+}
+
 /// Reads any case-directory file, expands sweeps and validates everything.
 pub fn load(file: &Path) -> Result<Loaded, CaseError> {
     let text = read(file)?;

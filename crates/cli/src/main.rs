@@ -18,7 +18,7 @@ use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
-use runout_case::{load, Fidelity, Loaded};
+use runout_case::{case_files, load, Fidelity, Loaded};
 use tracing::info;
 
 #[derive(Parser, Debug)]
@@ -77,38 +77,10 @@ fn parse_fidelity(s: &str) -> Result<Fidelity, String> {
     s.parse()
 }
 
-/// Every .ron file named, or found under a named directory, in sorted order.
-fn ron_files(paths: &[PathBuf]) -> Vec<PathBuf> {
-    fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
-        let Ok(entries) = std::fs::read_dir(dir) else {
-            out.push(dir.to_path_buf()); // reported as unreadable by `load`
-            return;
-        };
-        let mut entries: Vec<PathBuf> = entries.filter_map(|e| e.ok().map(|e| e.path())).collect();
-        entries.sort();
-        for p in entries {
-            if p.is_dir() {
-                walk(&p, out);
-            } else if p.extension().is_some_and(|e| e == "ron") {
-                out.push(p);
-            }
-        }
-    }
-    let mut out = Vec::new();
-    for p in paths {
-        if p.is_dir() {
-            walk(p, &mut out);
-        } else {
-            out.push(p.clone());
-        }
-    }
-    out
-}
-
 fn check(paths: &[PathBuf]) -> ExitCode {
     let mut failed = 0;
     let mut total = 0;
-    for file in ron_files(paths) {
+    for file in case_files(paths) {
         match load(&file) {
             Ok(Loaded::Cases(cases)) => {
                 println!(

@@ -1,0 +1,333 @@
+//! `cargo xtask sweep`: the paper's case matrix, expanded from cases/, run in parallel.
+//!
+//! Every run writes into `runs/<case>/<fidelity>.partial/` and is renamed to
+//! `runs/<case>/<fidelity>/` when it ends, so a finished folder is always complete; a run
+//! whose folder exists with a summary is skipped, so a killed sweep resumes where it
+//! stopped. `results/summary.csv` gets one row per case of the matrix.
+
+use std::collections::BTreeSet;
+use std::path::{Path, PathBuf};
+use std::sync::Mutex;
+use std::time::Instant;
+
+use anyhow::{bail, Context, Result};
+use indicatif::{MultiProgress, ProgressBar, ProgressStyle};
+use rayon::prelude::*;
+use runout_case::{case_files, load, Fidelity, Loaded, SourcedCase};
+use runout_output::RunSummary;
+use runout_solver::{run_case, RunError};
+
+/// Options of a sweep.
+pub struct SweepOptions {
+    /// fidelity of every run
+    pub fidelity: Fidelity,
+    /// keep only cases whose name contains this
+    pub only: Option<String>,
+    /// parallel runs
+    pub jobs: usize,
+    /// run shard i of n (1-based)
+    pub shard: Option<(usize, usize)>,
+    /// list the matrix, run nothing
+    pub list: bool,
+}
+
+/// The case matrix of a case directory.
+pub struct Matrix {
+    /// every case a sweep file expands to, plus stand-alone cases no sweep uses as its base
+    pub runs: Vec<SourcedCase>,
+    /// analytic families: (name, file)
+    pub analytic: Vec<(String, PathBuf)>,
+}
+
+/// Expands and validates every file below `cases_dir` into the [`Matrix`].
+pub fn matrix(cases_dir: &Path) -> Result<Matrix> {
+    let mut loaded = Vec::new();
+    let mut analytic = Vec::new();
+    let mut errors = 0;
+    for f in case_files(&[cases_dir.to_path_buf()]) {
+        match load(&f) {
+            Ok(Loaded::Cases(cases)) => loaded.push((f, cases)),
+            Ok(Loaded::Analytic(a)) => analytic.push((a.name, f)),
+            Err(e) => {
+                errors += 1;
+                eprintln!("{e}");
+            }
+        }
+    }
+    if errors > 0 {
+        bail!("{errors} case file(s) rejected; nothing was run");
+    }
+    // A case file that serves as a sweep's base is not a run of its own.
+    let canonical = |p: &Path| p.canonicalize().unwrap_or_else(|_| p.to_path_buf());
+    let bases: BTreeSet<PathBuf> = loaded
+        .iter()
+        .flat_map(|(_, cases)| {
+            cases
+                .iter()
+                .filter_map(|c| c.base.as_deref().map(canonical))
+        })
+        .collect();
+    let runs = loaded
+        .into_iter()
+        .filter(|(f, _)| !bases.contains(&canonical(f)))
+        .flat_map(|(_, cases)| cases)
+        .collect();
+    Ok(Matrix { runs, analytic })
+}
+
+/// How one run of the matrix ended.
+enum Outcome {
+    /// ran now or earlier; its summary
+    Done(RunSummary),
+    /// finished in an earlier sweep
+    Skipped(RunSummary),
+    /// the solver cannot run this case yet
+    Unsupported(String),
+    /// the run failed before producing a summary
+    Failed(String),
+}
+
+fn read_summary(dir: &Path) -> Option<RunSummary> {
+    serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).ok()?).ok()
+}
+
+/// Runs one case into its folder, atomically.
+fn run_one(case: &SourcedCase, fidelity: Fidelity, runs: &Path, bar: &ProgressBar) -> Outcome {
+    let name = &case.case.name;
+    let done = runs.join(name).join(fidelity.name());
+    if let Some(summary) = read_summary(&done) {
+        return Outcome::Skipped(summary);
+    }
+    let partial = runs.join(name).join(format!("{}.partial", fidelity.name()));
+    let _ = std::fs::remove_dir_all(&partial);
+    let result = run_case(&case.case, fidelity, &partial, |p| {
+        bar.set_position((1000.0 * p.time / p.end_time) as u64);
+        bar.set_message(format!(
+            "t = {:.3} s, dt = {:.1e} s, {} it",
+            p.time, p.dt, p.iterations
+        ));
+    });
+    bar.finish_and_clear();
+    match result {
+        Ok(summary) => {
+            let _ = std::fs::remove_dir_all(&done);
+            match std::fs::rename(&partial, &done) {
+                Ok(()) => Outcome::Done(summary),
+                Err(e) => Outcome::Failed(format!(
+                    "renaming {} to {}: {e}",
+                    partial.display(),
+                    done.display()
+                )),
+            }
+        }
+        Err(RunError::Unsupported { reason, .. }) => {
+            let _ = std::fs::remove_dir_all(&partial);
+            Outcome::Unsupported(reason)
+        }
+        Err(e) => Outcome::Failed(e.to_string()),
+    }
+}
+
+/// CSV field quoting (RFC 4180).
+fn csv_field(s: &str) -> String {
+    if s.contains([',', '"', '\n']) {
+        format!("\"{}\"", s.replace('"', "\"\""))
+    } else {
+        s.to_string()
+    }
+}
+
+/// Header of results/summary.csv (issue 8). The flow quantities (air cushion, station
+/// profile, probe, gates) need the two-fluid monitors (issue 7) and are empty until then.
+const HEADER: &str = "case,fidelity,status,wall_time_s,steps,rejected_steps,mean_dt_s,air_cushion,\
+cushion_thickness_m,floor_eps_s,flow_thickness_m,max_u_s,h_wu_probe_t1.25,gate_speeds,mse_vs_described";
+
+fn csv_row(name: &str, fidelity: Fidelity, outcome: &Outcome) -> String {
+    // the eight flow columns after mean_dt_s
+    let empty_flow = ",".repeat(8);
+    match outcome {
+        Outcome::Done(s) | Outcome::Skipped(s) => format!(
+            "{},{fidelity},{},{:.3},{},{},{:e}{empty_flow}",
+            csv_field(name),
+            csv_field(&format!("{:?}", s.status)),
+            s.wall_time,
+            s.steps,
+            s.rejected_steps,
+            s.dt.mean
+        ),
+        Outcome::Unsupported(why) => format!(
+            "{},{fidelity},{},,,,{empty_flow}",
+            csv_field(name),
+            csv_field(&format!("unsupported: {why}"))
+        ),
+        Outcome::Failed(why) => format!(
+            "{},{fidelity},{},,,,{empty_flow}",
+            csv_field(name),
+            csv_field(&format!("failed: {why}"))
+        ),
+    }
+}
+
+/// Expands, lists and (unless `list`) runs the matrix; writes results/summary.csv.
+pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
+    let Matrix { runs, analytic } = matrix(cases_dir)?;
+    let selected: Vec<&SourcedCase> = runs
+        .iter()
+        .filter(|r| opts.only.as_deref().is_none_or(|p| r.case.name.contains(p)))
+        .enumerate()
+        .filter(|(k, _)| opts.shard.is_none_or(|(i, n)| k % n == i - 1))
+        .map(|(_, r)| r)
+        .collect();
+    let fidelity = opts.fidelity;
+    println!(
+        "case matrix at fidelity `{fidelity}`: {} of {} flow case(s){}, {} analytic famil{}",
+        selected.len(),
+        runs.len(),
+        opts.shard
+            .map_or(String::new(), |(i, n)| format!(" (shard {i}/{n})")),
+        analytic.len(),
+        if analytic.len() == 1 { "y" } else { "ies" }
+    );
+    let mut cells = 0usize;
+    for r in &selected {
+        let c = r.case.at_fidelity(fidelity);
+        let g = c.grid()?;
+        cells += g.cell_count();
+        println!(
+            "  {:<34} {:>5} x {:<4} to {:>5} s   {}",
+            c.name,
+            g.nx(),
+            g.ny(),
+            c.run.end_time,
+            r.file.strip_prefix(root).unwrap_or(&r.file).display()
+        );
+    }
+    for (name, f) in &analytic {
+        println!(
+            "  {name:<34} closed form: `cargo xtask report analytic`   {}",
+            f.strip_prefix(root).unwrap_or(f).display()
+        );
+    }
+    println!("total cells over the selection: {cells}");
+    if opts.list {
+        return Ok(());
+    }
+
+    let runs_dir = root.join("runs");
+    let started = Instant::now();
+    let progress = MultiProgress::new();
+    let style = ProgressStyle::with_template("{prefix:<34} [{bar:25}] {msg} (eta {eta})")
+        .expect("a valid template")
+        .progress_chars("=> ");
+    let outcomes: Mutex<Vec<(usize, Outcome)>> = Mutex::new(Vec::new());
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(opts.jobs.max(1))
+        .build()?;
+    pool.install(|| {
+        selected.par_iter().enumerate().for_each(|(k, r)| {
+            let bar = progress.add(ProgressBar::new(1000));
+            bar.set_style(style.clone());
+            bar.set_prefix(r.case.name.clone());
+            let outcome = run_one(r, fidelity, &runs_dir, &bar);
+            outcomes
+                .lock()
+                .expect("no poisoned lock")
+                .push((k, outcome));
+        });
+    });
+    let mut outcomes = outcomes.into_inner().expect("no poisoned lock");
+    outcomes.sort_by_key(|(k, _)| *k);
+
+    let mut csv = String::from(HEADER);
+    csv.push('\n');
+    let (mut ran, mut skipped, mut unsupported, mut failed) = (0, 0, 0, 0);
+    for (k, outcome) in &outcomes {
+        let name = &selected[*k].case.name;
+        csv.push_str(&csv_row(name, fidelity, outcome));
+        csv.push('\n');
+        match outcome {
+            Outcome::Done(s) => {
+                ran += 1;
+                println!(
+                    "  {name:<34} {:?}, {} steps, {:.1} s wall",
+                    s.status, s.steps, s.wall_time
+                );
+            }
+            Outcome::Skipped(_) => skipped += 1,
+            Outcome::Unsupported(_) => unsupported += 1,
+            Outcome::Failed(why) => {
+                failed += 1;
+                println!("  {name:<34} FAILED: {why}");
+            }
+        }
+    }
+    let results = root.join("results").join("summary.csv");
+    runout_output::write_atomic(&results, csv.as_bytes()).context("writing results/summary.csv")?;
+    println!(
+        "ran {ran}, skipped {skipped} (finished earlier), unsupported {unsupported}, failed {failed} \
+         in {:.1} s; rows in {}",
+        started.elapsed().as_secs_f64(),
+        results.strip_prefix(root).unwrap_or(&results).display()
+    );
+    if unsupported > 0 {
+        println!(
+            "NOT YET: {unsupported} case(s) need the two-fluid model (issue 7), which does not exist \
+             yet; they were validated but not solved."
+        );
+    }
+    if failed > 0 {
+        bail!("{failed} run(s) failed");
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use runout_output::{DtStats, RunStatus};
+
+    fn columns(row: &str) -> usize {
+        csv::ReaderBuilder::new()
+            .has_headers(false)
+            .from_reader(row.as_bytes())
+            .records()
+            .next()
+            .expect("one record")
+            .expect("valid CSV")
+            .len()
+    }
+
+    #[test]
+    fn every_row_has_the_header_width() {
+        let width = columns(HEADER);
+        let summary = RunSummary {
+            case: "x".into(),
+            fidelity: "smoke".into(),
+            cells: (1, 1),
+            simulated_time: 1.0,
+            wall_time: 1.0,
+            steps: 3,
+            rejected_steps: 0,
+            outer_iterations: 9,
+            dt: DtStats {
+                min: 0.1,
+                max: 0.5,
+                mean: 0.3,
+            },
+            solids_mass_change: 0.0,
+            max_mass_imbalance: 0.0,
+            status: RunStatus::Completed,
+        };
+        for outcome in [
+            Outcome::Done(summary.clone()),
+            Outcome::Skipped(summary),
+            Outcome::Unsupported("needs, \"quotes\"".into()),
+            Outcome::Failed("x".into()),
+        ] {
+            assert_eq!(
+                columns(&csv_row("S-PS-cw_cw=1", Fidelity::Smoke, &outcome)),
+                width
+            );
+        }
+    }
+}
