@@ -15,7 +15,8 @@ use runout_linsolve::{build, LinSolveError, LinearSolver, LinearSolverKind, Patt
 use runout_mesh::{Grid, Sides};
 use runout_walls::RobinFace;
 
-use crate::transport::{assemble, FaceData, Scheme};
+use crate::momentum::{assemble_u, assemble_v, fixed_row, Context, PhaseFields};
+use crate::transport::{FaceData, Scheme};
 
 /// Condition on one side of the domain.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -44,7 +45,7 @@ impl SideBc {
 
     /// Pressure on the outlet at distance `s` from its first corner, with `g_along` the
     /// gravity component along the side; `None` for a wall.
-    fn pressure(&self, s: f64, g_along: f64) -> Option<f64> {
+    pub(crate) fn pressure(&self, s: f64, g_along: f64) -> Option<f64> {
         match *self {
             SideBc::Wall(_) => None,
             SideBc::Outlet(p) => Some(p),
@@ -177,6 +178,10 @@ pub struct SinglePhase {
     d_u: Vec<f64>,
     d_v: Vec<f64>,
     p_corr: Vec<f64>,
+    /// ρ, 1 and μ per cell: the phase fields of a single incompressible phase
+    density_cells: Vec<f64>,
+    ones: Vec<f64>,
+    viscosity_cells: Vec<f64>,
     u_faces: FaceData,
     v_faces: FaceData,
     a_u: Stencil5,
@@ -239,6 +244,9 @@ impl SinglePhase {
             d_u: vec![0.0; (nx + 1) * ny],
             d_v: vec![0.0; nx * (ny + 1)],
             p_corr: vec![0.0; nx * ny],
+            density_cells: vec![fluid.density; nx * ny],
+            ones: vec![1.0; nx * ny],
+            viscosity_cells: vec![fluid.viscosity; nx * ny],
             u_faces: FaceData::zeros(nx + 1, ny),
             v_faces: FaceData::zeros(nx, ny + 1),
             a_u: Stencil5::new(pu),
@@ -371,75 +379,33 @@ impl SinglePhase {
     }
 
     fn momentum_u(&mut self, dt: f64) -> Result<(f64, usize), SolverError> {
-        let (nx, ny) = (self.grid.nx(), self.grid.ny());
-        let (rho, mu) = (self.fluid.density, self.fluid.viscosity);
-        let dx = self.grid.x.widths();
+        let (nx, mx) = (self.grid.nx(), self.grid.nx() + 1);
         let dy = self.grid.y.widths();
-        let dyc = self.grid.y.face_spacing();
-        let mx = nx + 1;
-        // Faces of the u control volumes.
-        {
-            let f = &mut self.u_faces;
-            for j in 0..ny {
-                for i in 1..=nx {
-                    // x-face between u-nodes i-1 and i lies at cell centre i-1
-                    let k = i + (mx + 1) * j;
-                    f.flux_x[k] = rho * 0.5 * (self.u[i - 1 + mx * j] + self.u[i + mx * j]) * dy[j];
-                    f.cond_x[k] = mu * dy[j] / dx[i - 1];
-                }
-            }
-            for j in 1..ny {
-                for i in 0..mx {
-                    let k = i + mx * j;
-                    let mut flux = 0.0;
-                    if i >= 1 {
-                        flux += self.v[i - 1 + nx * j] * 0.5 * dx[i - 1];
-                    }
-                    if i < nx {
-                        flux += self.v[i + nx * j] * 0.5 * dx[i];
-                    }
-                    f.flux_y[k] = rho * flux;
-                    f.cond_y[k] = mu * u_cv_width(dx, i) / dyc[j];
-                }
-            }
-        }
-        assemble(&self.u_faces, &self.u, self.settings.scheme, &mut self.a_u);
+        let ctx = Context {
+            grid: &self.grid,
+            bcs: &self.bcs,
+            gravity: self.gravity,
+            dt,
+            scheme: self.settings.scheme,
+            gas_pressure: &self.p,
+        };
+        let phase = PhaseFields {
+            bulk_density: &self.density_cells,
+            bulk_density_old: &self.density_cells,
+            volume_fraction: &self.ones,
+            viscosity: &self.viscosity_cells,
+            solids_pressure: None,
+        };
+        assemble_u(
+            &ctx,
+            &phase,
+            &self.u,
+            &self.v,
+            &self.u_old,
+            &mut self.u_faces,
+            &mut self.a_u,
+        );
         let a = &mut self.a_u;
-        let y0 = self.grid.y.start();
-        let yc = self.grid.y.centres();
-        let g_y = self.gravity.1;
-        for j in 0..ny {
-            let p_west = self.bcs.west.pressure(yc[j] - y0, g_y).unwrap_or(0.0);
-            let p_east = self.bcs.east.pressure(yc[j] - y0, g_y).unwrap_or(0.0);
-            for i in 0..mx {
-                let k = i + mx * j;
-                if a.pattern().fixed_mask()[k] {
-                    fixed_row(a, k, 0.0);
-                    continue;
-                }
-                let width = u_cv_width(dx, i);
-                let volume = width * dy[j];
-                // walls below and above: tangential Robin closure (model-spec §3.2)
-                if j == 0 {
-                    add_wall_face(a, k, &self.bcs.south, mu, dy[0], width);
-                }
-                if j == ny - 1 {
-                    add_wall_face(a, k, &self.bcs.north, mu, dy[ny - 1], width);
-                }
-                // transient (implicit Euler, model-spec §4.3)
-                let a0 = rho * volume / dt;
-                a.a_p[k] += a0;
-                a.b[k] += a0 * self.u_old[k];
-                // pressure force and gravity
-                let p_w = if i == 0 {
-                    p_west
-                } else {
-                    self.p[i - 1 + nx * j]
-                };
-                let p_e = if i == nx { p_east } else { self.p[i + nx * j] };
-                a.b[k] += (p_w - p_e) * dy[j] + rho * self.gravity.0 * volume;
-            }
-        }
         let v = &self.v;
         let speed = |k: usize| {
             let (i, j) = (k % mx, k / mx);
@@ -464,72 +430,32 @@ impl SinglePhase {
 
     fn momentum_v(&mut self, dt: f64) -> Result<(f64, usize), SolverError> {
         let (nx, ny) = (self.grid.nx(), self.grid.ny());
-        let (rho, mu) = (self.fluid.density, self.fluid.viscosity);
         let dx = self.grid.x.widths();
-        let dy = self.grid.y.widths();
-        let dxc = self.grid.x.face_spacing();
-        let my = ny + 1;
-        {
-            let f = &mut self.v_faces;
-            // x-faces of the v control volumes, between v-nodes (i-1, j) and (i, j), at x-face i
-            for j in 0..my {
-                for i in 1..nx {
-                    let k = i + (nx + 1) * j;
-                    let mut flux = 0.0;
-                    if j >= 1 {
-                        flux += self.u[i + (nx + 1) * (j - 1)] * 0.5 * dy[j - 1];
-                    }
-                    if j < ny {
-                        flux += self.u[i + (nx + 1) * j] * 0.5 * dy[j];
-                    }
-                    f.flux_x[k] = rho * flux;
-                    f.cond_x[k] = mu * v_cv_height(dy, j) / dxc[i];
-                }
-            }
-            // y-faces between v-nodes j-1 and j lie at cell centre j-1
-            for j in 1..my {
-                for i in 0..nx {
-                    let k = i + nx * j;
-                    f.flux_y[k] =
-                        rho * 0.5 * (self.v[i + nx * (j - 1)] + self.v[i + nx * j]) * dx[i];
-                    f.cond_y[k] = mu * dx[i] / dy[j - 1];
-                }
-            }
-        }
-        assemble(&self.v_faces, &self.v, self.settings.scheme, &mut self.a_v);
+        let ctx = Context {
+            grid: &self.grid,
+            bcs: &self.bcs,
+            gravity: self.gravity,
+            dt,
+            scheme: self.settings.scheme,
+            gas_pressure: &self.p,
+        };
+        let phase = PhaseFields {
+            bulk_density: &self.density_cells,
+            bulk_density_old: &self.density_cells,
+            volume_fraction: &self.ones,
+            viscosity: &self.viscosity_cells,
+            solids_pressure: None,
+        };
+        assemble_v(
+            &ctx,
+            &phase,
+            &self.u,
+            &self.v,
+            &self.v_old,
+            &mut self.v_faces,
+            &mut self.a_v,
+        );
         let a = &mut self.a_v;
-        let x0 = self.grid.x.start();
-        let xc = self.grid.x.centres();
-        let g_x = self.gravity.0;
-        for j in 0..my {
-            for i in 0..nx {
-                let p_south = self.bcs.south.pressure(xc[i] - x0, g_x).unwrap_or(0.0);
-                let p_north = self.bcs.north.pressure(xc[i] - x0, g_x).unwrap_or(0.0);
-                let k = i + nx * j;
-                if a.pattern().fixed_mask()[k] {
-                    fixed_row(a, k, 0.0);
-                    continue;
-                }
-                let height = v_cv_height(dy, j);
-                let volume = height * dx[i];
-                if i == 0 {
-                    add_wall_face(a, k, &self.bcs.west, mu, dx[0], height);
-                }
-                if i == nx - 1 {
-                    add_wall_face(a, k, &self.bcs.east, mu, dx[nx - 1], height);
-                }
-                let a0 = rho * volume / dt;
-                a.a_p[k] += a0;
-                a.b[k] += a0 * self.v_old[k];
-                let p_s = if j == 0 {
-                    p_south
-                } else {
-                    self.p[i + nx * (j - 1)]
-                };
-                let p_n = if j == ny { p_north } else { self.p[i + nx * j] };
-                a.b[k] += (p_s - p_n) * dx[i] + rho * self.gravity.1 * volume;
-            }
-        }
         let u = &self.u;
         let speed = |k: usize| {
             let (i, j) = (k % nx, k / nx);
@@ -810,47 +736,11 @@ impl SinglePhase {
     }
 }
 
-/// Makes row k read a_P φ = b with φ = `value` and no neighbour links.
-fn fixed_row(a: &mut Stencil5, k: usize, value: f64) {
-    a.a_p[k] = 1.0;
-    a.b[k] = value;
-    a.a_e[k] = 0.0;
-    a.a_w[k] = 0.0;
-    a.a_n[k] = 0.0;
-    a.a_s[k] = 0.0;
-}
-
-/// Adds the eliminated wall-face closure (model-spec §3.2) of a tangential component to row
-/// k: Γ h/(g + hΔ/2) to a_P and Γ c/(g + hΔ/2) to b, times the face area. Nothing on an
-/// outlet (zero normal gradient).
-fn add_wall_face(a: &mut Stencil5, k: usize, bc: &SideBc, gamma: f64, delta: f64, area: f64) {
-    if let SideBc::Wall(face) = bc {
-        let (ap, b) = face.implicit_parts(gamma, delta);
-        a.a_p[k] += ap * area;
-        a.b[k] += b * area;
-    }
-}
-
 fn face_value(bc: &SideBc, fluid_value: f64, delta: f64) -> f64 {
     match bc {
         SideBc::Wall(face) => face.face_value(fluid_value, delta),
         SideBc::Outlet(_) | SideBc::HydrostaticOutlet { .. } => fluid_value,
     }
-}
-
-fn u_cv_width(dx: &[f64], i: usize) -> f64 {
-    let nx = dx.len();
-    if i == 0 {
-        0.5 * dx[0]
-    } else if i == nx {
-        0.5 * dx[nx - 1]
-    } else {
-        0.5 * (dx[i - 1] + dx[i])
-    }
-}
-
-fn v_cv_height(dy: &[f64], j: usize) -> f64 {
-    u_cv_width(dy, j)
 }
 
 /// Piecewise-linear interpolation in increasing abscissae, clamped at the ends.

@@ -1,0 +1,399 @@
+//! Momentum equations of one phase on the staggered grid (model-spec §4.4), with
+//! variable bulk density ρε, volume fraction ε and viscosity μ per cell, so that the same
+//! assembly serves the single-phase core (ε = 1, uniform ρ and μ) and every phase of the
+//! two-fluid model.
+//!
+//! u control volumes span from cell centre i−1 to i (half a cell at the domain ends), v
+//! control volumes from row j−1 to j. Per face of a control volume:
+//! - mass flux: the mean of the two adjacent scalar-cell face fluxes (model-spec §4.2), each
+//!   ρε_face u A with ρε_face taken upwind;
+//! - conductance: μ A/δ, with μ of the cell at x-faces of u-cells and the harmonic mean of
+//!   the four surrounding cells at their y-faces (MFIX AVG_X_H of AVG_Y_H, §4.1);
+//! - transient: a_P⁰ = ½ (V_W ρε_W⁰ + V_E ρε_E⁰)/Δt (old bulk density averaged by cell
+//!   volumes to the momentum cell, §4.4); body force likewise with the current ρε;
+//! - pressure: −ε̄ (P_E − P_W) A with ε̄ distance-interpolated (AVG_X), plus −(P_s,E − P_s,W) A
+//!   for a solids phase (§1.2, §4.4);
+//! - walls: the eliminated Robin closure of the tangential component (§3.2) with the fluid
+//!   cells' viscosity (§3.1).
+//!
+//! Not yet here (issue 7): the explicit stress cross terms of model-spec §4.4 (zero for a
+//! uniform viscosity in incompressible flow) and the interphase drag (partial elimination).
+
+use runout_linsolve::Stencil5;
+use runout_mesh::{Grid, Sides};
+
+use crate::single_phase::SideBc;
+use crate::transport::{assemble, FaceData, Scheme};
+
+/// Cell-centred coefficient fields of one phase (index i + nx j).
+#[derive(Clone, Copy, Debug)]
+pub struct PhaseFields<'a> {
+    /// bulk density ρε at the current iterate [kg m⁻³]
+    pub bulk_density: &'a [f64],
+    /// bulk density at the old time level [kg m⁻³]
+    pub bulk_density_old: &'a [f64],
+    /// volume fraction ε, multiplying the gas-pressure gradient [-]
+    pub volume_fraction: &'a [f64],
+    /// dynamic viscosity [Pa s]
+    pub viscosity: &'a [f64],
+    /// the solids pressure P_s of a solids phase [Pa]; `None` for the gas
+    pub solids_pressure: Option<&'a [f64]>,
+}
+
+/// What every phase's momentum assembly shares.
+#[derive(Clone, Copy, Debug)]
+pub struct Context<'a> {
+    /// the grid
+    pub grid: &'a Grid,
+    /// the condition on each side for this phase's tangential velocity
+    pub bcs: &'a Sides<SideBc>,
+    /// gravity (g_x, g_y) [m s⁻²]
+    pub gravity: (f64, f64),
+    /// time step [s] (`f64::INFINITY` for a steady iteration)
+    pub dt: f64,
+    /// convection scheme
+    pub scheme: Scheme,
+    /// gas pressure at cell centres [Pa]
+    pub gas_pressure: &'a [f64],
+}
+
+/// Width of the u control volume at x-face i: centre to centre inside, half a cell at the
+/// two ends (model-spec §4.1).
+pub fn cv_width(widths: &[f64], i: usize) -> f64 {
+    let n = widths.len();
+    if i == 0 {
+        0.5 * widths[0]
+    } else if i == n {
+        0.5 * widths[n - 1]
+    } else {
+        0.5 * (widths[i - 1] + widths[i])
+    }
+}
+
+/// Harmonic mean with MFIX's guard against a zero denominator (model-spec §4.1, AVG_X_H).
+fn harmonic(a: f64, b: f64, weight_a: f64) -> f64 {
+    a * b / (weight_a * a + (1.0 - weight_a) * b).max(1e-15)
+}
+
+/// Distance-weighted interpolation of a cell field to x-face i (1 ≤ i < nx; AVG_X).
+fn interp_x(grid: &Grid, field: &[f64], i: usize, j: usize) -> f64 {
+    let nx = grid.nx();
+    let w = grid.x.interpolation_weight(i - 1);
+    w * field[i - 1 + nx * j] + (1.0 - w) * field[i + nx * j]
+}
+
+/// Distance-weighted interpolation of a cell field to y-face j (1 ≤ j < ny; AVG_Y).
+fn interp_y(grid: &Grid, field: &[f64], i: usize, j: usize) -> f64 {
+    let nx = grid.nx();
+    let w = grid.y.interpolation_weight(j - 1);
+    w * field[i + nx * (j - 1)] + (1.0 - w) * field[i + nx * j]
+}
+
+/// Makes row k read φ = `value` with no neighbour links.
+pub(crate) fn fixed_row(a: &mut Stencil5, k: usize, value: f64) {
+    a.a_p[k] = 1.0;
+    a.b[k] = value;
+    a.a_e[k] = 0.0;
+    a.a_w[k] = 0.0;
+    a.a_n[k] = 0.0;
+    a.a_s[k] = 0.0;
+}
+
+/// Adds the eliminated wall-face closure (model-spec §3.2) of a tangential component to row
+/// k: Γ h/(g + hΔ/2) to a_P and Γ c/(g + hΔ/2) to b, times the face area. Nothing on an
+/// outlet (zero normal gradient).
+pub(crate) fn add_wall_face(
+    a: &mut Stencil5,
+    k: usize,
+    bc: &SideBc,
+    gamma: f64,
+    delta: f64,
+    area: f64,
+) {
+    if let SideBc::Wall(face) = bc {
+        let (ap, b) = face.implicit_parts(gamma, delta);
+        a.a_p[k] += ap * area;
+        a.b[k] += b * area;
+    }
+}
+
+/// Upwind bulk density on the face between cells `lo` and `hi` for a velocity `vel`
+/// (positive from lo to hi).
+#[inline]
+fn upwind(rho_eps: &[f64], lo: usize, hi: usize, vel: f64) -> f64 {
+    if vel >= 0.0 {
+        rho_eps[lo]
+    } else {
+        rho_eps[hi]
+    }
+}
+
+/// Assembles the u-momentum system of one phase on the (nx+1) × ny block of x-faces,
+/// without relaxation. Rows of fixed nodes (wall normal velocities) read u = 0.
+pub fn assemble_u(
+    ctx: &Context<'_>,
+    phase: &PhaseFields<'_>,
+    u: &[f64],
+    v: &[f64],
+    u_old: &[f64],
+    faces: &mut FaceData,
+    a: &mut Stencil5,
+) {
+    let grid = ctx.grid;
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let (dx, dy) = (grid.x.widths(), grid.y.widths());
+    let dyc = grid.y.face_spacing();
+    let mx = nx + 1;
+    let rho_eps = phase.bulk_density;
+    let mu = phase.viscosity;
+    // scalar-cell x-face mass flux at u-node (i, j), ρε upwind (zero on the domain ends
+    // unless the node is an outlet, where the inside cell supplies ρε)
+    let x_face_flux = |i: usize, j: usize| -> f64 {
+        let vel = u[i + mx * j];
+        let re = if i == 0 {
+            rho_eps[nx * j]
+        } else if i == nx {
+            rho_eps[nx - 1 + nx * j]
+        } else {
+            upwind(rho_eps, i - 1 + nx * j, i + nx * j, vel)
+        };
+        re * vel * dy[j]
+    };
+    // scalar-cell y-face mass flux at v-node (i, j), 1 ≤ j < ny
+    let y_face_flux = |i: usize, j: usize| -> f64 {
+        let vel = v[i + nx * j];
+        upwind(rho_eps, i + nx * (j - 1), i + nx * j, vel) * vel * dx[i]
+    };
+    for j in 0..ny {
+        for i in 1..=nx {
+            // u-CV x-face at cell centre i−1, between u-nodes i−1 and i
+            let k = faces.xf(i, j);
+            faces.flux_x[k] = 0.5 * (x_face_flux(i - 1, j) + x_face_flux(i, j));
+            faces.cond_x[k] = mu[i - 1 + nx * j] * dy[j] / dx[i - 1];
+        }
+    }
+    for j in 1..ny {
+        for i in 0..mx {
+            // u-CV y-face at y-face j: halves of the two adjacent cells' v-face fluxes
+            let (west, east) = (i.checked_sub(1), (i < nx).then_some(i));
+            let flux: f64 = [west, east]
+                .into_iter()
+                .flatten()
+                .map(|c| 0.5 * y_face_flux(c, j))
+                .sum();
+            // viscosity at the corner: harmonic in y per column, then in x (AVG_X_H of AVG_Y_H)
+            let column = |c: usize| {
+                harmonic(
+                    mu[c + nx * (j - 1)],
+                    mu[c + nx * j],
+                    grid.y.interpolation_weight(j - 1),
+                )
+            };
+            let mu_corner = match (west, east) {
+                (Some(w), Some(e)) => {
+                    harmonic(column(w), column(e), grid.x.interpolation_weight(w))
+                }
+                (Some(c), None) | (None, Some(c)) => column(c),
+                (None, None) => 0.0,
+            };
+            let k = faces.yf(i, j);
+            faces.flux_y[k] = flux;
+            faces.cond_y[k] = mu_corner * cv_width(dx, i) / dyc[j];
+        }
+    }
+    assemble(faces, u, ctx.scheme, a);
+    let y0 = grid.y.start();
+    let yc = grid.y.centres();
+    for j in 0..ny {
+        let p_west = ctx
+            .bcs
+            .west
+            .pressure(yc[j] - y0, ctx.gravity.1)
+            .unwrap_or(0.0);
+        let p_east = ctx
+            .bcs
+            .east
+            .pressure(yc[j] - y0, ctx.gravity.1)
+            .unwrap_or(0.0);
+        for i in 0..mx {
+            let k = i + mx * j;
+            if a.pattern().fixed_mask()[k] {
+                fixed_row(a, k, 0.0);
+                continue;
+            }
+            let width = cv_width(dx, i);
+            // cells on either side (the inside cell only at an outlet end)
+            let (west, east) = (i.checked_sub(1), (i < nx).then_some(i));
+            let half_volume = |c: Option<usize>, field: &[f64]| {
+                c.map_or(0.0, |c| 0.5 * dx[c] * dy[j] * field[c + nx * j])
+            };
+            // walls below and above: the fluid cells' viscosity (model-spec §3.1)
+            let mu_wall = |row: usize| -> f64 {
+                match (west, east) {
+                    (Some(w), Some(e)) => harmonic(
+                        mu[w + nx * row],
+                        mu[e + nx * row],
+                        grid.x.interpolation_weight(w),
+                    ),
+                    (Some(c), None) | (None, Some(c)) => mu[c + nx * row],
+                    (None, None) => 0.0,
+                }
+            };
+            if j == 0 {
+                add_wall_face(a, k, &ctx.bcs.south, mu_wall(0), dy[0], width);
+            }
+            if j == ny - 1 {
+                add_wall_face(a, k, &ctx.bcs.north, mu_wall(ny - 1), dy[ny - 1], width);
+            }
+            // transient (implicit Euler, model-spec §4.3–4.4)
+            let a0 = (half_volume(west, phase.bulk_density_old)
+                + half_volume(east, phase.bulk_density_old))
+                / ctx.dt;
+            a.a_p[k] += a0;
+            a.b[k] += a0 * u_old[k];
+            // body force with the current bulk density
+            a.b[k] += (half_volume(west, rho_eps) + half_volume(east, rho_eps)) * ctx.gravity.0;
+            // gas pressure, −ε̄ ΔP A; solids pressure, −ΔP_s A
+            let eps_face = match (west, east) {
+                (Some(_), Some(_)) => interp_x(grid, phase.volume_fraction, i, j),
+                (Some(c), None) | (None, Some(c)) => phase.volume_fraction[c + nx * j],
+                (None, None) => 0.0,
+            };
+            let p_w = west.map_or(p_west, |c| ctx.gas_pressure[c + nx * j]);
+            let p_e = east.map_or(p_east, |c| ctx.gas_pressure[c + nx * j]);
+            a.b[k] += eps_face * (p_w - p_e) * dy[j];
+            if let (Some(ps), Some(w), Some(e)) = (phase.solids_pressure, west, east) {
+                a.b[k] += (ps[w + nx * j] - ps[e + nx * j]) * dy[j];
+            }
+        }
+    }
+}
+
+/// Assembles the v-momentum system of one phase on the nx × (ny+1) block of y-faces,
+/// without relaxation (the mirror of [`assemble_u`]).
+pub fn assemble_v(
+    ctx: &Context<'_>,
+    phase: &PhaseFields<'_>,
+    u: &[f64],
+    v: &[f64],
+    v_old: &[f64],
+    faces: &mut FaceData,
+    a: &mut Stencil5,
+) {
+    let grid = ctx.grid;
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let (dx, dy) = (grid.x.widths(), grid.y.widths());
+    let dxc = grid.x.face_spacing();
+    let my = ny + 1;
+    let rho_eps = phase.bulk_density;
+    let mu = phase.viscosity;
+    let y_face_flux = |i: usize, j: usize| -> f64 {
+        let vel = v[i + nx * j];
+        let re = if j == 0 {
+            rho_eps[i]
+        } else if j == ny {
+            rho_eps[i + nx * (ny - 1)]
+        } else {
+            upwind(rho_eps, i + nx * (j - 1), i + nx * j, vel)
+        };
+        re * vel * dx[i]
+    };
+    let x_face_flux = |i: usize, j: usize| -> f64 {
+        let vel = u[i + (nx + 1) * j];
+        upwind(rho_eps, i - 1 + nx * j, i + nx * j, vel) * vel * dy[j]
+    };
+    for j in 0..my {
+        for i in 1..nx {
+            // v-CV x-face at x-face i: halves of the two adjacent rows' u-face fluxes
+            let (south, north) = (j.checked_sub(1), (j < ny).then_some(j));
+            let flux: f64 = [south, north]
+                .into_iter()
+                .flatten()
+                .map(|r| 0.5 * x_face_flux(i, r))
+                .sum();
+            let row = |r: usize| {
+                harmonic(
+                    mu[i - 1 + nx * r],
+                    mu[i + nx * r],
+                    grid.x.interpolation_weight(i - 1),
+                )
+            };
+            let mu_corner = match (south, north) {
+                (Some(s), Some(n)) => harmonic(row(s), row(n), grid.y.interpolation_weight(s)),
+                (Some(r), None) | (None, Some(r)) => row(r),
+                (None, None) => 0.0,
+            };
+            let k = faces.xf(i, j);
+            faces.flux_x[k] = flux;
+            faces.cond_x[k] = mu_corner * cv_width(dy, j) / dxc[i];
+        }
+    }
+    for j in 1..my {
+        for i in 0..nx {
+            let k = faces.yf(i, j);
+            faces.flux_y[k] = 0.5 * (y_face_flux(i, j - 1) + y_face_flux(i, j));
+            faces.cond_y[k] = mu[i + nx * (j - 1)] * dx[i] / dy[j - 1];
+        }
+    }
+    assemble(faces, v, ctx.scheme, a);
+    let x0 = grid.x.start();
+    let xc = grid.x.centres();
+    for j in 0..my {
+        for i in 0..nx {
+            let k = i + nx * j;
+            if a.pattern().fixed_mask()[k] {
+                fixed_row(a, k, 0.0);
+                continue;
+            }
+            let height = cv_width(dy, j);
+            let (south, north) = (j.checked_sub(1), (j < ny).then_some(j));
+            let half_volume = |r: Option<usize>, field: &[f64]| {
+                r.map_or(0.0, |r| 0.5 * dx[i] * dy[r] * field[i + nx * r])
+            };
+            let mu_wall = |col: usize| -> f64 {
+                match (south, north) {
+                    (Some(s), Some(n)) => harmonic(
+                        mu[col + nx * s],
+                        mu[col + nx * n],
+                        grid.y.interpolation_weight(s),
+                    ),
+                    (Some(r), None) | (None, Some(r)) => mu[col + nx * r],
+                    (None, None) => 0.0,
+                }
+            };
+            if i == 0 {
+                add_wall_face(a, k, &ctx.bcs.west, mu_wall(0), dx[0], height);
+            }
+            if i == nx - 1 {
+                add_wall_face(a, k, &ctx.bcs.east, mu_wall(nx - 1), dx[nx - 1], height);
+            }
+            let a0 = (half_volume(south, phase.bulk_density_old)
+                + half_volume(north, phase.bulk_density_old))
+                / ctx.dt;
+            a.a_p[k] += a0;
+            a.b[k] += a0 * v_old[k];
+            a.b[k] += (half_volume(south, rho_eps) + half_volume(north, rho_eps)) * ctx.gravity.1;
+            let eps_face = match (south, north) {
+                (Some(_), Some(_)) => interp_y(grid, phase.volume_fraction, i, j),
+                (Some(r), None) | (None, Some(r)) => phase.volume_fraction[i + nx * r],
+                (None, None) => 0.0,
+            };
+            let p_south = ctx
+                .bcs
+                .south
+                .pressure(xc[i] - x0, ctx.gravity.0)
+                .unwrap_or(0.0);
+            let p_north = ctx
+                .bcs
+                .north
+                .pressure(xc[i] - x0, ctx.gravity.0)
+                .unwrap_or(0.0);
+            let p_s = south.map_or(p_south, |r| ctx.gas_pressure[i + nx * r]);
+            let p_n = north.map_or(p_north, |r| ctx.gas_pressure[i + nx * r]);
+            a.b[k] += eps_face * (p_s - p_n) * dx[i];
+            if let (Some(ps), Some(s), Some(n)) = (phase.solids_pressure, south, north) {
+                a.b[k] += (ps[i + nx * s] - ps[i + nx * n]) * dx[i];
+            }
+        }
+    }
+}
