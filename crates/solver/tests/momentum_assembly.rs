@@ -18,15 +18,29 @@ fn two_layer_couette_is_exact() {
     let y = Axis::from_segments(
         0.0,
         &[
-            Segment::Geometric { length: 0.4, cells: 4, growth: 1.2 },
-            Segment::Geometric { length: 0.6, cells: 6, growth: 0.9 },
+            Segment::Geometric {
+                length: 0.4,
+                cells: 4,
+                growth: 1.2,
+            },
+            Segment::Geometric {
+                length: 0.6,
+                cells: 6,
+                growth: 0.9,
+            },
         ],
     )
     .unwrap();
     let grid = Grid::new(Axis::uniform(0.0, 1.0, nx).unwrap(), y);
     let interface = 0.4;
     let viscosity: Vec<f64> = (0..nx * ny)
-        .map(|k| if grid.y.centres()[k / nx] < interface { mu_low } else { mu_high })
+        .map(|k| {
+            if grid.y.centres()[k / nx] < interface {
+                mu_low
+            } else {
+                mu_high
+            }
+        })
         .collect();
     let ones = vec![1.0; nx * ny];
     // open ends at equal pressure: no x variation; floor at rest, lid moving
@@ -37,7 +51,14 @@ fn two_layer_couette_is_exact() {
         north: SideBc::Wall(RobinFace::dirichlet(lid)),
     };
     let pressure = vec![0.0; nx * ny];
-    let ctx = Context { grid: &grid, bcs: &bcs, gravity: (0.0, 0.0), dt: f64::INFINITY, scheme: Scheme::Superbee, gas_pressure: &pressure };
+    let ctx = Context {
+        grid: &grid,
+        bcs: &bcs,
+        gravity: (0.0, 0.0),
+        dt: f64::INFINITY,
+        scheme: Scheme::Superbee,
+        gas_pressure: &pressure,
+    };
     let phase = PhaseFields {
         bulk_density: &ones,
         bulk_density_old: &ones,
