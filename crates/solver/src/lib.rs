@@ -8,6 +8,7 @@
 // than zipped iterators there.
 #![allow(clippy::needless_range_loop)]
 
+pub mod energy;
 pub mod momentum;
 pub mod run;
 pub mod single_phase;

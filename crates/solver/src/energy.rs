@@ -1,0 +1,133 @@
+//! The granular-energy equation of one solids phase (model-spec §1.3, §4.8):
+//!
+//! (3/2)[∂(εs ρs θ)/∂t + ∇·(εs ρs θ us)] = ∇·(κs ∇θ) + Π − γ − J_vis + J_slip,
+//!
+//! on the cell-centred grid, in MFIX's continuity-subtracted implicit-Euler form: convection
+//! with the flux (3/2)·(solids mass flux) and upwind bulk density; conduction through
+//! harmonic face conductivities (§4.1); the transient with the old bulk density; the
+//! dissipation γ and the viscous damping J_vis = 3 F_gs θ implicit (γ/θ and 3 F_gs in the
+//! diagonal); the production Π = −P_kin tr D + 2 μ_kin tr(D²) + λ_kin (tr D)² split by sign
+//! (a negative part goes to the diagonal as a multiple of θ, a positive part to the source);
+//! J_slip as a source. Walls close the flux with [`RobinFace`] (model-spec §3.2, §3.3, §3.6).
+
+use runout_linsolve::Stencil5;
+use runout_mesh::{Grid, Sides};
+use runout_walls::RobinFace;
+
+use crate::transport::{assemble, FaceData, Scheme};
+
+/// Per-cell inputs of the granular-energy equation, evaluated by the caller from the
+/// closures at the current iterate (cell index i + nx j).
+#[derive(Clone, Copy, Debug)]
+pub struct EnergyInputs<'a> {
+    /// solids bulk density ρs εs, current [kg m⁻³]
+    pub bulk_density: &'a [f64],
+    /// solids bulk density at the old time level [kg m⁻³]
+    pub bulk_density_old: &'a [f64],
+    /// granular conductivity κs [kg m⁻¹ s⁻¹]
+    pub conductivity: &'a [f64],
+    /// P_kin/θ [kg m⁻³] (the kinetic pressure is linear in θ, model-spec §2.2)
+    pub p_kin_over_theta: &'a [f64],
+    /// μ_kin [Pa s]
+    pub mu_kin: &'a [f64],
+    /// λ_kin [Pa s]
+    pub lambda_kin: &'a [f64],
+    /// γ/θ at the current θ [kg m⁻³ s⁻¹]
+    pub dissipation_over_theta: &'a [f64],
+    /// interphase drag coefficient F_gs [kg m⁻³ s⁻¹] (0 without gas)
+    pub drag: &'a [f64],
+    /// J_slip, Koch–Sangani slip production [W m⁻³]
+    pub slip_production: &'a [f64],
+    /// tr D of the solids [s⁻¹]
+    pub tr_d: &'a [f64],
+    /// tr(D²) of the solids [s⁻²]
+    pub tr_d2: &'a [f64],
+}
+
+/// Assembles the θ equation (without relaxation) into `a`, given the solids face velocities
+/// `u` ((nx+1) × ny) and `v` (nx × (ny+1)), the old θ, the wall closures per side and Δt.
+#[allow(clippy::too_many_arguments)]
+pub fn assemble_theta(
+    grid: &Grid,
+    inputs: &EnergyInputs<'_>,
+    walls: &Sides<Option<RobinFace>>,
+    u: &[f64],
+    v: &[f64],
+    theta_old: &[f64],
+    dt: f64,
+    scheme: Scheme,
+    theta: &[f64],
+    faces: &mut FaceData,
+    a: &mut Stencil5,
+) {
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let (dx, dy) = (grid.x.widths(), grid.y.widths());
+    let (dxc, dyc) = (grid.x.face_spacing(), grid.y.face_spacing());
+    let rho_eps = inputs.bulk_density;
+    let kappa = inputs.conductivity;
+    let harmonic = |a: f64, b: f64, w: f64| a * b / (w * a + (1.0 - w) * b).max(1e-15);
+    for j in 0..ny {
+        for i in 1..nx {
+            let (w, e) = (i - 1 + nx * j, i + nx * j);
+            let vel = u[i + (nx + 1) * j];
+            let re = if vel >= 0.0 { rho_eps[w] } else { rho_eps[e] };
+            let k = faces.xf(i, j);
+            faces.flux_x[k] = 1.5 * re * vel * dy[j];
+            faces.cond_x[k] =
+                harmonic(kappa[w], kappa[e], grid.x.interpolation_weight(i - 1)) * dy[j] / dxc[i];
+        }
+    }
+    for j in 1..ny {
+        for i in 0..nx {
+            let (s, n) = (i + nx * (j - 1), i + nx * j);
+            let vel = v[i + nx * j];
+            let re = if vel >= 0.0 { rho_eps[s] } else { rho_eps[n] };
+            let k = faces.yf(i, j);
+            faces.flux_y[k] = 1.5 * re * vel * dx[i];
+            faces.cond_y[k] =
+                harmonic(kappa[s], kappa[n], grid.y.interpolation_weight(j - 1)) * dx[i] / dyc[j];
+        }
+    }
+    assemble(faces, theta, scheme, a);
+    for j in 0..ny {
+        for i in 0..nx {
+            let k = i + nx * j;
+            let volume = dx[i] * dy[j];
+            // wall faces: θ closure with the fluid cell's conductivity (model-spec §3.1)
+            for (present, face, delta, area) in [
+                (i == 0, &walls.west, dx[i], dy[j]),
+                (i == nx - 1, &walls.east, dx[i], dy[j]),
+                (j == 0, &walls.south, dy[j], dx[i]),
+                (j == ny - 1, &walls.north, dy[j], dx[i]),
+            ] {
+                if let (true, Some(face)) = (present, face) {
+                    let (ap, b) = face.implicit_parts(kappa[k], delta);
+                    a.a_p[k] += ap * area;
+                    a.b[k] += b * area;
+                }
+            }
+            // transient with the old bulk density (model-spec §1.3, §4.3)
+            let a0 = 1.5 * inputs.bulk_density_old[k] * volume / dt;
+            a.a_p[k] += a0;
+            a.b[k] += a0 * theta_old[k];
+            // dissipation and viscous damping, implicit
+            a.a_p[k] += (inputs.dissipation_over_theta[k] + 3.0 * inputs.drag[k]) * volume;
+            // production split by sign (model-spec §4.8)
+            let tr_d = inputs.tr_d[k];
+            let compression = -inputs.p_kin_over_theta[k] * tr_d; // coefficient of θ in −P_kin tr D
+            if compression >= 0.0 {
+                a.b[k] += compression * theta[k] * volume;
+            } else {
+                a.a_p[k] += -compression * volume;
+            }
+            let bulk = inputs.lambda_kin[k] * tr_d * tr_d;
+            if bulk >= 0.0 {
+                a.b[k] += bulk * volume;
+            } else {
+                a.a_p[k] += -bulk / theta[k].max(runout_closures::guards::THETA_SMALL) * volume;
+            }
+            a.b[k] +=
+                (2.0 * inputs.mu_kin[k] * inputs.tr_d2[k] + inputs.slip_production[k]) * volume;
+        }
+    }
+}
