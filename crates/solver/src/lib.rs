@@ -1,15 +1,21 @@
 //! runout-solver: the finite-volume machinery of runout (model-spec §4).
 //!
-//! Part 1 (issue 6, in progress): [`transport`] assembles upwind/Superbee convection and
-//! diffusion on a structured block; [`single_phase`] is the incompressible SIMPLE core on
-//! a stretched staggered grid that the two-fluid model will reuse.
+//! - [`transport`]: upwind/Superbee convection and diffusion on a structured block;
+//! - [`momentum`]: one phase's momentum equations with variable ρε, ε, μ (model-spec §4.4);
+//! - [`single_phase`]: the incompressible SIMPLE core on a stretched staggered grid;
+//! - [`run`]: the time loop with MFIX's adaptive Δt, output and diagnosis;
+//! - pieces of the two-fluid model (issue 7): [`energy`] (granular energy, §4.8),
+//!   [`kinematics`] (cell strain rates), [`pea`] (partial elimination of drag, §4.5);
+//! - [`verify`]: the verification problems of the single-phase core.
 #![deny(missing_docs)]
 // Stencil loops index several staggered arrays with the same (i, j); indices read better
 // than zipped iterators there.
 #![allow(clippy::needless_range_loop)]
 
 pub mod energy;
+pub mod kinematics;
 pub mod momentum;
+pub mod pea;
 pub mod run;
 pub mod single_phase;
 pub mod transport;
