@@ -5,7 +5,8 @@
 //! - [`single_phase`]: the incompressible SIMPLE core on a stretched staggered grid;
 //! - [`run`]: the time loop with MFIX's adaptive Δt, output and diagnosis;
 //! - pieces of the two-fluid model (issue 7): [`energy`] (granular energy, §4.8),
-//!   [`kinematics`] (cell strain rates), [`pea`] (partial elimination of drag, §4.5);
+//!   [`kinematics`] (cell strain rates), [`pea`] (partial elimination of drag, §4.5),
+//!   [`volume_fraction`] (the solids volume-fraction correction, §4.7);
 //! - [`verify`]: the verification problems of the single-phase core.
 #![deny(missing_docs)]
 // Stencil loops index several staggered arrays with the same (i, j); indices read better
@@ -19,6 +20,7 @@ pub mod pea;
 pub mod run;
 pub mod single_phase;
 pub mod transport;
+pub mod volume_fraction;
 pub mod verify;
 
 pub use run::{run_case, DtController, Progress, RunError};
