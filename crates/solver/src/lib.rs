@@ -20,6 +20,7 @@ pub mod pea;
 pub mod run;
 pub mod single_phase;
 pub mod transport;
+pub mod two_fluid;
 pub mod volume_fraction;
 pub mod verify;
 

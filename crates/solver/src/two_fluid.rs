@@ -1,0 +1,904 @@
+//! The two-fluid model: gas plus M solids phases (model-spec §1, §4.9), first version.
+//!
+//! One outer iteration follows MFIX's DO_ITERATION (model-spec §4.9):
+//! 1. closures per cell and phase at the current iterate (runout-closures `evaluate`):
+//!    μ_s, λ_s, P_s (kinetic + frictional, summed), κ_s, K_cp, F_gs and the θ sources;
+//! 2. momentum predictor of every phase ([`crate::momentum`]) with the current P_g and P_s,
+//!    the drag removed by partial elimination ([`crate::pea`]), Patankar relaxation;
+//! 3. solids volume-fraction correction of each phase ([`crate::volume_fraction`]);
+//!    εg = 1 − Σεs;
+//! 4. gas pressure correction from gas continuity with d_g of the partial elimination
+//!    (model-spec §4.6); the solids velocities are not corrected with P'_g;
+//! 5. granular energy of each phase ([`crate::energy`]), θ ≥ 10⁻¹² m²/s²;
+//! 6. residuals (model-spec §4.11).
+//!
+//! Not yet in this version (issue 7 continues): the explicit stress cross terms of
+//! model-spec §4.4, the Johnson–Jackson and Jenkins walls (the walls here are no-slip,
+//! free-slip or user partial slip for the solids, with a zero-flux or user θ condition), the
+//! Schaeffer plastic pressure P* and the DIL_EP_S velocity averaging of dilute faces.
+
+use runout_closures::{evaluate, CellState, ClosureParams};
+use runout_linsolve::{build, LinSolveError, LinearSolver, LinearSolverKind, Pattern, Stencil5};
+use runout_mesh::{Grid, Sides};
+use runout_walls::RobinFace;
+
+use crate::energy::{assemble_theta, EnergyInputs};
+use crate::kinematics::{strain_rates, Strain, WallVelocities};
+use crate::momentum::{assemble_u, assemble_v, fixed_row, Context, PhaseFields};
+use crate::pea::eliminate_node;
+use crate::single_phase::{Fluid, SideBc};
+use crate::transport::{FaceData, Scheme};
+use crate::volume_fraction::{apply_correction, assemble_correction, CorrectionInputs};
+
+/// θ floor after each solve (model-spec §1.3, MFIX `adjust_theta.f`).
+const THETA_SMALL: f64 = runout_closures::guards::THETA_SMALL;
+
+/// Dilute threshold of solids faces and cells (MFIX `DIL_EP_S`, model-spec §2.7).
+const DIL_EP_S: f64 = runout_closures::guards::DIL_EP_S;
+
+/// One solids phase as the solver needs it.
+#[derive(Clone, Debug)]
+pub struct SolidsSpec {
+    /// closure parameters (particles, gas, friction, radial distribution, drag)
+    pub params: ClosureParams,
+    /// maximum packing εs,max (selective relaxation of the ε correction)
+    pub eps_max: f64,
+    /// tangential-velocity closure on each side
+    pub walls: Sides<SideBc>,
+    /// θ closure on each wall side (`None` on an outlet)
+    pub theta_walls: Sides<Option<RobinFace>>,
+}
+
+/// Iteration settings (MFIX defaults, model-spec §4.10).
+#[derive(Clone, Debug)]
+pub struct TwoFluidSettings {
+    /// convection scheme of the momentum and θ equations
+    pub scheme: Scheme,
+    /// momentum relaxation (`UR_FAC(3..4)`)
+    pub relax_velocity: f64,
+    /// gas-pressure relaxation (`UR_FAC(1)`)
+    pub relax_pressure: f64,
+    /// selective ε-correction relaxation (`UR_FAC(2)`)
+    pub relax_eps: f64,
+    /// θ relaxation (`UR_FAC(8)`)
+    pub relax_theta: f64,
+}
+
+impl Default for TwoFluidSettings {
+    fn default() -> Self {
+        TwoFluidSettings {
+            scheme: Scheme::Upwind,
+            relax_velocity: 0.5,
+            relax_pressure: 0.8,
+            relax_eps: 0.5,
+            relax_theta: 0.5,
+        }
+    }
+}
+
+/// Fields and closure values of one solids phase.
+#[derive(Clone, Debug)]
+pub struct SolidsFields {
+    /// volume fraction εs per cell
+    pub eps: Vec<f64>,
+    /// u on x-faces
+    pub u: Vec<f64>,
+    /// v on y-faces
+    pub v: Vec<f64>,
+    /// granular temperature θ per cell [m² s⁻²]
+    pub theta: Vec<f64>,
+    eps_old: Vec<f64>,
+    u_old: Vec<f64>,
+    v_old: Vec<f64>,
+    theta_old: Vec<f64>,
+    rho_eps: Vec<f64>,
+    rho_eps_old: Vec<f64>,
+    /// solids pressure P_s = P_kin + P_fric per cell [Pa]
+    pub p_s: Vec<f64>,
+    mu: Vec<f64>,
+    kappa: Vec<f64>,
+    k_cp: Vec<f64>,
+    f_gs: Vec<f64>,
+    p_kin_over_theta: Vec<f64>,
+    mu_kin: Vec<f64>,
+    lambda_kin: Vec<f64>,
+    gamma_over_theta: Vec<f64>,
+    j_slip: Vec<f64>,
+    strain: Vec<Strain>,
+    tr_d: Vec<f64>,
+    tr_d2: Vec<f64>,
+    e_u: Vec<f64>,
+    e_v: Vec<f64>,
+    eps_prime: Vec<f64>,
+    imbalance: Vec<f64>,
+    a_u: Stencil5,
+    a_v: Stencil5,
+    a_eps: Stencil5,
+    a_theta: Stencil5,
+}
+
+/// Normalised residuals of one outer iteration (model-spec §4.11).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct TwoFluidResiduals {
+    /// momentum of all phases and components, MFIX's normalisation, summed
+    pub momentum: f64,
+    /// mean |gas mass imbalance| before the pressure correction [kg s⁻¹ per m depth]
+    pub gas_mass: f64,
+    /// mean |solids mass imbalance| before the ε correction, summed over phases
+    pub solids_mass: f64,
+    /// θ equations, Σ|residual| / Σ|a_P θ_P|, summed over phases
+    pub theta: f64,
+}
+
+/// Errors of the two-fluid solver.
+#[derive(Debug, thiserror::Error)]
+pub enum TwoFluidError {
+    /// A linear solve failed.
+    #[error("{equation}: {source}")]
+    Linear {
+        /// which equation
+        equation: String,
+        /// the solver error
+        source: LinSolveError,
+    },
+}
+
+/// The two-fluid solver with its work storage (allocated once).
+pub struct TwoFluid {
+    grid: Grid,
+    gas: Fluid,
+    gas_walls: Sides<SideBc>,
+    solids_specs: Vec<SolidsSpec>,
+    gravity: (f64, f64),
+    settings: TwoFluidSettings,
+    /// gas volume fraction εg per cell
+    pub eps_g: Vec<f64>,
+    /// gas pressure per cell [Pa]
+    pub p_g: Vec<f64>,
+    /// gas u on x-faces
+    pub u_g: Vec<f64>,
+    /// gas v on y-faces
+    pub v_g: Vec<f64>,
+    /// solids phases
+    pub solids: Vec<SolidsFields>,
+    eps_g_old: Vec<f64>,
+    u_g_old: Vec<f64>,
+    v_g_old: Vec<f64>,
+    rho_eps_g: Vec<f64>,
+    rho_eps_g_old: Vec<f64>,
+    mu_g: Vec<f64>,
+    d_u: Vec<f64>,
+    d_v: Vec<f64>,
+    p_corr: Vec<f64>,
+    imbalance: Vec<f64>,
+    u_faces: FaceData,
+    v_faces: FaceData,
+    c_faces: FaceData,
+    a_ug: Stencil5,
+    a_vg: Stencil5,
+    a_p: Stencil5,
+    solver_u: Box<dyn LinearSolver>,
+    solver_v: Box<dyn LinearSolver>,
+    solver_p: Box<dyn LinearSolver>,
+    solver_eps: Box<dyn LinearSolver>,
+    solver_theta: Box<dyn LinearSolver>,
+    pressure_pinned: bool,
+}
+
+fn lin(equation: &str) -> impl Fn(LinSolveError) -> TwoFluidError + '_ {
+    move |source| TwoFluidError::Linear {
+        equation: equation.to_string(),
+        source,
+    }
+}
+
+impl TwoFluid {
+    /// Sets up the solver: gas at rest, εs = 0, θ = θ_small, zero pressure; the caller fills
+    /// the initial fields.
+    pub fn new(
+        grid: Grid,
+        gas: Fluid,
+        gas_walls: Sides<SideBc>,
+        solids_specs: Vec<SolidsSpec>,
+        gravity: (f64, f64),
+        settings: TwoFluidSettings,
+    ) -> Result<Self, TwoFluidError> {
+        let (nx, ny) = (grid.nx(), grid.ny());
+        let n = nx * ny;
+        let outlet = |b: &SideBc| !matches!(b, SideBc::Wall(_));
+        let mut pu = Pattern::new(nx + 1, ny).map_err(lin("u pattern"))?;
+        let mut pv = Pattern::new(nx, ny + 1).map_err(lin("v pattern"))?;
+        for j in 0..ny {
+            if !outlet(&gas_walls.west) {
+                pu.fix(0, j).map_err(lin("u pattern"))?;
+            }
+            if !outlet(&gas_walls.east) {
+                pu.fix(nx, j).map_err(lin("u pattern"))?;
+            }
+        }
+        for i in 0..nx {
+            if !outlet(&gas_walls.south) {
+                pv.fix(i, 0).map_err(lin("v pattern"))?;
+            }
+            if !outlet(&gas_walls.north) {
+                pv.fix(i, ny).map_err(lin("v pattern"))?;
+            }
+        }
+        let mut pp = Pattern::new(nx, ny).map_err(lin("p' pattern"))?;
+        let pressure_pinned = !gas_walls.iter().any(|(_, b)| outlet(b));
+        if pressure_pinned {
+            pp.fix(0, 0).map_err(lin("p' pattern"))?;
+        }
+        let pc = Pattern::new(nx, ny).map_err(lin("cell pattern"))?;
+        let mut solver_u = build(&LinearSolverKind::momentum_default());
+        let mut solver_v = build(&LinearSolverKind::momentum_default());
+        let mut solver_p = build(&LinearSolverKind::pressure_default());
+        let mut solver_eps = build(&LinearSolverKind::volume_fraction_default());
+        let mut solver_theta = build(&LinearSolverKind::granular_energy_default());
+        solver_u.set_pattern(&pu).map_err(lin("u"))?;
+        solver_v.set_pattern(&pv).map_err(lin("v"))?;
+        solver_p.set_pattern(&pp).map_err(lin("p'"))?;
+        solver_eps.set_pattern(&pc).map_err(lin("eps'"))?;
+        solver_theta.set_pattern(&pc).map_err(lin("theta"))?;
+        let solids = solids_specs
+            .iter()
+            .map(|_| SolidsFields {
+                eps: vec![0.0; n],
+                u: vec![0.0; (nx + 1) * ny],
+                v: vec![0.0; nx * (ny + 1)],
+                theta: vec![THETA_SMALL; n],
+                eps_old: vec![0.0; n],
+                u_old: vec![0.0; (nx + 1) * ny],
+                v_old: vec![0.0; nx * (ny + 1)],
+                theta_old: vec![THETA_SMALL; n],
+                rho_eps: vec![0.0; n],
+                rho_eps_old: vec![0.0; n],
+                p_s: vec![0.0; n],
+                mu: vec![0.0; n],
+                kappa: vec![0.0; n],
+                k_cp: vec![0.0; n],
+                f_gs: vec![0.0; n],
+                p_kin_over_theta: vec![0.0; n],
+                mu_kin: vec![0.0; n],
+                lambda_kin: vec![0.0; n],
+                gamma_over_theta: vec![0.0; n],
+                j_slip: vec![0.0; n],
+                strain: vec![Strain::default(); n],
+                tr_d: vec![0.0; n],
+                tr_d2: vec![0.0; n],
+                e_u: vec![0.0; (nx + 1) * ny],
+                e_v: vec![0.0; nx * (ny + 1)],
+                eps_prime: vec![0.0; n],
+                imbalance: vec![0.0; n],
+                a_u: Stencil5::new(pu.clone()),
+                a_v: Stencil5::new(pv.clone()),
+                a_eps: Stencil5::new(pc.clone()),
+                a_theta: Stencil5::new(pc.clone()),
+            })
+            .collect();
+        Ok(TwoFluid {
+            eps_g: vec![1.0; n],
+            p_g: vec![0.0; n],
+            u_g: vec![0.0; (nx + 1) * ny],
+            v_g: vec![0.0; nx * (ny + 1)],
+            solids,
+            eps_g_old: vec![1.0; n],
+            u_g_old: vec![0.0; (nx + 1) * ny],
+            v_g_old: vec![0.0; nx * (ny + 1)],
+            rho_eps_g: vec![gas.density; n],
+            rho_eps_g_old: vec![gas.density; n],
+            mu_g: vec![gas.viscosity; n],
+            d_u: vec![0.0; (nx + 1) * ny],
+            d_v: vec![0.0; nx * (ny + 1)],
+            p_corr: vec![0.0; n],
+            imbalance: vec![0.0; n],
+            u_faces: FaceData::zeros(nx + 1, ny),
+            v_faces: FaceData::zeros(nx, ny + 1),
+            c_faces: FaceData::zeros(nx, ny),
+            a_ug: Stencil5::new(pu),
+            a_vg: Stencil5::new(pv),
+            a_p: Stencil5::new(pp),
+            solver_u,
+            solver_v,
+            solver_p,
+            solver_eps,
+            solver_theta,
+            pressure_pinned,
+            grid,
+            gas,
+            gas_walls,
+            solids_specs,
+            gravity,
+            settings,
+        })
+    }
+
+    /// The grid.
+    pub fn grid(&self) -> &Grid {
+        &self.grid
+    }
+
+    /// Stores the current fields as the old time level and refreshes the bulk densities.
+    pub fn begin_step(&mut self) {
+        self.sync_volume_fractions();
+        self.eps_g_old.copy_from_slice(&self.eps_g);
+        self.u_g_old.copy_from_slice(&self.u_g);
+        self.v_g_old.copy_from_slice(&self.v_g);
+        self.rho_eps_g_old.copy_from_slice(&self.rho_eps_g);
+        for s in &mut self.solids {
+            s.eps_old.copy_from_slice(&s.eps);
+            s.u_old.copy_from_slice(&s.u);
+            s.v_old.copy_from_slice(&s.v);
+            s.theta_old.copy_from_slice(&s.theta);
+            s.rho_eps_old.copy_from_slice(&s.rho_eps);
+        }
+    }
+
+    /// Restores the fields of the start of the step.
+    pub fn restore_step(&mut self) {
+        self.eps_g.copy_from_slice(&self.eps_g_old);
+        self.u_g.copy_from_slice(&self.u_g_old);
+        self.v_g.copy_from_slice(&self.v_g_old);
+        for s in &mut self.solids {
+            s.eps.copy_from_slice(&s.eps_old);
+            s.u.copy_from_slice(&s.u_old);
+            s.v.copy_from_slice(&s.v_old);
+            s.theta.copy_from_slice(&s.theta_old);
+        }
+        self.sync_volume_fractions();
+    }
+
+    /// εg = 1 − Σεs and the bulk densities of every phase.
+    pub fn sync_volume_fractions(&mut self) {
+        let n = self.eps_g.len();
+        for k in 0..n {
+            self.eps_g[k] = 1.0 - self.solids.iter().map(|s| s.eps[k]).sum::<f64>();
+            self.rho_eps_g[k] = self.gas.density * self.eps_g[k];
+        }
+        for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
+            for k in 0..n {
+                s.rho_eps[k] = spec.params.particles.density * s.eps[k];
+            }
+        }
+    }
+
+    /// Total solids mass per unit depth of phase m [kg m⁻¹].
+    pub fn solids_mass(&self, m: usize) -> f64 {
+        let (nx, ny) = (self.grid.nx(), self.grid.ny());
+        let rho = self.solids_specs[m].params.particles.density;
+        (0..ny)
+            .flat_map(|j| (0..nx).map(move |i| (i, j)))
+            .map(|(i, j)| rho * self.solids[m].eps[i + nx * j] * self.grid.cell_volume(i, j))
+            .sum()
+    }
+
+    /// Step 1: closures per cell and phase at the current iterate.
+    fn update_closures(&mut self) {
+        let (nx, ny) = (self.grid.nx(), self.grid.ny());
+        let walls = WallVelocities::default();
+        for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
+            strain_rates(&self.grid, &s.u, &s.v, &walls, &mut s.strain);
+            for j in 0..ny {
+                for i in 0..nx {
+                    let k = i + nx * j;
+                    // |u_g − u_s| from cell-centred averages of the face velocities (§2.6)
+                    let du = 0.5
+                        * ((self.u_g[i + (nx + 1) * j] - s.u[i + (nx + 1) * j])
+                            + (self.u_g[i + 1 + (nx + 1) * j] - s.u[i + 1 + (nx + 1) * j]));
+                    let dv = 0.5 * ((self.v_g[k] - s.v[k]) + (self.v_g[k + nx] - s.v[k + nx]));
+                    let st = s.strain[k];
+                    let theta = s.theta[k].max(THETA_SMALL);
+                    let c = evaluate(
+                        &CellState {
+                            eps_s: s.eps[k],
+                            theta,
+                            slip: du.hypot(dv),
+                            tr_d: st.tr_d,
+                            s_ddot_s: st.s_ddot_s,
+                        },
+                        &spec.params,
+                    );
+                    s.p_s[k] = c.stress.p_s;
+                    s.mu[k] = c.stress.mu_s;
+                    s.kappa[k] = c.kinetic.kappa_kin;
+                    s.k_cp[k] = c.k_cp;
+                    s.f_gs[k] = c.f_gs;
+                    s.p_kin_over_theta[k] = c.kinetic.p_kin / theta;
+                    s.mu_kin[k] = c.kinetic.mu_kin;
+                    s.lambda_kin[k] = c.kinetic.lambda_kin;
+                    s.gamma_over_theta[k] = c.kinetic.dissipation / theta;
+                    s.j_slip[k] = c.j_slip;
+                    s.tr_d[k] = st.tr_d;
+                    s.tr_d2[k] = st.tr_d2;
+                }
+            }
+        }
+    }
+
+    /// One outer iteration with time step `dt`.
+    pub fn outer_iteration(&mut self, dt: f64) -> Result<TwoFluidResiduals, TwoFluidError> {
+        self.update_closures();
+        let momentum = self.momentum(dt)?;
+        let solids_mass = self.volume_fraction_correction(dt)?;
+        let gas_mass = self.pressure_correction(dt)?;
+        let theta = self.granular_energy(dt)?;
+        Ok(TwoFluidResiduals {
+            momentum,
+            gas_mass,
+            solids_mass,
+            theta,
+        })
+    }
+
+    /// Step 2: momentum predictor of every phase with partial elimination of the drag.
+    fn momentum(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
+        let grid = &self.grid;
+        let (nx, ny) = (grid.nx(), grid.ny());
+        let (dx, dy) = (grid.x.widths(), grid.y.widths());
+        let scheme = self.settings.scheme;
+        let gravity = self.gravity;
+        let ctx_gas = Context {
+            grid,
+            bcs: &self.gas_walls,
+            gravity,
+            dt,
+            scheme,
+            gas_pressure: &self.p_g,
+        };
+        let gas_fields = PhaseFields {
+            bulk_density: &self.rho_eps_g,
+            bulk_density_old: &self.rho_eps_g_old,
+            volume_fraction: &self.eps_g,
+            viscosity: &self.mu_g,
+            solids_pressure: None,
+        };
+        assemble_u(
+            &ctx_gas,
+            &gas_fields,
+            &self.u_g,
+            &self.v_g,
+            &self.u_g_old,
+            &mut self.u_faces,
+            &mut self.a_ug,
+        );
+        assemble_v(
+            &ctx_gas,
+            &gas_fields,
+            &self.u_g,
+            &self.v_g,
+            &self.v_g_old,
+            &mut self.v_faces,
+            &mut self.a_vg,
+        );
+        for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
+            let ctx = Context {
+                grid,
+                bcs: &spec.walls,
+                gravity,
+                dt,
+                scheme,
+                gas_pressure: &self.p_g,
+            };
+            let fields = PhaseFields {
+                bulk_density: &s.rho_eps,
+                bulk_density_old: &s.rho_eps_old,
+                volume_fraction: &s.eps,
+                viscosity: &s.mu,
+                solids_pressure: Some(&s.p_s),
+            };
+            assemble_u(
+                &ctx,
+                &fields,
+                &s.u,
+                &s.v,
+                &s.u_old,
+                &mut self.u_faces,
+                &mut s.a_u,
+            );
+            assemble_v(
+                &ctx,
+                &fields,
+                &s.u,
+                &s.v,
+                &s.v_old,
+                &mut self.v_faces,
+                &mut s.a_v,
+            );
+        }
+        let relax = self.settings.relax_velocity;
+        let m = self.solids.len();
+        let mut residual = 0.0;
+        // u: nodes at x-faces; drag averaged to the face by volume (VF_GS_X)
+        for dir in 0..2 {
+            let (mx, my) = if dir == 0 { (nx + 1, ny) } else { (nx, ny + 1) };
+            let (mut num, mut den) = (0.0, 0.0);
+            for j in 0..my {
+                for i in 0..mx {
+                    let k = i + mx * j;
+                    let gas_a = if dir == 0 { &self.a_ug } else { &self.a_vg };
+                    if gas_a.pattern().fixed_mask()[k] {
+                        continue;
+                    }
+                    // the cells beside the node and their half volumes
+                    let (c0, c1, h0, h1) = if dir == 0 {
+                        let w = i.checked_sub(1).map(|c| (c + nx * j, 0.5 * dx[c] * dy[j]));
+                        let e = (i < nx).then(|| (i + nx * j, 0.5 * dx[i] * dy[j]));
+                        (
+                            w.map(|x| x.0),
+                            e.map(|x| x.0),
+                            w.map_or(0.0, |x| x.1),
+                            e.map_or(0.0, |x| x.1),
+                        )
+                    } else {
+                        let s_ = j.checked_sub(1).map(|r| (i + nx * r, 0.5 * dx[i] * dy[r]));
+                        let n_ = (j < ny).then(|| (i + nx * j, 0.5 * dx[i] * dy[j]));
+                        (
+                            s_.map(|x| x.0),
+                            n_.map(|x| x.0),
+                            s_.map_or(0.0, |x| x.1),
+                            n_.map_or(0.0, |x| x.1),
+                        )
+                    };
+                    let mut a_in = [0.0; 8];
+                    let mut r_in = [0.0; 8];
+                    let mut phi = [0.0; 8];
+                    let mut drag = [0.0; 7];
+                    let gas_phi: &[f64] = if dir == 0 { &self.u_g } else { &self.v_g };
+                    a_in[0] = gas_a.a_p[k];
+                    r_in[0] = neighbour_sum(gas_a, gas_phi, k);
+                    phi[0] = gas_phi[k];
+                    let mut dilute = [false; 7];
+                    for (p, s) in self.solids.iter().enumerate() {
+                        let (a, field) = if dir == 0 {
+                            (&s.a_u, &s.u)
+                        } else {
+                            (&s.a_v, &s.v)
+                        };
+                        // a face with εs ≤ DIL_EP_S on both sides carries no solids momentum
+                        // (MFIX keeps its velocity, model-spec §2.7)
+                        dilute[p] = c0
+                            .map_or(0.0, |c| s.eps[c])
+                            .max(c1.map_or(0.0, |c| s.eps[c]))
+                            <= DIL_EP_S;
+                        a_in[p + 1] = if dilute[p] { 1.0 } else { a.a_p[k] };
+                        r_in[p + 1] = if dilute[p] {
+                            field[k]
+                        } else {
+                            neighbour_sum(a, field, k)
+                        };
+                        phi[p + 1] = field[k];
+                        drag[p] = if dilute[p] {
+                            0.0
+                        } else {
+                            c0.map_or(0.0, |c| s.f_gs[c] * h0) + c1.map_or(0.0, |c| s.f_gs[c] * h1)
+                        };
+                    }
+                    // momentum residuals of the coupled node (before relaxation, §4.11)
+                    for p in 0..=m {
+                        if p > 0 && dilute[p - 1] {
+                            continue;
+                        }
+                        let coupling = if p == 0 {
+                            (0..m).map(|q| drag[q] * (phi[q + 1] - phi[0])).sum::<f64>()
+                        } else {
+                            drag[p - 1] * (phi[0] - phi[p])
+                        };
+                        num += (r_in[p] + coupling - a_in[p] * phi[p]).abs();
+                        den += a_in[p].abs() * phi[p].abs().max(1e-15);
+                    }
+                    let (mut a_out, mut r_out) = ([0.0; 8], [0.0; 8]);
+                    eliminate_node(
+                        &a_in[..=m],
+                        &r_in[..=m],
+                        &phi[..=m],
+                        &drag[..m],
+                        &mut a_out[..=m],
+                        &mut r_out[..=m],
+                    );
+                    // area of the node's face for d and e
+                    let area = if dir == 0 { dy[j] } else { dx[i] };
+                    // relaxed centre coefficients, d_g (model-spec §4.6), e_s (§4.7)
+                    let gas_ap = a_out[0] / relax;
+                    let eps_face_g = face_mean(&self.eps_g, c0, c1);
+                    let mut numerator = eps_face_g;
+                    let mut denominator = a_in[0] / relax;
+                    for (p, s) in self.solids.iter_mut().enumerate() {
+                        let a_s = a_in[p + 1] / relax;
+                        let f = drag[p];
+                        let eps_face_s = face_mean(&s.eps, c0, c1);
+                        numerator += eps_face_s * f / (a_s + f);
+                        denominator += f * a_s / (a_s + f);
+                        let (a, field, e) = if dir == 0 {
+                            (&mut s.a_u, &s.u, &mut s.e_u)
+                        } else {
+                            (&mut s.a_v, &s.v, &mut s.e_v)
+                        };
+                        if dilute[p] {
+                            fixed_row(a, k, field[k]);
+                            e[k] = 0.0;
+                            continue;
+                        }
+                        e[k] = area / a_s;
+                        let ap = a_out[p + 1] / relax;
+                        a.b[k] += (r_out[p + 1] - r_in[p + 1]) + (1.0 - relax) * ap * field[k];
+                        a.a_p[k] = ap;
+                    }
+                    let (gas_a, gas_phi, d) = if dir == 0 {
+                        (&mut self.a_ug, &self.u_g, &mut self.d_u)
+                    } else {
+                        (&mut self.a_vg, &self.v_g, &mut self.d_v)
+                    };
+                    gas_a.b[k] += (r_out[0] - r_in[0]) + (1.0 - relax) * gas_ap * gas_phi[k];
+                    gas_a.a_p[k] = gas_ap;
+                    d[k] = area * numerator / denominator;
+                }
+            }
+            residual += if den > 0.0 { num / den } else { num };
+            // fixed nodes: walls, zero velocity, no d or e
+            let gas_a = if dir == 0 {
+                &mut self.a_ug
+            } else {
+                &mut self.a_vg
+            };
+            let d = if dir == 0 {
+                &mut self.d_u
+            } else {
+                &mut self.d_v
+            };
+            for k in 0..d.len() {
+                if gas_a.pattern().fixed_mask()[k] {
+                    fixed_row(gas_a, k, 0.0);
+                    d[k] = 0.0;
+                    for s in self.solids.iter_mut() {
+                        let (a, e) = if dir == 0 {
+                            (&mut s.a_u, &mut s.e_u)
+                        } else {
+                            (&mut s.a_v, &mut s.e_v)
+                        };
+                        fixed_row(a, k, 0.0);
+                        e[k] = 0.0;
+                    }
+                }
+            }
+        }
+        self.solver_u
+            .setup_and_solve(&self.a_ug, &mut self.u_g)
+            .map_err(lin("gas u momentum"))?;
+        self.solver_v
+            .setup_and_solve(&self.a_vg, &mut self.v_g)
+            .map_err(lin("gas v momentum"))?;
+        for s in self.solids.iter_mut() {
+            self.solver_u
+                .setup_and_solve(&s.a_u, &mut s.u)
+                .map_err(lin("solids u momentum"))?;
+            self.solver_v
+                .setup_and_solve(&s.a_v, &mut s.v)
+                .map_err(lin("solids v momentum"))?;
+        }
+        Ok(residual)
+    }
+
+    /// Step 3: ε correction of each solids phase; returns the mean |imbalance| summed.
+    fn volume_fraction_correction(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
+        let n = self.eps_g.len() as f64;
+        let mut total = 0.0;
+        for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
+            let inputs = CorrectionInputs {
+                density: spec.params.particles.density,
+                eps: &s.eps,
+                eps_old: &s.eps_old,
+                u: &s.u,
+                v: &s.v,
+                e_u: &s.e_u,
+                e_v: &s.e_v,
+                k_cp: &s.k_cp,
+                dt,
+            };
+            assemble_correction(&self.grid, &inputs, &mut s.imbalance, &mut s.a_eps);
+            total += s.imbalance.iter().map(|x| x.abs()).sum::<f64>() / n;
+            s.eps_prime.iter_mut().for_each(|x| *x = 0.0);
+            self.solver_eps
+                .setup_and_solve(&s.a_eps, &mut s.eps_prime)
+                .map_err(lin("solids volume fraction"))?;
+            apply_correction(
+                &self.grid,
+                &mut s.eps_prime,
+                &mut s.eps,
+                spec.eps_max,
+                self.settings.relax_eps,
+                &mut s.u,
+                &mut s.v,
+                &s.e_u,
+                &s.e_v,
+                &s.k_cp,
+            );
+        }
+        self.sync_volume_fractions();
+        Ok(total)
+    }
+
+    /// Step 4: gas pressure correction from gas continuity (model-spec §4.6).
+    fn pressure_correction(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
+        let grid = &self.grid;
+        let (nx, ny) = (grid.nx(), grid.ny());
+        let (dx, dy) = (grid.x.widths(), grid.y.widths());
+        let rho = self.gas.density;
+        let eps = &self.eps_g;
+        let upwind = |vel: f64, lo: Option<usize>, hi: Option<usize>| -> f64 {
+            match (lo, hi) {
+                (Some(l), Some(h)) => {
+                    if vel >= 0.0 {
+                        eps[l]
+                    } else {
+                        eps[h]
+                    }
+                }
+                (Some(c), None) | (None, Some(c)) => eps[c],
+                (None, None) => 0.0,
+            }
+        };
+        let a = &mut self.a_p;
+        let mut total = 0.0;
+        for j in 0..ny {
+            for i in 0..nx {
+                let k = i + nx * j;
+                let (kw, ke) = (i + (nx + 1) * j, i + 1 + (nx + 1) * j);
+                let (ks, kn) = (i + nx * j, i + nx * (j + 1));
+                let west = (i > 0).then(|| k - 1);
+                let east = (i + 1 < nx).then_some(k + 1);
+                let south = (j > 0).then(|| k - nx);
+                let north = (j + 1 < ny).then_some(k + nx);
+                let ew = upwind(self.u_g[kw], west, Some(k));
+                let ee = upwind(self.u_g[ke], Some(k), east);
+                let es = upwind(self.v_g[ks], south, Some(k));
+                let en = upwind(self.v_g[kn], Some(k), north);
+                let volume = dx[i] * dy[j];
+                let b = rho
+                    * (-(eps[k] - self.eps_g_old[k]) * volume / dt + ew * self.u_g[kw] * dy[j]
+                        - ee * self.u_g[ke] * dy[j]
+                        + es * self.v_g[ks] * dx[i]
+                        - en * self.v_g[kn] * dx[i]);
+                self.imbalance[k] = b;
+                total += b.abs();
+                if self.pressure_pinned && k == 0 {
+                    fixed_row(a, k, 0.0);
+                    continue;
+                }
+                let ce = rho * ee * self.d_u[ke] * dy[j];
+                let cw = rho * ew * self.d_u[kw] * dy[j];
+                let cn = rho * en * self.d_v[kn] * dx[i];
+                let cs = rho * es * self.d_v[ks] * dx[i];
+                a.a_e[k] = if east.is_some() { ce } else { 0.0 };
+                a.a_w[k] = if west.is_some() { cw } else { 0.0 };
+                a.a_n[k] = if north.is_some() { cn } else { 0.0 };
+                a.a_s[k] = if south.is_some() { cs } else { 0.0 };
+                a.a_p[k] = ce + cw + cn + cs;
+                a.b[k] = b;
+            }
+        }
+        self.p_corr.iter_mut().for_each(|x| *x = 0.0);
+        self.solver_p
+            .setup_and_solve(&self.a_p, &mut self.p_corr)
+            .map_err(lin("gas pressure correction"))?;
+        let pc = &self.p_corr;
+        for j in 0..ny {
+            for i in 0..=nx {
+                let k = i + (nx + 1) * j;
+                if self.d_u[k] != 0.0 {
+                    let p_w = if i == 0 { 0.0 } else { pc[i - 1 + nx * j] };
+                    let p_e = if i == nx { 0.0 } else { pc[i + nx * j] };
+                    self.u_g[k] += self.d_u[k] * (p_w - p_e);
+                }
+            }
+        }
+        for j in 0..=ny {
+            for i in 0..nx {
+                let k = i + nx * j;
+                if self.d_v[k] != 0.0 {
+                    let p_s = if j == 0 { 0.0 } else { pc[i + nx * (j - 1)] };
+                    let p_n = if j == ny { 0.0 } else { pc[i + nx * j] };
+                    self.v_g[k] += self.d_v[k] * (p_s - p_n);
+                }
+            }
+        }
+        let w = self.settings.relax_pressure;
+        self.p_g.iter_mut().zip(pc).for_each(|(p, c)| *p += w * c);
+        Ok(total / (nx * ny) as f64)
+    }
+
+    /// Step 5: granular energy of each solids phase (model-spec §4.8).
+    fn granular_energy(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
+        let relax = self.settings.relax_theta;
+        let mut residual = 0.0;
+        for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
+            let inputs = EnergyInputs {
+                bulk_density: &s.rho_eps,
+                bulk_density_old: &s.rho_eps_old,
+                conductivity: &s.kappa,
+                p_kin_over_theta: &s.p_kin_over_theta,
+                mu_kin: &s.mu_kin,
+                lambda_kin: &s.lambda_kin,
+                dissipation_over_theta: &s.gamma_over_theta,
+                drag: &s.f_gs,
+                slip_production: &s.j_slip,
+                tr_d: &s.tr_d,
+                tr_d2: &s.tr_d2,
+            };
+            assemble_theta(
+                &self.grid,
+                &inputs,
+                &spec.theta_walls,
+                &s.u,
+                &s.v,
+                &s.theta_old,
+                dt,
+                self.settings.scheme,
+                &s.theta,
+                &mut self.c_faces,
+                &mut s.a_theta,
+            );
+            let a = &mut s.a_theta;
+            let nx = a.pattern().nx();
+            let (mut num, mut den) = (0.0, 0.0);
+            for k in 0..s.theta.len() {
+                if s.eps[k] <= DIL_EP_S {
+                    // MFIX gives such cells the mean θ of denser neighbours (§4.8); kept here
+                    fixed_row(a, k, s.theta[k]);
+                    continue;
+                }
+                let mut nb = a.b[k] - a.a_p[k] * s.theta[k];
+                if a.a_e[k] != 0.0 {
+                    nb += a.a_e[k] * s.theta[k + 1];
+                }
+                if a.a_w[k] != 0.0 {
+                    nb += a.a_w[k] * s.theta[k - 1];
+                }
+                if a.a_n[k] != 0.0 {
+                    nb += a.a_n[k] * s.theta[k + nx];
+                }
+                if a.a_s[k] != 0.0 {
+                    nb += a.a_s[k] * s.theta[k - nx];
+                }
+                num += nb.abs();
+                den += (a.a_p[k] * s.theta[k]).abs();
+                let ap = a.a_p[k] / relax;
+                a.b[k] += (1.0 - relax) * ap * s.theta[k];
+                a.a_p[k] = ap;
+            }
+            residual += if den > 0.0 { num / den } else { num };
+            self.solver_theta
+                .setup_and_solve(&s.a_theta, &mut s.theta)
+                .map_err(lin("granular energy"))?;
+            s.theta.iter_mut().for_each(|t| *t = t.max(THETA_SMALL));
+        }
+        Ok(residual)
+    }
+}
+
+/// Σ a_nb φ_nb + b of row k (the right-hand side with the current neighbour values).
+fn neighbour_sum(a: &Stencil5, phi: &[f64], k: usize) -> f64 {
+    let nx = a.pattern().nx();
+    let mut r = a.b[k];
+    if a.a_e[k] != 0.0 {
+        r += a.a_e[k] * phi[k + 1];
+    }
+    if a.a_w[k] != 0.0 {
+        r += a.a_w[k] * phi[k - 1];
+    }
+    if a.a_n[k] != 0.0 {
+        r += a.a_n[k] * phi[k + nx];
+    }
+    if a.a_s[k] != 0.0 {
+        r += a.a_s[k] * phi[k - nx];
+    }
+    r
+}
+
+/// Mean of a cell field over the (one or two) cells beside a face.
+fn face_mean(field: &[f64], c0: Option<usize>, c1: Option<usize>) -> f64 {
+    match (c0, c1) {
+        (Some(a), Some(b)) => 0.5 * (field[a] + field[b]),
+        (Some(c), None) | (None, Some(c)) => field[c],
+        (None, None) => 0.0,
+    }
+}
