@@ -271,8 +271,9 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
     );
     if unsupported > 0 {
         println!(
-            "NOT YET: {unsupported} case(s) need the two-fluid model (issue 7), which does not exist \
-             yet; they were validated but not solved."
+            "NOT YET: {unsupported} case(s) need parts of the two-fluid model (issue 7) that do not \
+             exist yet (see the status column of results/summary.csv); they were validated but not \
+             solved."
         );
     }
     if failed > 0 {

@@ -4,15 +4,19 @@
 //! - [`momentum`]: one phase's momentum equations with variable ρε, ε, μ (model-spec §4.4);
 //! - [`single_phase`]: the incompressible SIMPLE core on a stretched staggered grid;
 //! - [`run`]: the time loop with MFIX's adaptive Δt, output and diagnosis;
-//! - pieces of the two-fluid model (issue 7): [`energy`] (granular energy, §4.8),
+//! - [`two_fluid`]: the first two-fluid model (gas + M solids, model-spec §4.9) built from
+//!   [`energy`] (granular energy, §4.8),
 //!   [`kinematics`] (cell strain rates), [`pea`] (partial elimination of drag, §4.5),
 //!   [`volume_fraction`] (the solids volume-fraction correction, §4.7);
+//! - [`chute1d`]: a 1-D steady inclined-chute boundary-value solver, the reference of
+//!   issue 7's chute check;
 //! - [`verify`]: the verification problems of the single-phase core.
 #![deny(missing_docs)]
 // Stencil loops index several staggered arrays with the same (i, j); indices read better
 // than zipped iterators there.
 #![allow(clippy::needless_range_loop)]
 
+pub mod chute1d;
 pub mod energy;
 pub mod kinematics;
 pub mod momentum;

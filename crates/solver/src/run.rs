@@ -8,14 +8,18 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use runout_case::{
-    Boundary, Case, Convection, Fidelity, GasWall, Gravity, InitialPressure, OutletPressure,
+    Boundary, Case, Convection, Fidelity, FrictionModel, GasWall, Gravity, InitialPressure,
+    KineticTheory, OutletPressure, SolidsWall,
 };
 use runout_mesh::{Grid, Sides};
 use runout_output::{CellField, CsvSeries, DtStats, OutputError, PvdSeries, RunStatus, RunSummary};
 use runout_walls::RobinFace;
 
+use runout_closures::{ClosureParams, FrictionParams, Gas, Particles};
+
 use crate::single_phase::{Fluid, Settings, SideBc, SinglePhase, SolverError};
 use crate::transport::Scheme;
+use crate::two_fluid::{SolidsSpec, TwoFluid, TwoFluidSettings};
 
 /// Why a case cannot run or stopped.
 #[derive(Debug, thiserror::Error)]
@@ -265,29 +269,463 @@ pub fn single_phase_solver(case: &Case) -> Result<SinglePhase, RunError> {
     Ok(s)
 }
 
-/// Writes the current fields as one time level of the series.
-fn write_fields(
-    series: &mut PvdSeries,
-    s: &SinglePhase,
-    time: f64,
-    velocity: &mut [f64],
-) -> Result<(), OutputError> {
-    s.centre_velocities(velocity);
-    series.push(
-        s.grid(),
-        time,
-        &[
-            CellField::vector("u_g", velocity),
-            CellField::scalar("p_g", &s.p),
-        ],
-    )?;
-    Ok(())
+/// What one time step of a case solver reports to the time loop.
+struct StepReport {
+    converged: bool,
+    iterations: usize,
+    residual: f64,
+    /// the residual breakdown (and locations where known), for a diagnosis
+    detail: String,
+}
+
+/// The time loop's view of a solver: single phase or two-fluid.
+trait CaseSolver {
+    fn step(&mut self, dt: f64, run: &runout_case::RunControl) -> Result<StepReport, RunError>;
+    /// Gravity schedules act here, before each step.
+    fn before_step(&mut self) {}
+    fn write_fields(&mut self, series: &mut PvdSeries, time: f64) -> Result<(), OutputError>;
+    fn profile_header(&self) -> &'static [&'static str];
+    fn profile(&self, x: f64, y: f64) -> Vec<f64>;
+    fn grid(&self) -> &Grid;
+    /// Net continuity imbalance relative to the flow through the domain (0 if no flow).
+    fn mass_imbalance_ratio(&self) -> f64;
+    /// Total solids mass per unit depth [kg m⁻¹] (0 for a single phase).
+    fn solids_mass(&self) -> f64 {
+        0.0
+    }
+    /// (front x, εs-weighted mean solids u) for the bulk monitor, `None` without solids.
+    fn bulk(&self, _threshold: f64) -> Option<(f64, f64)> {
+        None
+    }
+}
+
+struct SinglePhaseCase {
+    solver: SinglePhase,
+    velocity: Vec<f64>,
+}
+
+impl CaseSolver for SinglePhaseCase {
+    fn step(&mut self, dt: f64, run: &runout_case::RunControl) -> Result<StepReport, RunError> {
+        let t = &run.tolerances;
+        let out = self
+            .solver
+            .step(dt, t.residual, t.diverge, t.max_iterations as usize)
+            .map_err(|source| RunError::Solver {
+                case: String::new(),
+                source,
+            })?;
+        let places: Vec<String> = self
+            .solver
+            .locate_residual(&out.last)
+            .iter()
+            .map(|(eq, r, x, y)| format!("{eq} {r:.3e} (largest at x = {x:.4} m, y = {y:.4} m)"))
+            .collect();
+        let history: Vec<String> = out
+            .history
+            .iter()
+            .filter(|h| !h.is_nan())
+            .map(|h| format!("{h:.3e}"))
+            .collect();
+        Ok(StepReport {
+            converged: out.converged,
+            iterations: out.iterations,
+            residual: out.residual,
+            detail: format!(
+                "{}; residual history {}",
+                places.join(", "),
+                history.join(" ")
+            ),
+        })
+    }
+
+    fn write_fields(&mut self, series: &mut PvdSeries, time: f64) -> Result<(), OutputError> {
+        self.solver.centre_velocities(&mut self.velocity);
+        series.push(
+            self.solver.grid(),
+            time,
+            &[
+                CellField::vector("u_g", &self.velocity),
+                CellField::scalar("p_g", &self.solver.p),
+            ],
+        )?;
+        Ok(())
+    }
+
+    fn profile_header(&self) -> &'static [&'static str] {
+        &["y", "u_g", "v_g"]
+    }
+
+    fn profile(&self, x: f64, y: f64) -> Vec<f64> {
+        vec![y, self.solver.u_at(x, y), self.solver.v_at(x, y)]
+    }
+
+    fn grid(&self) -> &Grid {
+        self.solver.grid()
+    }
+
+    fn mass_imbalance_ratio(&self) -> f64 {
+        let g = self.solver.grid();
+        let flow: f64 =
+            self.solver.u.iter().map(|u| u.abs()).sum::<f64>() * g.y.length() / g.ny() as f64;
+        if flow > 0.0 {
+            self.solver.mass_imbalance() / flow
+        } else {
+            0.0
+        }
+    }
+}
+
+/// A two-fluid case: the solver, the gravity schedule and output scratch.
+struct TwoFluidCase {
+    solver: TwoFluid,
+    /// (magnitude, slope in degrees, contact εs) of a tilt-on-impact schedule not yet tilted
+    tilt: Option<(f64, f64, f64)>,
+    scratch: Vec<f64>,
+    scratch2: Vec<f64>,
+}
+
+impl TwoFluidCase {
+    /// Cell-centred (u, v) of face fields, interleaved.
+    fn centre(grid: &Grid, u: &[f64], v: &[f64], out: &mut [f64]) {
+        let (nx, ny) = (grid.nx(), grid.ny());
+        for j in 0..ny {
+            for i in 0..nx {
+                let k = i + nx * j;
+                out[2 * k] = 0.5 * (u[i + (nx + 1) * j] + u[i + 1 + (nx + 1) * j]);
+                out[2 * k + 1] = 0.5 * (v[k] + v[k + nx]);
+            }
+        }
+    }
+}
+
+impl CaseSolver for TwoFluidCase {
+    fn step(&mut self, dt: f64, run: &runout_case::RunControl) -> Result<StepReport, RunError> {
+        let t = &run.tolerances;
+        let out = self
+            .solver
+            .step(
+                dt,
+                t.residual,
+                t.theta_residual,
+                t.diverge,
+                t.max_iterations as usize,
+            )
+            .map_err(|e| RunError::Unsupported {
+                case: String::new(),
+                reason: format!("two-fluid step failed: {e}"),
+            })?;
+        let r = out.last;
+        Ok(StepReport {
+            converged: out.converged,
+            iterations: out.iterations,
+            residual: out.residual,
+            detail: format!(
+                "momentum {:.3e}, gas continuity {:.3e}, solids continuity {:.3e}, granular energy {:.3e}{}",
+                r.momentum,
+                r.gas_mass,
+                r.solids_mass,
+                r.theta,
+                out.failure.map_or(String::new(), |f| format!("; the last try stopped on: {f}"))
+            ),
+        })
+    }
+
+    fn before_step(&mut self) {
+        if let Some((magnitude, slope, contact)) = self.tilt {
+            let nx = self.solver.grid().nx();
+            // impact: solids first reach a floor cell (cases.md, paper Fig. 3)
+            if self
+                .solver
+                .solids
+                .iter()
+                .any(|s| s.eps[..nx].iter().any(|&e| e >= contact))
+            {
+                self.solver.set_gravity(gravity_vector(magnitude, slope));
+                self.tilt = None;
+            }
+        }
+    }
+
+    fn write_fields(&mut self, series: &mut PvdSeries, time: f64) -> Result<(), OutputError> {
+        let grid = self.solver.grid().clone();
+        let s = &self.solver.solids[0];
+        Self::centre(&grid, &self.solver.u_g, &self.solver.v_g, &mut self.scratch);
+        Self::centre(&grid, &s.u, &s.v, &mut self.scratch2);
+        series.push(
+            &grid,
+            time,
+            &[
+                CellField::scalar("eps_s", &s.eps),
+                CellField::vector("u_s", &self.scratch2),
+                CellField::scalar("theta", &s.theta),
+                CellField::scalar("p_s", &s.p_s),
+                CellField::vector("u_g", &self.scratch),
+                CellField::scalar("p_g", &self.solver.p_g),
+            ],
+        )?;
+        Ok(())
+    }
+
+    fn profile_header(&self) -> &'static [&'static str] {
+        &["y", "eps_s", "u_s", "theta"]
+    }
+
+    fn profile(&self, x: f64, y: f64) -> Vec<f64> {
+        let g = self.solver.grid();
+        let nx = g.nx();
+        let (i, j) = g.locate(x, y).unwrap_or((0, 0));
+        let s = &self.solver.solids[0];
+        let k = i + nx * j;
+        let u = 0.5 * (s.u[i + (nx + 1) * j] + s.u[i + 1 + (nx + 1) * j]);
+        vec![y, s.eps[k], u, s.theta[k]]
+    }
+
+    fn grid(&self) -> &Grid {
+        self.solver.grid()
+    }
+
+    fn mass_imbalance_ratio(&self) -> f64 {
+        0.0
+    }
+
+    fn solids_mass(&self) -> f64 {
+        (0..self.solver.solids.len())
+            .map(|m| self.solver.solids_mass(m))
+            .sum()
+    }
+
+    fn bulk(&self, threshold: f64) -> Option<(f64, f64)> {
+        let g = self.solver.grid();
+        let (nx, ny) = (g.nx(), g.ny());
+        let s = &self.solver.solids[0];
+        // front: the largest x whose floor cell has εs ≥ threshold (cases.md family F)
+        let front = (0..nx)
+            .rev()
+            .find(|&i| s.eps[i] >= threshold)
+            .map_or(g.x.start(), |i| g.x.faces()[i + 1]);
+        let (mut num, mut den) = (0.0, 0.0);
+        for j in 0..ny {
+            for i in 0..nx {
+                let k = i + nx * j;
+                let w = s.eps[k] * g.cell_volume(i, j);
+                num += w * 0.5 * (s.u[i + (nx + 1) * j] + s.u[i + 1 + (nx + 1) * j]);
+                den += w;
+            }
+        }
+        Some((front, if den > 0.0 { num / den } else { 0.0 }))
+    }
+}
+
+/// Builds the two-fluid solver of a case with solids, or says what it still lacks.
+pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
+    let unsupported = |reason: String| RunError::Unsupported {
+        case: case.name.clone(),
+        reason,
+    };
+    let gas = case.gas.as_ref().ok_or_else(|| {
+        unsupported("a dry case (no gas) is not supported by the two-fluid solver yet".into())
+    })?;
+    if !matches!(case.models.kinetic_theory, KineticTheory::Lun1984 { .. }) {
+        return Err(unsupported(
+            "only the Lun 1984 kinetic theory with the θ PDE is implemented".into(),
+        ));
+    }
+    if case.models.friction == FrictionModel::Schaeffer {
+        return Err(unsupported(
+            "Schaeffer friction needs the plastic pressure P*, not implemented yet".into(),
+        ));
+    }
+    let grid = case.grid().map_err(|source| RunError::Mesh {
+        case: case.name.clone(),
+        source,
+    })?;
+    let gas_side = |b: &Boundary| match b {
+        Boundary::Wall { gas, .. } => SideBc::Wall(wall_closure(gas)),
+        Boundary::PressureOutlet {
+            pressure: OutletPressure::Uniform(p),
+        } => SideBc::Outlet(*p),
+        Boundary::PressureOutlet {
+            pressure: OutletPressure::Hydrostatic(p0),
+        } => SideBc::HydrostaticOutlet {
+            p0: *p0,
+            density: gas.density,
+        },
+    };
+    let b = &case.boundaries;
+    let gas_walls = Sides {
+        west: gas_side(&b.west),
+        east: gas_side(&b.east),
+        south: gas_side(&b.south),
+        north: gas_side(&b.north),
+    };
+    let solids_side = |b: &Boundary| -> Result<(SideBc, Option<RobinFace>), RunError> {
+        Ok(match b {
+            Boundary::PressureOutlet { .. } => (gas_side(b), None),
+            Boundary::Wall { solids, .. } => match solids {
+                SolidsWall::NoSlip => (
+                    SideBc::Wall(RobinFace::dirichlet(0.0)),
+                    Some(RobinFace::ZERO_GRADIENT),
+                ),
+                SolidsWall::FreeSlip => (
+                    SideBc::Wall(RobinFace::ZERO_GRADIENT),
+                    Some(RobinFace::ZERO_GRADIENT),
+                ),
+                SolidsWall::PartialSlip {
+                    h_u,
+                    u_w,
+                    h_theta,
+                    theta_w,
+                    c,
+                } => (
+                    SideBc::Wall(RobinFace::partial_slip(*h_u, *u_w)),
+                    Some(RobinFace::user_theta(*h_theta, *theta_w, *c)),
+                ),
+                other => {
+                    return Err(unsupported(format!(
+                        "the {} solids wall is not wired into the two-fluid solver yet (issue 7)",
+                        other.label()
+                    )))
+                }
+            },
+        })
+    };
+    let (w, e, s_, n) = (
+        solids_side(&b.west)?,
+        solids_side(&b.east)?,
+        solids_side(&b.south)?,
+        solids_side(&b.north)?,
+    );
+    let specs: Vec<SolidsSpec> = case
+        .solids
+        .iter()
+        .map(|m| SolidsSpec {
+            params: ClosureParams {
+                particles: Particles {
+                    diameter: m.diameter,
+                    density: m.density,
+                    restitution: m.restitution,
+                },
+                gas: Gas {
+                    density: gas.density,
+                    viscosity: gas.viscosity,
+                },
+                friction: FrictionParams::new(
+                    m.max_packing,
+                    m.friction_min_packing,
+                    m.internal_friction_angle,
+                ),
+                radial: case.models.radial_distribution,
+                friction_model: case.models.friction,
+                drag: case.models.drag,
+            },
+            eps_max: m.max_packing,
+            walls: Sides {
+                west: w.0,
+                east: e.0,
+                south: s_.0,
+                north: n.0,
+            },
+            theta_walls: Sides {
+                west: w.1,
+                east: e.1,
+                south: s_.1,
+                north: n.1,
+            },
+        })
+        .collect();
+    let gravity = match case.gravity {
+        Gravity::Constant { magnitude, slope } => gravity_vector(magnitude, slope),
+        Gravity::TiltOnImpact { magnitude, .. } => gravity_vector(magnitude, 0.0),
+    };
+    let r = &case.numerics.relaxation;
+    let settings = TwoFluidSettings {
+        scheme: match case.numerics.convection {
+            Convection::Upwind => Scheme::Upwind,
+            Convection::Superbee => Scheme::Superbee,
+        },
+        relax_velocity: r.velocity,
+        relax_pressure: r.pressure,
+        relax_eps: r.eps_s,
+        relax_theta: r.theta,
+    };
+    let fluid = Fluid {
+        density: gas.density,
+        viscosity: gas.viscosity,
+    };
+    let mut tf = TwoFluid::new(grid.clone(), fluid, gas_walls, specs, gravity, settings)
+        .map_err(|e| unsupported(format!("setting up the two-fluid solver: {e}")))?;
+    // initial state: gas, background θ, then the blocks in order
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let (u0, v0) = case.initial.gas_velocity;
+    tf.u_g.iter_mut().for_each(|u| *u = u0);
+    tf.v_g.iter_mut().for_each(|v| *v = v0);
+    for s in tf.solids.iter_mut() {
+        s.theta
+            .iter_mut()
+            .for_each(|t| *t = case.initial.theta.max(runout_closures::guards::THETA_SMALL));
+    }
+    let (x0, y1) = (grid.x.start(), grid.y.end());
+    for j in 0..ny {
+        for i in 0..nx {
+            let (x, y) = grid.cell_centre(i, j);
+            let k = i + nx * j;
+            tf.p_g[k] = match case.initial.gas_pressure {
+                InitialPressure::Hydrostatic => {
+                    gas.reference_pressure
+                        + gas.density * (gravity.0 * (x - x0) + gravity.1 * (y - y1))
+                }
+                InitialPressure::Uniform(p) => p,
+            };
+            for block in &case.initial.regions {
+                if x >= block.x.0 && x <= block.x.1 && y >= block.y.0 && y <= block.y.1 {
+                    for (s, bs) in tf.solids.iter_mut().zip(&block.solids) {
+                        s.eps[k] = bs.eps_s;
+                        s.theta[k] = bs.theta.max(runout_closures::guards::THETA_SMALL);
+                        for f in [i + (nx + 1) * j, i + 1 + (nx + 1) * j] {
+                            s.u[f] = bs.velocity.0;
+                        }
+                        for f in [k, k + nx] {
+                            s.v[f] = bs.velocity.1;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    // walls: zero normal velocity of every phase
+    for (side, is_wall) in [
+        (0usize, matches!(b.west, Boundary::Wall { .. })),
+        (nx, matches!(b.east, Boundary::Wall { .. })),
+    ] {
+        if is_wall {
+            for j in 0..ny {
+                tf.u_g[side + (nx + 1) * j] = 0.0;
+                tf.solids
+                    .iter_mut()
+                    .for_each(|s| s.u[side + (nx + 1) * j] = 0.0);
+            }
+        }
+    }
+    for (side, is_wall) in [
+        (0usize, matches!(b.south, Boundary::Wall { .. })),
+        (ny, matches!(b.north, Boundary::Wall { .. })),
+    ] {
+        if is_wall {
+            for i in 0..nx {
+                tf.v_g[i + nx * side] = 0.0;
+                tf.solids.iter_mut().for_each(|s| s.v[i + nx * side] = 0.0);
+            }
+        }
+    }
+    tf.sync_volume_fractions();
+    Ok(tf)
 }
 
 /// Runs `case` at `fidelity`, writing into `out_dir`: `fields.pvd` + `.vtr` files at every
-/// output interval, `profile_x<x>_t<t>.csv` for each profile monitor, `resolved.ron` (the
-/// case as run) and `summary.json`. A step that does not converge is retried with a smaller
-/// Δt; below Δt_min the run stops with a diagnosis in the summary and keeps what it wrote.
+/// output interval, `profile_x<x>_t<t>.csv` for each profile monitor, `bulk.csv` for a bulk
+/// monitor (solids mass, front, mean u_s), `resolved.ron` (the case as run) and
+/// `summary.json`. A step that does not converge is retried with a smaller Δt; below Δt_min
+/// the run stops with a diagnosis in the summary and keeps what it wrote.
 pub fn run_case(
     case: &Case,
     fidelity: Fidelity,
@@ -300,7 +738,31 @@ pub fn run_case(
         case: name.clone(),
         source,
     };
-    let mut s = single_phase_solver(&case)?;
+    let mut solver: Box<dyn CaseSolver> = if case.solids.is_empty() {
+        let s = single_phase_solver(&case)?;
+        let n = s.grid().cell_count();
+        Box::new(SinglePhaseCase {
+            solver: s,
+            velocity: vec![0.0; 2 * n],
+        })
+    } else {
+        let tf = two_fluid_solver(&case)?;
+        let n = tf.grid().cell_count();
+        let tilt = match case.gravity {
+            Gravity::TiltOnImpact {
+                magnitude,
+                slope,
+                contact_eps_s,
+            } => Some((magnitude, slope, contact_eps_s)),
+            Gravity::Constant { .. } => None,
+        };
+        Box::new(TwoFluidCase {
+            solver: tf,
+            tilt,
+            scratch: vec![0.0; 2 * n],
+            scratch2: vec![0.0; 2 * n],
+        })
+    };
     std::fs::create_dir_all(out_dir).map_err(|e| {
         out_err(OutputError::Io {
             path: out_dir.to_path_buf(),
@@ -313,10 +775,23 @@ pub fn run_case(
         .map_err(out_err)?;
 
     let started = Instant::now();
-    let grid: Grid = s.grid().clone();
-    let mut velocity = vec![0.0; 2 * grid.cell_count()];
+    let grid: Grid = solver.grid().clone();
     let mut series = PvdSeries::new(out_dir.join("fields.pvd"));
-    write_fields(&mut series, &s, 0.0, &mut velocity).map_err(out_err)?;
+    solver.write_fields(&mut series, 0.0).map_err(out_err)?;
+    let mass0 = solver.solids_mass();
+    let mut bulk = match &case.monitors.bulk {
+        Some(b) if !case.solids.is_empty() => Some((
+            CsvSeries::create(
+                &out_dir.join("bulk.csv"),
+                &["t", "solids_mass", "front_x", "mean_u_s"],
+            )
+            .map_err(out_err)?,
+            b.interval,
+            b.front_threshold,
+            0.0,
+        )),
+        _ => None,
+    };
     let run = &case.run;
     let mut dt = DtController::new(run.dt.initial, run.dt.min, run.dt.max, run.dt.factor);
     let mut summary = RunSummary {
@@ -346,42 +821,29 @@ pub fn run_case(
     let mut next_output = run.output_interval;
     let mut time = 0.0;
     let end = run.end_time;
-    let tol = run.tolerances.residual;
     let max_it = run.tolerances.max_iterations as usize;
     while time < end * (1.0 - 1e-12) {
         let step_dt = dt.dt().min(end - time);
-        let outcome = s
-            .step(step_dt, tol, run.tolerances.diverge, max_it)
-            .map_err(|source| RunError::Solver {
+        solver.before_step();
+        let outcome = solver.step(step_dt, run).map_err(|e| match e {
+            RunError::Solver { source, .. } => RunError::Solver {
                 case: case.name.clone(),
                 source,
-            })?;
+            },
+            RunError::Unsupported { reason, .. } => RunError::Unsupported {
+                case: case.name.clone(),
+                reason,
+            },
+            other => other,
+        })?;
         if !outcome.converged {
             summary.rejected_steps += 1;
             if !dt.failed() {
-                let places: Vec<String> = s
-                    .locate_residual(&outcome.last)
-                    .iter()
-                    .map(|(eq, r, x, y)| {
-                        format!("{eq} {r:.3e} (largest at x = {x:.4} m, y = {y:.4} m)")
-                    })
-                    .collect();
-                let history: Vec<String> = outcome
-                    .history
-                    .iter()
-                    .filter(|h| !h.is_nan())
-                    .map(|h| format!("{h:.3e}"))
-                    .collect();
                 summary.status = RunStatus::Diverged {
                     diagnosis: format!(
                         "the step from t = {time:.6e} s did not converge and dt fell below dt_min = {:.1e} s; \
-                         last try: dt = {step_dt:.3e} s, {} outer iterations, residual sum {:.3e}: {}; \
-                         residual history {}",
-                        run.dt.min,
-                        outcome.iterations,
-                        outcome.residual,
-                        places.join(", "),
-                        history.join(" ")
+                         last try: dt = {step_dt:.3e} s, {} outer iterations, residual sum {:.3e}: {}",
+                        run.dt.min, outcome.iterations, outcome.residual, outcome.detail
                     ),
                 };
                 break;
@@ -394,25 +856,33 @@ pub fn run_case(
         summary.dt.min = summary.dt.min.min(step_dt);
         summary.dt.max = summary.dt.max.max(step_dt);
         summary.dt.mean += step_dt;
-        let flow: f64 =
-            s.u.iter().map(|u| u.abs()).sum::<f64>() * grid.y.length() / grid.ny() as f64;
-        if flow > 0.0 {
-            summary.max_mass_imbalance = summary.max_mass_imbalance.max(s.mass_imbalance() / flow);
-        }
+        summary.max_mass_imbalance = summary
+            .max_mass_imbalance
+            .max(solver.mass_imbalance_ratio());
         dt.converged(step_dt, outcome.iterations, outcome.iterations >= max_it);
         if time >= next_output * (1.0 - 1e-9) || time >= end * (1.0 - 1e-12) {
-            write_fields(&mut series, &s, time, &mut velocity).map_err(out_err)?;
+            solver.write_fields(&mut series, time).map_err(out_err)?;
             while next_output <= time * (1.0 + 1e-9) {
                 next_output += run.output_interval;
+            }
+        }
+        if let Some((csv, interval, threshold, next)) = bulk.as_mut() {
+            if time >= *next * (1.0 - 1e-9) {
+                if let Some((front, mean_u)) = solver.bulk(*threshold) {
+                    csv.push(&[time, solver.solids_mass(), front, mean_u])
+                        .map_err(out_err)?;
+                }
+                while *next <= time * (1.0 + 1e-9) {
+                    *next += *interval;
+                }
             }
         }
         for (x, times, next) in profiles.iter_mut() {
             while *next < times.len() && time >= times[*next] * (1.0 - 1e-9) {
                 let path = out_dir.join(format!("profile_x{x}_t{}.csv", times[*next]));
-                let mut csv = CsvSeries::create(&path, &["y", "u_g", "v_g"]).map_err(out_err)?;
+                let mut csv = CsvSeries::create(&path, solver.profile_header()).map_err(out_err)?;
                 for &y in grid.y.centres() {
-                    csv.push(&[y, s.u_at(*x, y), s.v_at(*x, y)])
-                        .map_err(out_err)?;
+                    csv.push(&solver.profile(*x, y)).map_err(out_err)?;
                 }
                 *next += 1;
             }
@@ -429,6 +899,9 @@ pub fn run_case(
         summary.dt.mean /= summary.steps as f64;
     } else {
         summary.dt.min = 0.0;
+    }
+    if mass0 > 0.0 {
+        summary.solids_mass_change = solver.solids_mass() / mass0 - 1.0;
     }
     summary.simulated_time = time;
     summary.wall_time = started.elapsed().as_secs_f64();

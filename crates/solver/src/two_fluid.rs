@@ -875,6 +875,107 @@ impl TwoFluid {
     }
 }
 
+/// Outcome of [`TwoFluid::step`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct TwoFluidStep {
+    /// outer iterations used
+    pub iterations: usize,
+    /// whether the step converged (if not, the fields were restored)
+    pub converged: bool,
+    /// the residual sum of the last iteration (momentum + normalised continuity)
+    pub residual: f64,
+    /// the residuals of the last iteration
+    pub last: TwoFluidResiduals,
+    /// a linear solver failure that ended the step (the step was undone and may be retried
+    /// with a smaller Δt)
+    pub failure: Option<String>,
+}
+
+impl TwoFluid {
+    /// One implicit-Euler step of size `dt` (model-spec §4.9, §4.11): outer iterations until
+    /// the momentum residuals plus the gas and solids continuity residuals (each relative to
+    /// its first iteration) sum to at most `tol` and the θ residual is at most `tol_theta`,
+    /// after at least two iterations. A step that does not converge within `max_iterations`,
+    /// or whose sum exceeds `diverge`, or that produces a non-finite value, is undone.
+    pub fn step(
+        &mut self,
+        dt: f64,
+        tol: f64,
+        tol_theta: f64,
+        diverge: f64,
+        max_iterations: usize,
+    ) -> Result<TwoFluidStep, TwoFluidError> {
+        self.begin_step();
+        let (mut gas0, mut solids0) = (None, None);
+        let mut out = TwoFluidStep {
+            iterations: 0,
+            converged: false,
+            residual: f64::INFINITY,
+            last: TwoFluidResiduals::default(),
+            failure: None,
+        };
+        for it in 0..max_iterations {
+            out.iterations = it + 1;
+            let r = match self.outer_iteration(dt) {
+                Ok(r) => r,
+                Err(e) => {
+                    out.failure = Some(e.to_string());
+                    break;
+                }
+            };
+            let g = *gas0.get_or_insert(if r.gas_mass > f64::MIN_POSITIVE {
+                r.gas_mass
+            } else {
+                1.0
+            });
+            let s = *solids0.get_or_insert(if r.solids_mass > f64::MIN_POSITIVE {
+                r.solids_mass
+            } else {
+                1.0
+            });
+            out.residual = r.momentum + r.gas_mass / g + r.solids_mass / s;
+            out.last = r;
+            let finite = self
+                .p_g
+                .iter()
+                .chain(&self.u_g)
+                .chain(&self.v_g)
+                .all(|x| x.is_finite())
+                && self.solids.iter().all(|p| {
+                    p.eps
+                        .iter()
+                        .chain(&p.u)
+                        .chain(&p.v)
+                        .chain(&p.theta)
+                        .all(|x| x.is_finite())
+                });
+            if !finite {
+                out.residual = f64::INFINITY;
+                break;
+            }
+            if it >= 1 && out.residual <= tol && r.theta <= tol_theta {
+                out.converged = true;
+                return Ok(out);
+            }
+            if it >= 1 && out.residual >= diverge {
+                break;
+            }
+        }
+        self.restore_step();
+        Ok(out)
+    }
+
+    /// Sets gravity (a schedule may tilt it during a run).
+    pub fn set_gravity(&mut self, gravity: (f64, f64)) {
+        self.gravity = gravity;
+    }
+
+    /// Gravity (g_x, g_y) [m s⁻²].
+    pub fn gravity(&self) -> (f64, f64) {
+        self.gravity
+    }
+}
+
 /// Σ a_nb φ_nb + b of row k (the right-hand side with the current neighbour values).
 fn neighbour_sum(a: &Stencil5, phi: &[f64], k: usize) -> f64 {
     let nx = a.pattern().nx();
