@@ -25,8 +25,8 @@ pub mod run;
 pub mod single_phase;
 pub mod transport;
 pub mod two_fluid;
-pub mod volume_fraction;
 pub mod verify;
+pub mod volume_fraction;
 
 pub use run::{run_case, DtController, Progress, RunError};
 pub use single_phase::{
