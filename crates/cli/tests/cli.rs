@@ -94,8 +94,8 @@ fn run_writes_fields_monitors_and_summary() {
 }
 
 #[test]
-fn run_refuses_a_case_with_a_wall_model_not_yet_wired_before_any_step() {
-    let out = std::env::temp_dir().join(format!("runout-run-tfm-{}", std::process::id()));
+fn run_solves_the_mfix_slide_with_its_johnson_jackson_floor_at_smoke_fidelity() {
+    let out = std::env::temp_dir().join(format!("runout-run-m-{}", std::process::id()));
     let o = runout(&[
         "run",
         "cases/mfix/M-slide.ron",
@@ -105,10 +105,43 @@ fn run_refuses_a_case_with_a_wall_model_not_yet_wired_before_any_step() {
         "--out",
         out.to_str().unwrap(),
     ]);
+    assert!(o.status.success(), "{}", text(&o));
+    let summary = std::fs::read_to_string(out.join("summary.json")).unwrap();
+    assert!(summary.contains("\"Completed\""), "{summary}");
+    assert!(
+        std::fs::read_to_string(out.join("bulk.csv"))
+            .unwrap()
+            .lines()
+            .count()
+            > 2
+    );
+}
+
+#[test]
+fn run_refuses_what_the_two_fluid_solver_lacks_before_any_step() {
+    let dir = std::env::temp_dir().join(format!("runout-run-schaeffer-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let text0 = std::fs::read_to_string(root().join("cases/mfix/M-slide.ron")).unwrap();
+    let schaeffer = text0.replacen("friction: Princeton,", "friction: Schaeffer,", 1);
+    assert_ne!(schaeffer, text0);
+    let case = dir.join("schaeffer.ron");
+    std::fs::write(&case, schaeffer).unwrap();
+    let out = dir.join("out");
+    let o = runout(&[
+        "run",
+        case.to_str().unwrap(),
+        "--fidelity",
+        "smoke",
+        "--quiet",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
     assert_eq!(o.status.code(), Some(1));
     let t = text(&o);
-    // the two-fluid solver does not have the Johnson–Jackson floor of this case yet
-    assert!(t.contains("not wired into the two-fluid solver yet"), "{t}");
+    assert!(
+        t.contains("Schaeffer friction needs the plastic pressure"),
+        "{t}"
+    );
     assert!(!out.join("summary.json").exists());
 }
 

@@ -14,6 +14,7 @@ use runout_linsolve::Stencil5;
 use runout_mesh::{Grid, Sides};
 use runout_walls::RobinFace;
 
+use crate::momentum::WallFaces;
 use crate::transport::{assemble, FaceData, Scheme};
 
 /// Per-cell inputs of the granular-energy equation, evaluated by the caller from the
@@ -45,12 +46,14 @@ pub struct EnergyInputs<'a> {
 }
 
 /// Assembles the θ equation (without relaxation) into `a`, given the solids face velocities
-/// `u` ((nx+1) × ny) and `v` (nx × (ny+1)), the old θ, the wall closures per side and Δt.
+/// `u` ((nx+1) × ny) and `v` (nx × (ny+1)), the old θ, the wall closures per side (with
+/// per-cell overrides in `wall_cells`, e.g. Johnson–Jackson, model-spec §3.6) and Δt.
 #[allow(clippy::too_many_arguments)]
 pub fn assemble_theta(
     grid: &Grid,
     inputs: &EnergyInputs<'_>,
     walls: &Sides<Option<RobinFace>>,
+    wall_cells: Option<&WallFaces>,
     u: &[f64],
     v: &[f64],
     theta_old: &[f64],
@@ -94,11 +97,36 @@ pub fn assemble_theta(
             let k = i + nx * j;
             let volume = dx[i] * dy[j];
             // wall faces: θ closure with the fluid cell's conductivity (model-spec §3.1)
+            let cell_face =
+                |side: &Option<RobinFace>, over: Option<&Vec<RobinFace>>, pos: usize| {
+                    over.map(|f| f[pos]).or(*side)
+                };
+            let over = wall_cells;
             for (present, face, delta, area) in [
-                (i == 0, &walls.west, dx[i], dy[j]),
-                (i == nx - 1, &walls.east, dx[i], dy[j]),
-                (j == 0, &walls.south, dy[j], dx[i]),
-                (j == ny - 1, &walls.north, dy[j], dx[i]),
+                (
+                    i == 0,
+                    cell_face(&walls.west, over.and_then(|w| w.west.as_ref()), j),
+                    dx[i],
+                    dy[j],
+                ),
+                (
+                    i == nx - 1,
+                    cell_face(&walls.east, over.and_then(|w| w.east.as_ref()), j),
+                    dx[i],
+                    dy[j],
+                ),
+                (
+                    j == 0,
+                    cell_face(&walls.south, over.and_then(|w| w.south.as_ref()), i),
+                    dy[j],
+                    dx[i],
+                ),
+                (
+                    j == ny - 1,
+                    cell_face(&walls.north, over.and_then(|w| w.north.as_ref()), i),
+                    dy[j],
+                    dx[i],
+                ),
             ] {
                 if let (true, Some(face)) = (present, face) {
                     let (ap, b) = face.implicit_parts(kappa[k], delta);

@@ -21,6 +21,7 @@
 
 use runout_linsolve::Stencil5;
 use runout_mesh::{Grid, Sides};
+use runout_walls::RobinFace;
 
 use crate::single_phase::SideBc;
 use crate::transport::{assemble, FaceData, Scheme};
@@ -40,6 +41,30 @@ pub struct PhaseFields<'a> {
     pub solids_pressure: Option<&'a [f64]>,
 }
 
+/// Per-node wall closures that replace a side's single [`SideBc`] (wall models whose
+/// coefficients depend on the local state: Johnson–Jackson, Jenkins, model-spec §3.5). For
+/// momentum: `south`/`north` hold one closure per u-node (nx + 1), `west`/`east` one per
+/// v-node (ny + 1); for granular energy one per boundary cell (nx or ny).
+#[derive(Clone, Debug, Default)]
+pub struct WallFaces {
+    /// closures along the west side
+    pub west: Option<Vec<RobinFace>>,
+    /// closures along the east side
+    pub east: Option<Vec<RobinFace>>,
+    /// closures along the south side (the floor)
+    pub south: Option<Vec<RobinFace>>,
+    /// closures along the north side
+    pub north: Option<Vec<RobinFace>>,
+}
+
+/// The closure at position `k` along `side`: the per-node one if given, else the side's.
+fn side_closure(bc: &SideBc, faces: Option<&Vec<RobinFace>>, k: usize) -> SideBc {
+    match faces {
+        Some(f) => SideBc::Wall(f[k]),
+        None => *bc,
+    }
+}
+
 /// What every phase's momentum assembly shares.
 #[derive(Clone, Copy, Debug)]
 pub struct Context<'a> {
@@ -55,6 +80,8 @@ pub struct Context<'a> {
     pub scheme: Scheme,
     /// gas pressure at cell centres [Pa]
     pub gas_pressure: &'a [f64],
+    /// per-node wall closures overriding `bcs` on the sides they cover
+    pub wall_faces: Option<&'a WallFaces>,
 }
 
 /// Width of the u control volume at x-face i: centre to centre inside, half a cell at the
@@ -239,11 +266,14 @@ pub fn assemble_u(
                     (None, None) => 0.0,
                 }
             };
+            let over = ctx.wall_faces;
             if j == 0 {
-                add_wall_face(a, k, &ctx.bcs.south, mu_wall(0), dy[0], width);
+                let bc = side_closure(&ctx.bcs.south, over.and_then(|w| w.south.as_ref()), i);
+                add_wall_face(a, k, &bc, mu_wall(0), dy[0], width);
             }
             if j == ny - 1 {
-                add_wall_face(a, k, &ctx.bcs.north, mu_wall(ny - 1), dy[ny - 1], width);
+                let bc = side_closure(&ctx.bcs.north, over.and_then(|w| w.north.as_ref()), i);
+                add_wall_face(a, k, &bc, mu_wall(ny - 1), dy[ny - 1], width);
             }
             // transient (implicit Euler, model-spec §4.3–4.4)
             let a0 = (half_volume(west, phase.bulk_density_old)
@@ -361,11 +391,14 @@ pub fn assemble_v(
                     (None, None) => 0.0,
                 }
             };
+            let over = ctx.wall_faces;
             if i == 0 {
-                add_wall_face(a, k, &ctx.bcs.west, mu_wall(0), dx[0], height);
+                let bc = side_closure(&ctx.bcs.west, over.and_then(|w| w.west.as_ref()), j);
+                add_wall_face(a, k, &bc, mu_wall(0), dx[0], height);
             }
             if i == nx - 1 {
-                add_wall_face(a, k, &ctx.bcs.east, mu_wall(nx - 1), dx[nx - 1], height);
+                let bc = side_closure(&ctx.bcs.east, over.and_then(|w| w.east.as_ref()), j);
+                add_wall_face(a, k, &bc, mu_wall(nx - 1), dx[nx - 1], height);
             }
             let a0 = (half_volume(south, phase.bulk_density_old)
                 + half_volume(north, phase.bulk_density_old))

@@ -13,7 +13,7 @@ use runout_case::{
 };
 use runout_mesh::{Grid, Sides};
 use runout_output::{CellField, CsvSeries, DtStats, OutputError, PvdSeries, RunStatus, RunSummary};
-use runout_walls::RobinFace;
+use runout_walls::{RobinFace, SolidsWallModel};
 
 use runout_closures::{ClosureParams, FrictionParams, Gas, Particles};
 
@@ -558,17 +558,30 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
         south: gas_side(&b.south),
         north: gas_side(&b.north),
     };
-    let solids_side = |b: &Boundary| -> Result<(SideBc, Option<RobinFace>), RunError> {
+    // (tangential closure, θ closure, state-dependent model) of each side for the solids
+    type SolidsSide = (SideBc, Option<RobinFace>, Option<SolidsWallModel>);
+    let solids_side = |b: &Boundary| -> Result<SolidsSide, RunError> {
+        let model_err = |e: runout_walls::WallError| unsupported(format!("wall model: {e}"));
+        // placeholders that the per-face closures of a state-dependent model replace
+        let by_model = |m: SolidsWallModel| {
+            (
+                SideBc::Wall(RobinFace::ZERO_GRADIENT),
+                Some(RobinFace::ZERO_GRADIENT),
+                Some(m),
+            )
+        };
         Ok(match b {
-            Boundary::PressureOutlet { .. } => (gas_side(b), None),
+            Boundary::PressureOutlet { .. } => (gas_side(b), None, None),
             Boundary::Wall { solids, .. } => match solids {
                 SolidsWall::NoSlip => (
                     SideBc::Wall(RobinFace::dirichlet(0.0)),
                     Some(RobinFace::ZERO_GRADIENT),
+                    None,
                 ),
                 SolidsWall::FreeSlip => (
                     SideBc::Wall(RobinFace::ZERO_GRADIENT),
                     Some(RobinFace::ZERO_GRADIENT),
+                    None,
                 ),
                 SolidsWall::PartialSlip {
                     h_u,
@@ -579,13 +592,44 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
                 } => (
                     SideBc::Wall(RobinFace::partial_slip(*h_u, *u_w)),
                     Some(RobinFace::user_theta(*h_theta, *theta_w, *c)),
+                    None,
                 ),
-                other => {
-                    return Err(unsupported(format!(
-                        "the {} solids wall is not wired into the two-fluid solver yet (issue 7)",
-                        other.label()
-                    )))
-                }
+                SolidsWall::JohnsonJackson {
+                    specularity,
+                    wall_restitution,
+                    wall_friction_angle,
+                    u_w,
+                } => by_model(
+                    SolidsWallModel::johnson_jackson(
+                        *specularity,
+                        *wall_restitution,
+                        *wall_friction_angle,
+                        *u_w,
+                    )
+                    .map_err(model_err)?,
+                ),
+                SolidsWall::RevisitedJohnsonJackson {
+                    wall_restitution,
+                    wall_friction_angle,
+                    phi0,
+                    u_w,
+                } => by_model(
+                    SolidsWallModel::revisited_johnson_jackson(
+                        *wall_restitution,
+                        *wall_friction_angle,
+                        *phi0,
+                        *u_w,
+                    )
+                    .map_err(model_err)?,
+                ),
+                SolidsWall::Jenkins {
+                    wall_restitution,
+                    wall_friction_angle,
+                    u_w,
+                } => by_model(
+                    SolidsWallModel::jenkins(*wall_restitution, *wall_friction_angle, *u_w)
+                        .map_err(model_err)?,
+                ),
             },
         })
     };
@@ -630,6 +674,12 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
                 east: e.1,
                 south: s_.1,
                 north: n.1,
+            },
+            wall_models: Sides {
+                west: w.2,
+                east: e.2,
+                south: s_.2,
+                north: n.2,
             },
         })
         .collect();

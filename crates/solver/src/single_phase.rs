@@ -388,6 +388,7 @@ impl SinglePhase {
             dt,
             scheme: self.settings.scheme,
             gas_pressure: &self.p,
+            wall_faces: None,
         };
         let phase = PhaseFields {
             bulk_density: &self.density_cells,
@@ -438,6 +439,7 @@ impl SinglePhase {
             dt,
             scheme: self.settings.scheme,
             gas_pressure: &self.p,
+            wall_faces: None,
         };
         let phase = PhaseFields {
             bulk_density: &self.density_cells,

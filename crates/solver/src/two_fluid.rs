@@ -19,12 +19,12 @@
 
 use runout_closures::{evaluate, CellState, ClosureParams};
 use runout_linsolve::{build, LinSolveError, LinearSolver, LinearSolverKind, Pattern, Stencil5};
-use runout_mesh::{Grid, Sides};
-use runout_walls::RobinFace;
+use runout_mesh::{Grid, Side, Sides};
+use runout_walls::{MomentumWallState, RobinFace, SolidsWallModel, ThetaWallState};
 
 use crate::energy::{assemble_theta, EnergyInputs};
 use crate::kinematics::{strain_rates, Strain, WallVelocities};
-use crate::momentum::{assemble_u, assemble_v, fixed_row, Context, PhaseFields};
+use crate::momentum::{assemble_u, assemble_v, fixed_row, Context, PhaseFields, WallFaces};
 use crate::pea::eliminate_node;
 use crate::single_phase::{Fluid, SideBc};
 use crate::transport::{FaceData, Scheme};
@@ -47,6 +47,10 @@ pub struct SolidsSpec {
     pub walls: Sides<SideBc>,
     /// θ closure on each wall side (`None` on an outlet)
     pub theta_walls: Sides<Option<RobinFace>>,
+    /// state-dependent wall models (Johnson–Jackson, revisited JJ, Jenkins) per side; where
+    /// given they replace `walls` and `theta_walls` with per-face closures each outer
+    /// iteration (model-spec §3.5, §3.6, §3.8)
+    pub wall_models: Sides<Option<SolidsWallModel>>,
 }
 
 /// Iteration settings (MFIX defaults, model-spec §4.10).
@@ -115,6 +119,12 @@ pub struct SolidsFields {
     a_v: Stencil5,
     a_eps: Stencil5,
     a_theta: Stencil5,
+    /// per-node momentum closures of the state-dependent walls
+    wall_velocity: WallFaces,
+    /// per-cell θ closures of the state-dependent walls
+    wall_theta: WallFaces,
+    /// h_w^u of the last floor evaluation per u-node (the wall probe of paper Fig. 9)
+    pub floor_h_u: Vec<f64>,
 }
 
 /// Normalised residuals of one outer iteration (model-spec §4.11).
@@ -278,6 +288,9 @@ impl TwoFluid {
                 a_v: Stencil5::new(pv.clone()),
                 a_eps: Stencil5::new(pc.clone()),
                 a_theta: Stencil5::new(pc.clone()),
+                wall_velocity: WallFaces::default(),
+                wall_theta: WallFaces::default(),
+                floor_h_u: vec![0.0; nx + 1],
             })
             .collect();
         Ok(TwoFluid {
@@ -419,9 +432,144 @@ impl TwoFluid {
         }
     }
 
+    /// Per-face closures of the state-dependent walls from the current iterate (lagged one
+    /// outer iteration, model-spec §3.5 last line). The near-wall state is gathered as
+    /// model-spec §3.5/§3.6 describe, with two simplifications of this first version: the
+    /// ghost-row θ is taken equal to the fluid row's, and the slip is that of the previous
+    /// closure's face value.
+    fn update_walls(&mut self) {
+        let grid = &self.grid;
+        let (nx, ny) = (grid.nx(), grid.ny());
+        let (dx, dy) = (grid.x.widths(), grid.y.widths());
+        for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
+            for side in [Side::West, Side::East, Side::South, Side::North] {
+                let Some(model) = spec.wall_models.get(side) else {
+                    continue;
+                };
+                let u_w = model.wall_velocity();
+                // along a south/north wall the tangential component is u (nodes i = 0..=nx,
+                // cells i−1 and i of the wall row); along west/east it is v
+                let horizontal = matches!(side, Side::South | Side::North);
+                let (nodes, row) = match side {
+                    Side::South => (nx + 1, 0),
+                    Side::North => (nx + 1, ny - 1),
+                    Side::West => (ny + 1, 0),
+                    Side::East => (ny + 1, nx - 1),
+                };
+                let cell = |along: usize| {
+                    if horizontal {
+                        along + nx * row
+                    } else {
+                        row + nx * along
+                    }
+                };
+                let n_cells = if horizontal { nx } else { ny };
+                let delta = if horizontal { dy[row] } else { dx[row] };
+                let previous = match side {
+                    Side::West => s.wall_velocity.west.take(),
+                    Side::East => s.wall_velocity.east.take(),
+                    Side::South => s.wall_velocity.south.take(),
+                    Side::North => s.wall_velocity.north.take(),
+                };
+                let mut faces = Vec::with_capacity(nodes);
+                for k in 0..nodes {
+                    let cells: Vec<usize> = [k.checked_sub(1), (k < n_cells).then_some(k)]
+                        .into_iter()
+                        .flatten()
+                        .map(cell)
+                        .collect();
+                    let mean =
+                        |f: &[f64]| cells.iter().map(|&c| f[c]).sum::<f64>() / cells.len() as f64;
+                    let (vel, gas_vel) = if horizontal {
+                        (s.u[k + (nx + 1) * row], self.u_g[k + (nx + 1) * row])
+                    } else {
+                        (s.v[row + nx * k], self.v_g[row + nx * k])
+                    };
+                    let face_vel = previous
+                        .as_ref()
+                        .map_or(vel, |p: &Vec<RobinFace>| p[k].face_value(vel, delta));
+                    let strain = |c: usize| s.strain[c];
+                    let tr_d =
+                        cells.iter().map(|&c| strain(c).tr_d).sum::<f64>() / cells.len() as f64;
+                    let s_ddot_s =
+                        cells.iter().map(|&c| strain(c).s_ddot_s).sum::<f64>() / cells.len() as f64;
+                    // normal–normal deviatoric strain: D_nn − tr D/3 with D_nn from the cells
+                    let d_nn = cells
+                        .iter()
+                        .map(|&c| {
+                            let (i, j) = (c % nx, c / nx);
+                            if horizontal {
+                                (s.v[i + nx * (j + 1)] - s.v[i + nx * j]) / dy[j]
+                            } else {
+                                (s.u[i + 1 + (nx + 1) * j] - s.u[i + (nx + 1) * j]) / dx[i]
+                            }
+                        })
+                        .sum::<f64>()
+                        / cells.len() as f64;
+                    let eps = mean(&s.eps);
+                    let state = MomentumWallState {
+                        eps_s_fluid: eps,
+                        eps_s: eps,
+                        theta: mean(&s.theta),
+                        slip: (face_vel - u_w).abs(),
+                        gas_slip: (gas_vel - vel).abs(),
+                        tr_d,
+                        s_ddot_s,
+                        s_nn: d_nn - tr_d / 3.0,
+                    };
+                    let wall = model.momentum(&state, &spec.params);
+                    if side == Side::South {
+                        s.floor_h_u[k] = wall.diagnostics.h_u;
+                    }
+                    faces.push(wall.face);
+                }
+                let mut theta_faces = Vec::with_capacity(n_cells);
+                for along in 0..n_cells {
+                    let c = cell(along);
+                    let (i, j) = (c % nx, c / nx);
+                    let (vel, gas_vel) = if horizontal {
+                        (
+                            0.5 * (s.u[i + (nx + 1) * j] + s.u[i + 1 + (nx + 1) * j]),
+                            0.5 * (self.u_g[i + (nx + 1) * j] + self.u_g[i + 1 + (nx + 1) * j]),
+                        )
+                    } else {
+                        (
+                            0.5 * (s.v[c] + s.v[c + nx]),
+                            0.5 * (self.v_g[c] + self.v_g[c + nx]),
+                        )
+                    };
+                    let state = ThetaWallState {
+                        eps_s: s.eps[c],
+                        theta: s.theta[c],
+                        slip: (vel - u_w).abs(),
+                        gas_slip: (gas_vel - vel).abs(),
+                    };
+                    theta_faces.push(model.granular_temperature(&state, &spec.params).face);
+                }
+                match side {
+                    Side::West => {
+                        (s.wall_velocity.west, s.wall_theta.west) = (Some(faces), Some(theta_faces))
+                    }
+                    Side::East => {
+                        (s.wall_velocity.east, s.wall_theta.east) = (Some(faces), Some(theta_faces))
+                    }
+                    Side::South => {
+                        (s.wall_velocity.south, s.wall_theta.south) =
+                            (Some(faces), Some(theta_faces))
+                    }
+                    Side::North => {
+                        (s.wall_velocity.north, s.wall_theta.north) =
+                            (Some(faces), Some(theta_faces))
+                    }
+                }
+            }
+        }
+    }
+
     /// One outer iteration with time step `dt`.
     pub fn outer_iteration(&mut self, dt: f64) -> Result<TwoFluidResiduals, TwoFluidError> {
         self.update_closures();
+        self.update_walls();
         let momentum = self.momentum(dt)?;
         let solids_mass = self.volume_fraction_correction(dt)?;
         let gas_mass = self.pressure_correction(dt)?;
@@ -448,6 +596,7 @@ impl TwoFluid {
             dt,
             scheme,
             gas_pressure: &self.p_g,
+            wall_faces: None,
         };
         let gas_fields = PhaseFields {
             bulk_density: &self.rho_eps_g,
@@ -482,6 +631,7 @@ impl TwoFluid {
                 dt,
                 scheme,
                 gas_pressure: &self.p_g,
+                wall_faces: Some(&s.wall_velocity),
             };
             let fields = PhaseFields {
                 bulk_density: &s.rho_eps,
@@ -832,6 +982,7 @@ impl TwoFluid {
                 &self.grid,
                 &inputs,
                 &spec.theta_walls,
+                Some(&s.wall_theta),
                 &s.u,
                 &s.v,
                 &s.theta_old,

@@ -58,6 +58,7 @@ fn two_layer_couette_is_exact() {
         dt: f64::INFINITY,
         scheme: Scheme::Superbee,
         gas_pressure: &pressure,
+        wall_faces: None,
     };
     let phase = PhaseFields {
         bulk_density: &ones,

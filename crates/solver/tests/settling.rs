@@ -56,6 +56,12 @@ fn column(steps: usize, dt: f64, verbose: bool) -> (TwoFluid, f64) {
             south: zero_flux,
             north: zero_flux,
         },
+        wall_models: Sides {
+            west: None,
+            east: None,
+            south: None,
+            north: None,
+        },
     };
     let gas_walls = Sides {
         west: free_slip,
