@@ -115,6 +115,12 @@ fn run_solves_the_mfix_slide_with_its_johnson_jackson_floor_at_smoke_fidelity() 
             .count()
             > 2
     );
+    // the wall probe of the Johnson–Jackson floor (paper Fig. 9's h_w^u over time)
+    let probe = std::fs::read_to_string(out.join("wall_probe_south_x1.csv")).unwrap();
+    assert!(
+        probe.starts_with("t,h_w_u") && probe.lines().count() > 2,
+        "{probe}"
+    );
 }
 
 #[test]

@@ -297,6 +297,11 @@ trait CaseSolver {
     fn bulk(&self, _threshold: f64) -> Option<(f64, f64)> {
         None
     }
+    /// h_w^u of the floor's velocity node nearest to `x` (the wall probe of paper Fig. 9),
+    /// `None` where the floor has no state-dependent wall model.
+    fn floor_h_u(&self, _x: f64) -> Option<f64> {
+        None
+    }
 }
 
 struct SinglePhaseCase {
@@ -492,6 +497,15 @@ impl CaseSolver for TwoFluidCase {
         (0..self.solver.solids.len())
             .map(|m| self.solver.solids_mass(m))
             .sum()
+    }
+
+    fn floor_h_u(&self, x: f64) -> Option<f64> {
+        let faces = self.solver.grid().x.faces();
+        let k = (0..faces.len())
+            .min_by(|&a, &b| (faces[a] - x).abs().total_cmp(&(faces[b] - x).abs()))?;
+        self.solver
+            .has_floor_model(0)
+            .then(|| self.solver.solids[0].floor_h_u[k])
     }
 
     fn bulk(&self, threshold: f64) -> Option<(f64, f64)> {
@@ -842,6 +856,28 @@ pub fn run_case(
         )),
         _ => None,
     };
+    // wall probes (floor only in this version) and the front tracker
+    let mut probes = Vec::new();
+    for p in &case.monitors.wall_probes {
+        if p.side == runout_mesh::Side::South && !case.solids.is_empty() {
+            let path = out_dir.join(format!("wall_probe_south_x{}.csv", p.at));
+            probes.push((
+                CsvSeries::create(&path, &["t", "h_w_u"]).map_err(out_err)?,
+                p.at,
+                p.interval,
+                0.0,
+            ));
+        }
+    }
+    let mut front = match &case.monitors.front {
+        Some(f) if !case.solids.is_empty() => Some((
+            CsvSeries::create(&out_dir.join("front.csv"), &["t", "front_x"]).map_err(out_err)?,
+            f.clone(),
+            0.0,
+            Vec::<(f64, f64)>::new(),
+        )),
+        _ => None,
+    };
     let run = &case.run;
     let mut dt = DtController::new(run.dt.initial, run.dt.min, run.dt.max, run.dt.factor);
     let mut summary = RunSummary {
@@ -927,6 +963,27 @@ pub fn run_case(
                 }
             }
         }
+        for (csv, at, interval, next) in probes.iter_mut() {
+            if time >= *next * (1.0 - 1e-9) {
+                if let Some(h) = solver.floor_h_u(*at) {
+                    csv.push(&[time, h]).map_err(out_err)?;
+                }
+                while *next <= time * (1.0 + 1e-9) {
+                    *next += *interval;
+                }
+            }
+        }
+        if let Some((csv, tracker, next, series)) = front.as_mut() {
+            if time >= *next * (1.0 - 1e-9) {
+                if let Some((x, _)) = solver.bulk(tracker.threshold) {
+                    csv.push(&[time, x]).map_err(out_err)?;
+                    series.push((time, x));
+                }
+                while *next <= time * (1.0 + 1e-9) {
+                    *next += tracker.interval;
+                }
+            }
+        }
         for (x, times, next) in profiles.iter_mut() {
             while *next < times.len() && time >= times[*next] * (1.0 - 1e-9) {
                 let path = out_dir.join(format!("profile_x{x}_t{}.csv", times[*next]));
@@ -945,6 +1002,9 @@ pub fn run_case(
             steps: summary.steps,
         });
     }
+    if let Some((_, tracker, _, series)) = &front {
+        write_gate_speeds(&out_dir.join("gates.csv"), tracker, series).map_err(out_err)?;
+    }
     if summary.steps > 0 {
         summary.dt.mean /= summary.steps as f64;
     } else {
@@ -962,6 +1022,34 @@ pub fn run_case(
         .write_json(&out_dir.join("summary.json"))
         .map_err(out_err)?;
     Ok(summary)
+}
+
+/// Front speed at each gate (cases.md family F): at the first sample whose front has passed
+/// the gate, the slope of the front position over the two samples on either side (a
+/// central difference over up to four sampling intervals). Gates the front never reached
+/// get no speed.
+fn write_gate_speeds(
+    path: &Path,
+    tracker: &runout_case::FrontTracker,
+    series: &[(f64, f64)],
+) -> Result<(), OutputError> {
+    let mut csv = CsvSeries::create(path, &["gate", "x", "t_cross", "speed"])?;
+    for (g, distance) in tracker.gates.iter().enumerate() {
+        let x_gate = tracker.gate_origin + distance;
+        let Some(k) = series.iter().position(|&(_, x)| x >= x_gate) else {
+            continue;
+        };
+        let (lo, hi) = (k.saturating_sub(2), (k + 2).min(series.len() - 1));
+        let speed = if series[hi].0 > series[lo].0 {
+            (series[hi].1 - series[lo].1) / (series[hi].0 - series[lo].0)
+        } else {
+            f64::NAN
+        };
+        if speed.is_finite() {
+            csv.push(&[(g + 1) as f64, x_gate, series[k].0, speed])?;
+        }
+    }
+    Ok(())
 }
 
 /// The default output folder of a case: `runs/<case>/<fidelity>`.

@@ -1125,6 +1125,12 @@ impl TwoFluid {
         self.gravity = gravity;
     }
 
+    /// Whether solids phase `m` has a state-dependent model (JJ, revisited JJ, Jenkins) on
+    /// the floor, i.e. whether `floor_h_u` is meaningful.
+    pub fn has_floor_model(&self, m: usize) -> bool {
+        self.solids_specs[m].wall_models.south.is_some()
+    }
+
     /// Gravity (g_x, g_y) [m s⁻²].
     pub fn gravity(&self) -> (f64, f64) {
         self.gravity
