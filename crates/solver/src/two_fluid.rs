@@ -140,9 +140,16 @@ pub struct TwoFluidResiduals {
     pub theta: f64,
 }
 
+/// Largest number of solids phases (the per-node partial-elimination work arrays are fixed
+/// size, so the momentum loop allocates nothing).
+pub const MAX_SOLIDS_PHASES: usize = 7;
+
 /// Errors of the two-fluid solver.
 #[derive(Debug, thiserror::Error)]
 pub enum TwoFluidError {
+    /// More solids phases than [`MAX_SOLIDS_PHASES`].
+    #[error("{0} solids phases: at most {MAX_SOLIDS_PHASES} are supported")]
+    TooManyPhases(usize),
     /// A linear solve failed.
     #[error("{equation}: {source}")]
     Linear {
@@ -213,6 +220,9 @@ impl TwoFluid {
         gravity: (f64, f64),
         settings: TwoFluidSettings,
     ) -> Result<Self, TwoFluidError> {
+        if solids_specs.len() > MAX_SOLIDS_PHASES {
+            return Err(TwoFluidError::TooManyPhases(solids_specs.len()));
+        }
         let (nx, ny) = (grid.nx(), grid.ny());
         let n = nx * ny;
         let outlet = |b: &SideBc| !matches!(b, SideBc::Wall(_));
@@ -465,38 +475,39 @@ impl TwoFluid {
                 };
                 let n_cells = if horizontal { nx } else { ny };
                 let delta = if horizontal { dy[row] } else { dx[row] };
-                let previous = match side {
-                    Side::West => s.wall_velocity.west.take(),
-                    Side::East => s.wall_velocity.east.take(),
-                    Side::South => s.wall_velocity.south.take(),
-                    Side::North => s.wall_velocity.north.take(),
+                // reuse last iteration's closures (allocated on first use only): each node
+                // reads its previous face value for the lagged slip, then is overwritten; a
+                // first evaluation starts from zero gradient, whose face value is the fluid's
+                let (velocity_slot, theta_slot) = match side {
+                    Side::West => (&mut s.wall_velocity.west, &mut s.wall_theta.west),
+                    Side::East => (&mut s.wall_velocity.east, &mut s.wall_theta.east),
+                    Side::South => (&mut s.wall_velocity.south, &mut s.wall_theta.south),
+                    Side::North => (&mut s.wall_velocity.north, &mut s.wall_theta.north),
                 };
-                let mut faces = Vec::with_capacity(nodes);
+                let mut faces = velocity_slot
+                    .take()
+                    .unwrap_or_else(|| vec![RobinFace::ZERO_GRADIENT; nodes]);
+                let mut theta_faces = theta_slot
+                    .take()
+                    .unwrap_or_else(|| vec![RobinFace::ZERO_GRADIENT; n_cells]);
                 for k in 0..nodes {
-                    let cells: Vec<usize> = [k.checked_sub(1), (k < n_cells).then_some(k)]
-                        .into_iter()
-                        .flatten()
-                        .map(cell)
-                        .collect();
-                    let mean =
-                        |f: &[f64]| cells.iter().map(|&c| f[c]).sum::<f64>() / cells.len() as f64;
+                    let pair = [k.checked_sub(1), (k < n_cells).then_some(k)];
+                    let cells = pair.iter().flatten().map(|&a| cell(a));
+                    let count = pair.iter().flatten().count() as f64;
+                    let mean = |f: &[f64]| cells.clone().map(|c| f[c]).sum::<f64>() / count;
                     let (vel, gas_vel) = if horizontal {
                         (s.u[k + (nx + 1) * row], self.u_g[k + (nx + 1) * row])
                     } else {
                         (s.v[row + nx * k], self.v_g[row + nx * k])
                     };
-                    let face_vel = previous
-                        .as_ref()
-                        .map_or(vel, |p: &Vec<RobinFace>| p[k].face_value(vel, delta));
+                    let face_vel = faces[k].face_value(vel, delta);
                     let strain = |c: usize| s.strain[c];
-                    let tr_d =
-                        cells.iter().map(|&c| strain(c).tr_d).sum::<f64>() / cells.len() as f64;
-                    let s_ddot_s =
-                        cells.iter().map(|&c| strain(c).s_ddot_s).sum::<f64>() / cells.len() as f64;
+                    let tr_d = cells.clone().map(|c| strain(c).tr_d).sum::<f64>() / count;
+                    let s_ddot_s = cells.clone().map(|c| strain(c).s_ddot_s).sum::<f64>() / count;
                     // normal–normal deviatoric strain: D_nn − tr D/3 with D_nn from the cells
                     let d_nn = cells
-                        .iter()
-                        .map(|&c| {
+                        .clone()
+                        .map(|c| {
                             let (i, j) = (c % nx, c / nx);
                             if horizontal {
                                 (s.v[i + nx * (j + 1)] - s.v[i + nx * j]) / dy[j]
@@ -505,7 +516,7 @@ impl TwoFluid {
                             }
                         })
                         .sum::<f64>()
-                        / cells.len() as f64;
+                        / count;
                     let eps = mean(&s.eps);
                     let state = MomentumWallState {
                         eps_s_fluid: eps,
@@ -521,9 +532,8 @@ impl TwoFluid {
                     if side == Side::South {
                         s.floor_h_u[k] = wall.diagnostics.h_u;
                     }
-                    faces.push(wall.face);
+                    faces[k] = wall.face;
                 }
-                let mut theta_faces = Vec::with_capacity(n_cells);
                 for along in 0..n_cells {
                     let c = cell(along);
                     let (i, j) = (c % nx, c / nx);
@@ -544,7 +554,7 @@ impl TwoFluid {
                         slip: (vel - u_w).abs(),
                         gas_slip: (gas_vel - vel).abs(),
                     };
-                    theta_faces.push(model.granular_temperature(&state, &spec.params).face);
+                    theta_faces[along] = model.granular_temperature(&state, &spec.params).face;
                 }
                 match side {
                     Side::West => {
@@ -693,15 +703,15 @@ impl TwoFluid {
                             n_.map_or(0.0, |x| x.1),
                         )
                     };
-                    let mut a_in = [0.0; 8];
-                    let mut r_in = [0.0; 8];
-                    let mut phi = [0.0; 8];
-                    let mut drag = [0.0; 7];
+                    let mut a_in = [0.0; MAX_SOLIDS_PHASES + 1];
+                    let mut r_in = [0.0; MAX_SOLIDS_PHASES + 1];
+                    let mut phi = [0.0; MAX_SOLIDS_PHASES + 1];
+                    let mut drag = [0.0; MAX_SOLIDS_PHASES];
                     let gas_phi: &[f64] = if dir == 0 { &self.u_g } else { &self.v_g };
                     a_in[0] = gas_a.a_p[k];
                     r_in[0] = neighbour_sum(gas_a, gas_phi, k);
                     phi[0] = gas_phi[k];
-                    let mut dilute = [false; 7];
+                    let mut dilute = [false; MAX_SOLIDS_PHASES];
                     for (p, s) in self.solids.iter().enumerate() {
                         let (a, field) = if dir == 0 {
                             (&s.a_u, &s.u)
@@ -740,7 +750,8 @@ impl TwoFluid {
                         num += (r_in[p] + coupling - a_in[p] * phi[p]).abs();
                         den += a_in[p].abs() * phi[p].abs().max(1e-15);
                     }
-                    let (mut a_out, mut r_out) = ([0.0; 8], [0.0; 8]);
+                    let (mut a_out, mut r_out) =
+                        ([0.0; MAX_SOLIDS_PHASES + 1], [0.0; MAX_SOLIDS_PHASES + 1]);
                     eliminate_node(
                         &a_in[..=m],
                         &r_in[..=m],
