@@ -4,11 +4,13 @@
 //!   expanded, validated and run in parallel into `runs/`, with `results/summary.csv`;
 //!   cases that need the two-fluid model (issue 7) are reported as unsupported.
 //! - `bench linsolve`: the linear-solver timing table of docs/performance.md.
+//! - `verify <name> [--report]`: the verification suite of the single-phase core;
 //! - `report analytic`: family A, the closed-form profiles of paper Fig. 1, as SVG and CSV
 //!   in docs/analytic/.
 
 mod analytic;
 mod sweep;
+mod verify;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -46,6 +48,15 @@ enum Task {
         /// case directory
         #[arg(long, default_value = "cases")]
         cases: PathBuf,
+    },
+    /// Verification of the single-phase core (issue 6): cavity, cavity-re1000, poiseuille,
+    /// taylor-green or all.
+    Verify {
+        /// cavity, cavity-re1000, poiseuille, taylor-green or all
+        name: String,
+        /// also write error against run time (CSV/SVG/Markdown) into docs/verification/
+        #[arg(long)]
+        report: bool,
     },
     /// Figures and tables: `cargo xtask report analytic` (paper Fig. 1 into docs/analytic/).
     Report {
@@ -106,6 +117,7 @@ fn main() -> Result<()> {
             };
             sweep::sweep(&root(), &dir, &opts)
         }
+        Task::Verify { name, report } => verify::verify(&name, report, &root()),
         Task::Report { what } => match what.as_str() {
             "analytic" => analytic::report(&root()),
             other => bail!("unknown report `{other}` (known: analytic)"),
