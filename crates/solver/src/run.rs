@@ -158,6 +158,53 @@ fn wall_closure(gas: &GasWall) -> RobinFace {
     }
 }
 
+/// The gas condition of a boundary: the wall's closure of the tangential velocity, or the
+/// outlet's (hydrostatic) pressure.
+fn outlet_bc(b: &Boundary, gas: &runout_case::Gas) -> SideBc {
+    match b {
+        Boundary::Wall { gas: wall, .. } => SideBc::Wall(wall_closure(wall)),
+        Boundary::PressureOutlet {
+            pressure: OutletPressure::Uniform(p),
+        } => SideBc::Outlet(*p),
+        Boundary::PressureOutlet {
+            pressure: OutletPressure::Hydrostatic(p0),
+        } => SideBc::HydrostaticOutlet {
+            p0: *p0,
+            density: gas.density,
+        },
+    }
+}
+
+/// The gas conditions of the four sides of a case.
+fn gas_sides(case: &Case, gas: &runout_case::Gas) -> Sides<SideBc> {
+    let b = &case.boundaries;
+    Sides {
+        west: outlet_bc(&b.west, gas),
+        east: outlet_bc(&b.east, gas),
+        south: outlet_bc(&b.south, gas),
+        north: outlet_bc(&b.north, gas),
+    }
+}
+
+/// Initial gas pressure of cell centre (x, y): hydrostatic from the top-left corner,
+/// p = p_ref + ρ_g g·(r − r_top-left), or the case's uniform value.
+fn initial_gas_pressure(
+    case: &Case,
+    gas: &runout_case::Gas,
+    gravity: (f64, f64),
+    grid: &Grid,
+    x: f64,
+    y: f64,
+) -> f64 {
+    match case.initial.gas_pressure {
+        InitialPressure::Hydrostatic => {
+            gas.reference_pressure
+                + gas.density * (gravity.0 * (x - grid.x.start()) + gravity.1 * (y - grid.y.end()))
+        }
+        InitialPressure::Uniform(p) => p,
+    }
+}
+
 /// Gravity vector of a slope α: g = (g sin α, −g cos α) (architecture.md conventions).
 fn gravity_vector(magnitude: f64, slope_deg: f64) -> (f64, f64) {
     let a = slope_deg.to_radians();
@@ -192,25 +239,8 @@ pub fn single_phase_solver(case: &Case) -> Result<SinglePhase, RunError> {
         case: case.name.clone(),
         source,
     })?;
-    let side = |b: &Boundary| match b {
-        Boundary::Wall { gas, .. } => SideBc::Wall(wall_closure(gas)),
-        Boundary::PressureOutlet {
-            pressure: OutletPressure::Uniform(p),
-        } => SideBc::Outlet(*p),
-        Boundary::PressureOutlet {
-            pressure: OutletPressure::Hydrostatic(p0),
-        } => SideBc::HydrostaticOutlet {
-            p0: *p0,
-            density: gas.density,
-        },
-    };
     let b = &case.boundaries;
-    let bcs = Sides {
-        west: side(&b.west),
-        east: side(&b.east),
-        south: side(&b.south),
-        north: side(&b.north),
-    };
+    let bcs = gas_sides(case, gas);
     let r = &case.numerics.relaxation;
     let settings = Settings {
         scheme: match case.numerics.convection {
@@ -236,18 +266,10 @@ pub fn single_phase_solver(case: &Case) -> Result<SinglePhase, RunError> {
     s.u.iter_mut().for_each(|u| *u = u0);
     s.v.iter_mut().for_each(|v| *v = v0);
     let g = s.grid().clone();
-    let (x0, y1) = (g.x.start(), g.y.end());
     for j in 0..g.ny() {
         for i in 0..g.nx() {
             let (x, y) = g.cell_centre(i, j);
-            s.p[g.cell_index(i, j)] = match case.initial.gas_pressure {
-                // p = p_ref + ρ g·(r − r_top-left), the column under the top-left corner
-                InitialPressure::Hydrostatic => {
-                    gas.reference_pressure
-                        + gas.density * (gravity.0 * (x - x0) + gravity.1 * (y - y1))
-                }
-                InitialPressure::Uniform(p) => p,
-            };
+            s.p[g.cell_index(i, j)] = initial_gas_pressure(case, gas, gravity, &g, x, y);
         }
     }
     // Walls: zero normal velocity on the wall faces.
@@ -553,25 +575,8 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
         case: case.name.clone(),
         source,
     })?;
-    let gas_side = |b: &Boundary| match b {
-        Boundary::Wall { gas, .. } => SideBc::Wall(wall_closure(gas)),
-        Boundary::PressureOutlet {
-            pressure: OutletPressure::Uniform(p),
-        } => SideBc::Outlet(*p),
-        Boundary::PressureOutlet {
-            pressure: OutletPressure::Hydrostatic(p0),
-        } => SideBc::HydrostaticOutlet {
-            p0: *p0,
-            density: gas.density,
-        },
-    };
     let b = &case.boundaries;
-    let gas_walls = Sides {
-        west: gas_side(&b.west),
-        east: gas_side(&b.east),
-        south: gas_side(&b.south),
-        north: gas_side(&b.north),
-    };
+    let gas_walls = gas_sides(case, gas);
     // (tangential closure, θ closure, state-dependent model) of each side for the solids
     type SolidsSide = (SideBc, Option<RobinFace>, Option<SolidsWallModel>);
     let solids_side = |b: &Boundary| -> Result<SolidsSide, RunError> {
@@ -585,7 +590,7 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
             )
         };
         Ok(match b {
-            Boundary::PressureOutlet { .. } => (gas_side(b), None, None),
+            Boundary::PressureOutlet { .. } => (outlet_bc(b, gas), None, None),
             Boundary::Wall { solids, .. } => match solids {
                 SolidsWall::NoSlip => (
                     SideBc::Wall(RobinFace::dirichlet(0.0)),
@@ -728,18 +733,11 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
             .iter_mut()
             .for_each(|t| *t = case.initial.theta.max(runout_closures::guards::THETA_SMALL));
     }
-    let (x0, y1) = (grid.x.start(), grid.y.end());
     for j in 0..ny {
         for i in 0..nx {
             let (x, y) = grid.cell_centre(i, j);
             let k = i + nx * j;
-            tf.p_g[k] = match case.initial.gas_pressure {
-                InitialPressure::Hydrostatic => {
-                    gas.reference_pressure
-                        + gas.density * (gravity.0 * (x - x0) + gravity.1 * (y - y1))
-                }
-                InitialPressure::Uniform(p) => p,
-            };
+            tf.p_g[k] = initial_gas_pressure(case, gas, gravity, &grid, x, y);
             for block in &case.initial.regions {
                 if x >= block.x.0 && x <= block.x.1 && y >= block.y.0 && y <= block.y.1 {
                     for (s, bs) in tf.solids.iter_mut().zip(&block.solids) {
