@@ -9,6 +9,7 @@
 //!   in docs/analytic/.
 
 mod analytic;
+mod metrics;
 mod sweep;
 mod verify;
 

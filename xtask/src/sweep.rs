@@ -17,6 +17,8 @@ use runout_case::{case_files, load, Fidelity, Loaded, SourcedCase};
 use runout_output::RunSummary;
 use runout_solver::{run_case, RunError};
 
+use crate::metrics::{described_speeds, flow_metrics, FlowMetrics};
+
 /// Options of a sweep.
 pub struct SweepOptions {
     /// fidelity of every run
@@ -137,23 +139,25 @@ fn csv_field(s: &str) -> String {
     }
 }
 
-/// Header of results/summary.csv (issue 8). The flow quantities (air cushion, station
-/// profile, probe, gates) need the two-fluid monitors (issue 7) and are empty until then.
+/// Header of results/summary.csv (issue 8); the flow columns are defined in
+/// [`crate::metrics`] and are empty where a run has no such monitor (or did not reach its
+/// time, e.g. the 1.25 s profiles at smoke fidelity).
 const HEADER: &str = "case,fidelity,status,wall_time_s,steps,rejected_steps,mean_dt_s,air_cushion,\
 cushion_thickness_m,floor_eps_s,flow_thickness_m,max_u_s,h_wu_probe_t1.25,gate_speeds,mse_vs_described";
 
-fn csv_row(name: &str, fidelity: Fidelity, outcome: &Outcome) -> String {
+fn csv_row(name: &str, fidelity: Fidelity, outcome: &Outcome, flow: &FlowMetrics) -> String {
     // the eight flow columns after mean_dt_s
     let empty_flow = ",".repeat(8);
     match outcome {
         Outcome::Done(s) | Outcome::Skipped(s) => format!(
-            "{},{fidelity},{},{:.3},{},{},{:e}{empty_flow}",
+            "{},{fidelity},{},{:.3},{},{},{:e},{}",
             csv_field(name),
             csv_field(&format!("{:?}", s.status)),
             s.wall_time,
             s.steps,
             s.rejected_steps,
-            s.dt.mean
+            s.dt.mean,
+            flow.csv()
         ),
         Outcome::Unsupported(why) => format!(
             "{},{fidelity},{},,,,{empty_flow}",
@@ -238,12 +242,19 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
     let mut outcomes = outcomes.into_inner().expect("no poisoned lock");
     outcomes.sort_by_key(|(k, _)| *k);
 
+    let described = described_speeds(&root.join("cases").join("flume").join("gates.csv"));
     let mut csv = String::from(HEADER);
     csv.push('\n');
     let (mut ran, mut skipped, mut unsupported, mut failed) = (0, 0, 0, 0);
     for (k, outcome) in &outcomes {
         let name = &selected[*k].case.name;
-        csv.push_str(&csv_row(name, fidelity, outcome));
+        let flow = match outcome {
+            Outcome::Done(_) | Outcome::Skipped(_) => {
+                flow_metrics(&runs_dir.join(name).join(fidelity.name()), &described)
+            }
+            _ => FlowMetrics::default(),
+        };
+        csv.push_str(&csv_row(name, fidelity, outcome, &flow));
         csv.push('\n');
         match outcome {
             Outcome::Done(s) => {
@@ -325,8 +336,12 @@ mod tests {
             Outcome::Unsupported("needs, \"quotes\"".into()),
             Outcome::Failed("x".into()),
         ] {
+            let flow = FlowMetrics {
+                gate_speeds: vec![(1, 2.0), (2, 3.5)],
+                ..FlowMetrics::default()
+            };
             assert_eq!(
-                columns(&csv_row("S-PS-cw_cw=1", Fidelity::Smoke, &outcome)),
+                columns(&csv_row("S-PS-cw_cw=1", Fidelity::Smoke, &outcome, &flow)),
                 width
             );
         }

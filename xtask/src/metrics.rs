@@ -1,0 +1,239 @@
+//! The flow quantities of results/summary.csv, read from a finished run's monitor files.
+//!
+//! Definitions (issue 8; documented in docs/status.md):
+//! - **air cushion**: at the station, the floor cell's εs is below 0.8 × the profile's peak εs;
+//!   its **thickness** is the height of the top face of the highest cell below the peak whose
+//!   εs is below 0.8 × peak;
+//! - **flow thickness**: the height of the top face of the highest cell with εs ≥ 0.01 (the
+//!   front threshold of cases.md);
+//! - **max u_s**: the largest u_s of the profile over cells with εs ≥ 0.01;
+//! - **h_w^u at the probe**: the last probe sample at or before t = 1.25 s (paper Fig. 9);
+//! - **gate speeds**: the front speed at each gate (`gates.csv` of the run);
+//! - **MSE vs described**: the mean square difference between the gate speeds and the speeds
+//!   the paper describes (cases/flume/gates.csv, rows with a speed), over the gates both have.
+
+use std::path::Path;
+
+/// Fraction of the peak εs below which the floor is an air cushion.
+const CUSHION_FRACTION: f64 = 0.8;
+/// εs that counts as flowing material (cases.md front threshold).
+const FLOW_THRESHOLD: f64 = 0.01;
+/// Time of the paper's profiles and probe reading [s].
+const PROFILE_TIME: f64 = 1.25;
+
+/// The flow columns of one run; `None` where the run has no such monitor.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct FlowMetrics {
+    /// whether the station profile shows an air cushion
+    pub air_cushion: Option<bool>,
+    /// cushion thickness [m] (0 without a cushion)
+    pub cushion_thickness: Option<f64>,
+    /// εs of the floor cell at the station
+    pub floor_eps_s: Option<f64>,
+    /// flow thickness at the station [m]
+    pub flow_thickness: Option<f64>,
+    /// max u_s at the station [m/s]
+    pub max_u_s: Option<f64>,
+    /// h_w^u at the probe at t = 1.25 s [1/m]
+    pub h_wu_probe: Option<f64>,
+    /// front speed at each gate reached [m/s]: (gate number, speed)
+    pub gate_speeds: Vec<(usize, f64)>,
+    /// mean square error against the described speeds [m²/s²]
+    pub mse_vs_described: Option<f64>,
+}
+
+/// Numeric rows of a CSV file with a header line, skipping `#` comment lines; empty cells are
+/// NaN.
+fn rows(path: &Path) -> Option<Vec<Vec<f64>>> {
+    let text = std::fs::read_to_string(path).ok()?;
+    Some(
+        text.lines()
+            .filter(|l| !l.trim_start().starts_with('#'))
+            .skip(1)
+            .map(|l| {
+                l.split(',')
+                    .map(|v| v.trim().parse().unwrap_or(f64::NAN))
+                    .collect()
+            })
+            .collect(),
+    )
+}
+
+/// The first file in `dir` whose name starts with `prefix` and ends with `.csv`.
+fn find(dir: &Path, prefix: &str) -> Option<std::path::PathBuf> {
+    let mut names: Vec<_> = std::fs::read_dir(dir)
+        .ok()?
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| {
+            p.file_name()
+                .and_then(|n| n.to_str())
+                .is_some_and(|n| n.starts_with(prefix) && n.ends_with(".csv"))
+        })
+        .collect();
+    names.sort();
+    names.into_iter().next()
+}
+
+/// Profile metrics from rows (y, εs, u_s, θ) ordered from the floor up; `cell_top(k)` is the
+/// height of the top face of row k (mid-way to the next centre, mirrored at the top).
+pub fn profile_metrics(profile: &[Vec<f64>]) -> FlowMetrics {
+    let mut m = FlowMetrics::default();
+    if profile.is_empty() {
+        return m;
+    }
+    let y: Vec<f64> = profile.iter().map(|r| r[0]).collect();
+    let eps: Vec<f64> = profile.iter().map(|r| r[1]).collect();
+    let top = |k: usize| {
+        if k + 1 < y.len() {
+            0.5 * (y[k] + y[k + 1])
+        } else {
+            2.0 * y[k] - if k > 0 { 0.5 * (y[k - 1] + y[k]) } else { 0.0 }
+        }
+    };
+    let (peak_index, peak) =
+        eps.iter()
+            .cloned()
+            .enumerate()
+            .fold(
+                (0, f64::NEG_INFINITY),
+                |a, (k, e)| if e > a.1 { (k, e) } else { a },
+            );
+    m.floor_eps_s = Some(eps[0]);
+    if peak >= FLOW_THRESHOLD {
+        let cushion = eps[0] < CUSHION_FRACTION * peak;
+        m.air_cushion = Some(cushion);
+        m.cushion_thickness = Some(if cushion {
+            (0..peak_index)
+                .rev()
+                .find(|&k| eps[k] < CUSHION_FRACTION * peak)
+                .map_or(0.0, top)
+        } else {
+            0.0
+        });
+        m.flow_thickness = (0..eps.len())
+            .rev()
+            .find(|&k| eps[k] >= FLOW_THRESHOLD)
+            .map(top);
+        m.max_u_s = profile
+            .iter()
+            .filter(|r| r[1] >= FLOW_THRESHOLD)
+            .map(|r| r[2])
+            .fold(None, |a: Option<f64>, u| Some(a.map_or(u, |a| a.max(u))));
+    } else {
+        m.air_cushion = Some(false);
+        m.cushion_thickness = Some(0.0);
+        m.flow_thickness = Some(0.0);
+    }
+    m
+}
+
+/// All flow metrics of the run in `dir`; `described` holds (gate number, speed) pairs.
+pub fn flow_metrics(dir: &Path, described: &[(usize, f64)]) -> FlowMetrics {
+    let mut m = find(dir, "profile_")
+        .and_then(|p| rows(&p))
+        .map(|r| profile_metrics(&r))
+        .unwrap_or_default();
+    if let Some(probe) = find(dir, "wall_probe_").and_then(|p| rows(&p)) {
+        m.h_wu_probe = probe
+            .iter()
+            .rfind(|r| r[0] <= PROFILE_TIME * (1.0 + 1e-9))
+            .map(|r| r[1]);
+    }
+    if let Some(gates) = rows(&dir.join("gates.csv")) {
+        m.gate_speeds = gates
+            .iter()
+            .filter(|r| r[3].is_finite())
+            .map(|r| (r[0] as usize, r[3]))
+            .collect();
+        let pairs: Vec<f64> = m
+            .gate_speeds
+            .iter()
+            .filter_map(|(g, s)| {
+                described
+                    .iter()
+                    .find(|(d, _)| d == g)
+                    .map(|(_, v)| (s - v).powi(2))
+            })
+            .collect();
+        if !pairs.is_empty() {
+            m.mse_vs_described = Some(pairs.iter().sum::<f64>() / pairs.len() as f64);
+        }
+    }
+    m
+}
+
+/// The described gate speeds of cases/flume/gates.csv: (gate number, speed) for rows with a
+/// speed (gate names are L1..L7).
+pub fn described_speeds(gates_csv: &Path) -> Vec<(usize, f64)> {
+    let Ok(text) = std::fs::read_to_string(gates_csv) else {
+        return Vec::new();
+    };
+    text.lines()
+        .filter(|l| !l.trim_start().starts_with('#'))
+        .skip(1)
+        .filter_map(|l| {
+            let f: Vec<&str> = l.split(',').collect();
+            let gate = f.first()?.trim().trim_start_matches('L').parse().ok()?;
+            let speed = f.get(2)?.trim().parse().ok()?;
+            Some((gate, speed))
+        })
+        .collect()
+}
+
+impl FlowMetrics {
+    /// The eight CSV columns (empty where unknown).
+    pub fn csv(&self) -> String {
+        let num = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v:.6e}"));
+        let speeds: Vec<String> = self
+            .gate_speeds
+            .iter()
+            .map(|(g, s)| format!("L{g}:{s:.3}"))
+            .collect();
+        format!(
+            "{},{},{},{},{},{},{},{}",
+            self.air_cushion.map_or(String::new(), |c| if c {
+                "yes".into()
+            } else {
+                "no".into()
+            }),
+            num(self.cushion_thickness),
+            num(self.floor_eps_s),
+            num(self.flow_thickness),
+            num(self.max_u_s),
+            num(self.h_wu_probe),
+            speeds.join(";"),
+            num(self.mse_vs_described)
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn profile(eps: &[f64], u: f64) -> Vec<Vec<f64>> {
+        eps.iter()
+            .enumerate()
+            .map(|(k, &e)| vec![0.005 * (k as f64 + 0.5), e, u, 0.1])
+            .collect()
+    }
+
+    #[test]
+    fn a_dilute_floor_below_a_dense_layer_is_a_cushion() {
+        let m = profile_metrics(&profile(&[0.05, 0.2, 0.55, 0.6, 0.3, 0.005], 3.0));
+        assert_eq!(m.air_cushion, Some(true));
+        // cells 0 and 1 lie below 0.8 × 0.6 under the peak (cell 3): top of cell 1 is 0.01 m
+        assert!((m.cushion_thickness.unwrap() - 0.010).abs() < 1e-12);
+        // the highest cell with εs ≥ 0.01 is cell 4: top at 0.025 m
+        assert!((m.flow_thickness.unwrap() - 0.025).abs() < 1e-12);
+        assert_eq!(m.max_u_s, Some(3.0));
+    }
+
+    #[test]
+    fn a_dense_floor_is_no_cushion() {
+        let m = profile_metrics(&profile(&[0.6, 0.58, 0.4, 0.0], 1.0));
+        assert_eq!(m.air_cushion, Some(false));
+        assert_eq!(m.cushion_thickness, Some(0.0));
+        assert_eq!(m.csv().split(',').count(), 8);
+    }
+}
