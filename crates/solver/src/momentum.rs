@@ -116,6 +116,26 @@ fn interp_y(grid: &Grid, field: &[f64], i: usize, j: usize) -> f64 {
     w * field[i + nx * (j - 1)] + (1.0 - w) * field[i + nx * j]
 }
 
+/// Σ a_nb φ_nb + b of row k: the right-hand side with the current neighbour values (used
+/// for residuals, model-spec §4.11, and the partial elimination, §4.5).
+pub(crate) fn neighbour_sum(a: &Stencil5, phi: &[f64], k: usize) -> f64 {
+    let nx = a.pattern().nx();
+    let mut r = a.b[k];
+    if a.a_e[k] != 0.0 {
+        r += a.a_e[k] * phi[k + 1];
+    }
+    if a.a_w[k] != 0.0 {
+        r += a.a_w[k] * phi[k - 1];
+    }
+    if a.a_n[k] != 0.0 {
+        r += a.a_n[k] * phi[k + nx];
+    }
+    if a.a_s[k] != 0.0 {
+        r += a.a_s[k] * phi[k - nx];
+    }
+    r
+}
+
 /// Makes row k read φ = `value` with no neighbour links.
 pub(crate) fn fixed_row(a: &mut Stencil5, k: usize, value: f64) {
     a.a_p[k] = 1.0;

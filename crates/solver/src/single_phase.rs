@@ -15,7 +15,7 @@ use runout_linsolve::{build, LinSolveError, LinearSolver, LinearSolverKind, Patt
 use runout_mesh::{Grid, Sides};
 use runout_walls::RobinFace;
 
-use crate::momentum::{assemble_u, assemble_v, fixed_row, Context, PhaseFields};
+use crate::momentum::{assemble_u, assemble_v, fixed_row, neighbour_sum, Context, PhaseFields};
 use crate::transport::{FaceData, Scheme};
 
 /// Condition on one side of the domain.
@@ -346,25 +346,11 @@ impl SinglePhase {
         let mut num = 0.0;
         let mut den = 0.0;
         let (mut worst, mut worst_abs) = (0, -1.0);
-        let nx = a.pattern().nx();
         for k in 0..phi.len() {
             if a.pattern().fixed_mask()[k] {
                 continue;
             }
-            let mut nb = 0.0;
-            if a.a_e[k] != 0.0 {
-                nb += a.a_e[k] * phi[k + 1];
-            }
-            if a.a_w[k] != 0.0 {
-                nb += a.a_w[k] * phi[k - 1];
-            }
-            if a.a_n[k] != 0.0 {
-                nb += a.a_n[k] * phi[k + nx];
-            }
-            if a.a_s[k] != 0.0 {
-                nb += a.a_s[k] * phi[k - nx];
-            }
-            let r = (a.b[k] + nb - a.a_p[k] * phi[k]).abs();
+            let r = (neighbour_sum(a, phi, k) - a.a_p[k] * phi[k]).abs();
             if r > worst_abs {
                 (worst, worst_abs) = (k, r);
             }

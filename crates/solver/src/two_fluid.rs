@@ -24,7 +24,9 @@ use runout_walls::{MomentumWallState, RobinFace, SolidsWallModel, ThetaWallState
 
 use crate::energy::{assemble_theta, EnergyInputs};
 use crate::kinematics::{strain_rates, Strain, WallVelocities};
-use crate::momentum::{assemble_u, assemble_v, fixed_row, Context, PhaseFields, WallFaces};
+use crate::momentum::{
+    assemble_u, assemble_v, fixed_row, neighbour_sum, Context, PhaseFields, WallFaces,
+};
 use crate::pea::eliminate_node;
 use crate::single_phase::{Fluid, SideBc};
 use crate::transport::{FaceData, Scheme};
@@ -1004,7 +1006,6 @@ impl TwoFluid {
                 &mut s.a_theta,
             );
             let a = &mut s.a_theta;
-            let nx = a.pattern().nx();
             let (mut num, mut den) = (0.0, 0.0);
             for k in 0..s.theta.len() {
                 if s.eps[k] <= DIL_EP_S {
@@ -1012,19 +1013,7 @@ impl TwoFluid {
                     fixed_row(a, k, s.theta[k]);
                     continue;
                 }
-                let mut nb = a.b[k] - a.a_p[k] * s.theta[k];
-                if a.a_e[k] != 0.0 {
-                    nb += a.a_e[k] * s.theta[k + 1];
-                }
-                if a.a_w[k] != 0.0 {
-                    nb += a.a_w[k] * s.theta[k - 1];
-                }
-                if a.a_n[k] != 0.0 {
-                    nb += a.a_n[k] * s.theta[k + nx];
-                }
-                if a.a_s[k] != 0.0 {
-                    nb += a.a_s[k] * s.theta[k - nx];
-                }
+                let nb = neighbour_sum(a, &s.theta, k) - a.a_p[k] * s.theta[k];
                 num += nb.abs();
                 den += (a.a_p[k] * s.theta[k]).abs();
                 let ap = a.a_p[k] / relax;
@@ -1146,25 +1135,6 @@ impl TwoFluid {
     pub fn gravity(&self) -> (f64, f64) {
         self.gravity
     }
-}
-
-/// Σ a_nb φ_nb + b of row k (the right-hand side with the current neighbour values).
-fn neighbour_sum(a: &Stencil5, phi: &[f64], k: usize) -> f64 {
-    let nx = a.pattern().nx();
-    let mut r = a.b[k];
-    if a.a_e[k] != 0.0 {
-        r += a.a_e[k] * phi[k + 1];
-    }
-    if a.a_w[k] != 0.0 {
-        r += a.a_w[k] * phi[k - 1];
-    }
-    if a.a_n[k] != 0.0 {
-        r += a.a_n[k] * phi[k + nx];
-    }
-    if a.a_s[k] != 0.0 {
-        r += a.a_s[k] * phi[k - nx];
-    }
-    r
 }
 
 /// Mean of a cell field over the (one or two) cells beside a face.
