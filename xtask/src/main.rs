@@ -5,11 +5,13 @@
 //!   cases that need the two-fluid model (issue 7) are reported as unsupported.
 //! - `bench linsolve`: the linear-solver timing table of docs/performance.md.
 //! - `verify <name> [--report]`: the verification suite of the single-phase core;
+//!   `verify mfix-slope`: family M against MFIX (issue 9, [`mfix_slope`]);
 //! - `report analytic`: family A, the closed-form profiles of paper Fig. 1, as SVG and CSV
 //!   in docs/analytic/.
 
 mod analytic;
 mod metrics;
+mod mfix_slope;
 mod sweep;
 mod verify;
 
@@ -50,14 +52,23 @@ enum Task {
         #[arg(long, default_value = "cases")]
         cases: PathBuf,
     },
-    /// Verification of the single-phase core (issue 6): cavity, cavity-re1000, poiseuille,
-    /// taylor-green or all.
+    /// Verification: the single-phase core (issue 6: cavity, cavity-re1000, poiseuille,
+    /// taylor-green, all) and family M against MFIX (issue 9: mfix-slope).
     Verify {
-        /// cavity, cavity-re1000, poiseuille, taylor-green or all
+        /// cavity, cavity-re1000, poiseuille, taylor-green, all, or mfix-slope
         name: String,
         /// also write error against run time (CSV/SVG/Markdown) into docs/verification/
         #[arg(long)]
         report: bool,
+        /// mfix-slope: fidelity (paper = MFIX's 200 × 50 grid)
+        #[arg(long, default_value = "paper")]
+        fidelity: String,
+        /// mfix-slope: comma-separated rayon thread counts to time the JJ case with
+        #[arg(long, default_value = "1")]
+        threads: String,
+        /// mfix-slope: only the JJ case, not the other three floors
+        #[arg(long)]
+        skip_variants: bool,
     },
     /// Figures and tables: `cargo xtask report analytic` (paper Fig. 1 into docs/analytic/).
     Report {
@@ -118,7 +129,28 @@ fn main() -> Result<()> {
             };
             sweep::sweep(&root(), &dir, &opts)
         }
-        Task::Verify { name, report } => verify::verify(&name, report, &root()),
+        Task::Verify {
+            name,
+            report,
+            fidelity,
+            threads,
+            skip_variants,
+        } => {
+            if name == "mfix-slope" {
+                let opts = mfix_slope::Options {
+                    fidelity: fidelity.parse().map_err(anyhow::Error::msg)?,
+                    threads: threads
+                        .split(',')
+                        .map(|t| t.trim().parse::<usize>())
+                        .collect::<Result<_, _>>()
+                        .context("--threads must be a comma-separated list of counts")?,
+                    skip_variants,
+                };
+                mfix_slope::check(&root(), &opts)
+            } else {
+                verify::verify(&name, report, &root())
+            }
+        }
         Task::Report { what } => match what.as_str() {
             "analytic" => analytic::report(&root()),
             other => bail!("unknown report `{other}` (known: analytic)"),

@@ -59,19 +59,23 @@ pub fn matrix(cases_dir: &Path) -> Result<Matrix> {
     if errors > 0 {
         bail!("{errors} case file(s) rejected; nothing was run");
     }
-    // A case file that serves as a sweep's base is not a run of its own.
+    // A sweep's base named `base.ron` is a template, not a run of its own; a base with any
+    // other name (cases/mfix-slope/jj.ron, the base of the other floors of family M) is a
+    // case in its own right and runs as well.
     let canonical = |p: &Path| p.canonicalize().unwrap_or_else(|_| p.to_path_buf());
-    let bases: BTreeSet<PathBuf> = loaded
+    let templates: BTreeSet<PathBuf> = loaded
         .iter()
         .flat_map(|(_, cases)| {
             cases
                 .iter()
-                .filter_map(|c| c.base.as_deref().map(canonical))
+                .filter_map(|c| c.base.as_deref())
+                .filter(|b| b.file_name().is_some_and(|n| n == "base.ron"))
+                .map(canonical)
         })
         .collect();
     let runs = loaded
         .into_iter()
-        .filter(|(f, _)| !bases.contains(&canonical(f)))
+        .filter(|(f, _)| !templates.contains(&canonical(f)))
         .flat_map(|(_, cases)| cases)
         .collect();
     Ok(Matrix { runs, analytic })
@@ -329,6 +333,7 @@ mod tests {
             solids_mass_change: 0.0,
             max_mass_imbalance: 0.0,
             status: RunStatus::Completed,
+            profile: Vec::new(),
         };
         for outcome in [
             Outcome::Done(summary.clone()),

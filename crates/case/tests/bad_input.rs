@@ -44,7 +44,7 @@ fn rejected(name: &str, text: &str, must_contain: &[&str]) {
 }
 
 fn mslide() -> String {
-    shipped("mfix/M-slide.ron")
+    shipped("mfix-slope/jj.ron")
 }
 
 #[test]
@@ -175,7 +175,7 @@ fn sweep_that_does_not_apply_is_rejected() {
     let dir = std::env::temp_dir().join(format!("runout-sweep-tests-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::write(dir.join("base.ron"), mslide()).unwrap();
-    // M-slide has no user partial-slip wall, so PartialSlipHu has nothing to set
+    // M-JJ has no user partial-slip wall, so PartialSlipHu has nothing to set
     let sweep = r#"Sweep(name: "X", base: "base.ron", vary: [PartialSlipHu([1.0, 2.0])])"#;
     std::fs::write(dir.join("x.ron"), sweep).unwrap();
     let e = load(&dir.join("x.ron")).expect_err("rejected").to_string();

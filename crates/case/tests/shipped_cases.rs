@@ -18,7 +18,7 @@ fn load_cases(rel: &str) -> Vec<runout_case::SourcedCase> {
 #[test]
 fn every_shipped_file_is_valid() {
     let mut n = 0;
-    for family in ["sensitivity", "flume", "mfix", "analytic"] {
+    for family in ["sensitivity", "flume", "mfix-slope", "analytic"] {
         for entry in std::fs::read_dir(cases_dir().join(family)).unwrap() {
             let path = entry.unwrap().path();
             if path.extension().is_some_and(|e| e == "ron") {
@@ -134,7 +134,7 @@ fn paper_grids_have_the_papers_cell_sizes() {
     assert!((s.x_range.1 - 7.5).abs() < 1e-12 && (s.y_range.1 - 1.8).abs() < 1e-12);
     assert!((s.dx_min - 0.01).abs() < 1e-12 && (s.dy_min - 0.01).abs() < 1e-12);
     // family M: 200 × 50 uniform cells of 0.02 m × 0.01 m
-    let g = load_cases("mfix/M-slide.ron")[0].case.grid().unwrap();
+    let g = load_cases("mfix-slope/jj.ron")[0].case.grid().unwrap();
     assert_eq!((g.nx(), g.ny()), (200, 50));
 }
 

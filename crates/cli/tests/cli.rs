@@ -30,7 +30,16 @@ fn check_accepts_every_shipped_case() {
     let o = runout(&["check", "cases"]);
     assert!(o.status.success(), "{}", text(&o));
     let t = text(&o);
-    for name in ["S-JJ-phi_phi=0.01", "S-RJJ", "F-JEN", "M-slide", "A-fig1"] {
+    for name in [
+        "S-JJ-phi_phi=0.01",
+        "S-RJJ",
+        "F-JEN",
+        "M-JJ",
+        "M-RJJ",
+        "M-JEN",
+        "M-PS",
+        "A-fig1",
+    ] {
         assert!(t.contains(name), "{name} not listed:\n{t}");
     }
 }
@@ -39,7 +48,7 @@ fn check_accepts_every_shipped_case() {
 fn check_rejects_bad_files_without_panicking() {
     let dir = std::env::temp_dir().join(format!("runout-cli-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let good = std::fs::read_to_string(root().join("cases/mfix/M-slide.ron")).unwrap();
+    let good = std::fs::read_to_string(root().join("cases/mfix-slope/jj.ron")).unwrap();
     let bad = dir.join("neg.ron");
     std::fs::write(&bad, good.replacen("diameter: 5e-4", "diameter: -1e-3", 1)).unwrap();
     let o = runout(&["check", bad.to_str().unwrap()]);
@@ -69,7 +78,7 @@ fn mesh_prints_the_two_paper_grids() {
     let t = text(&o);
     assert!(t.contains("x: [0, 7.5] m, dx min 0.010000 m"), "{t}");
     assert!(t.contains("y: [0, 1.8] m, dy min 0.010000 m"), "{t}");
-    let o = runout(&["mesh", "--fidelity", "smoke", "cases/mfix/M-slide.ron"]);
+    let o = runout(&["mesh", "--fidelity", "smoke", "cases/mfix-slope/jj.ron"]);
     assert!(text(&o).contains("cells: 40 x 10 = 400"), "{}", text(&o));
 }
 
@@ -98,7 +107,7 @@ fn run_solves_the_mfix_slide_with_its_johnson_jackson_floor_at_smoke_fidelity() 
     let out = std::env::temp_dir().join(format!("runout-run-m-{}", std::process::id()));
     let o = runout(&[
         "run",
-        "cases/mfix/M-slide.ron",
+        "cases/mfix-slope/jj.ron",
         "--fidelity",
         "smoke",
         "--quiet",
@@ -127,7 +136,7 @@ fn run_solves_the_mfix_slide_with_its_johnson_jackson_floor_at_smoke_fidelity() 
 fn run_refuses_what_the_two_fluid_solver_lacks_before_any_step() {
     let dir = std::env::temp_dir().join(format!("runout-run-schaeffer-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let text0 = std::fs::read_to_string(root().join("cases/mfix/M-slide.ron")).unwrap();
+    let text0 = std::fs::read_to_string(root().join("cases/mfix-slope/jj.ron")).unwrap();
     let schaeffer = text0.replacen("friction: Princeton,", "friction: Schaeffer,", 1);
     assert_ne!(schaeffer, text0);
     let case = dir.join("schaeffer.ron");

@@ -61,6 +61,10 @@ pub struct RunSummary {
     pub max_mass_imbalance: f64,
     /// how the run ended
     pub status: RunStatus,
+    /// wall time per part of the solver's iteration [s] (closures, walls, each assembly and
+    /// linear solve), where the solver reports it; empty otherwise
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub profile: Vec<(String, f64)>,
 }
 
 impl RunSummary {

@@ -127,7 +127,7 @@ fn csv_rows_read_back() {
 #[test]
 fn summary_round_trips() {
     let s = RunSummary {
-        case: "M-slide".into(),
+        case: "M-JJ".into(),
         fidelity: "smoke".into(),
         cells: (40, 10),
         simulated_time: 0.1,
@@ -145,6 +145,7 @@ fn summary_round_trips() {
         status: RunStatus::Diverged {
             diagnosis: "theta at (3, 4), t = 0.05 s".into(),
         },
+        profile: vec![("closures".into(), 0.25), ("pressure_solve".into(), 0.5)],
     };
     let path = tmp("summary.json");
     s.write_json(&path).unwrap();

@@ -1,10 +1,11 @@
 //! Cell-centred strain rates of a phase from its staggered velocities (model-spec §4.4,
 //! "cell-centred strain rate for μ, P_f and production"), as the closures need them:
 //! tr D = ∂u/∂x + ∂v/∂y, tr(D²) = D11² + D22² + 2 D12², and S:S = tr(D²) − (tr D)²/3
-//! (model-spec §0.3, §2.4.2). D12 = ½(∂u/∂y + ∂v/∂x) uses the velocities interpolated to
-//! the cell centre's neighbours: ∂u/∂y from the cell-centred u of the rows above and below
-//! (one-sided at the domain's first and last rows, where the wall ghost would enter in MFIX;
-//! the caller's wall closure supplies the face value there), likewise ∂v/∂x.
+//! (model-spec §0.3, §2.4.2). D12 = ½(∂u/∂y + ∂v/∂x): ∂u/∂y is the difference of u on the
+//! cell's north and south faces (cell-centred u interpolated between rows), and at a wall
+//! the wall face value that MFIX's ghost cell implies (the caller's wall closure supplies
+//! it, model-spec §3.2, §4.4); likewise ∂v/∂x. Without a face value (an outlet) the
+//! difference is one-sided.
 
 use runout_mesh::Grid;
 
@@ -46,7 +47,9 @@ pub fn strain_rates(
     let (nx, ny) = (grid.nx(), grid.ny());
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
     let (xc, yc) = (grid.x.centres(), grid.y.centres());
-    let (x0, x1, y0, y1) = (grid.x.start(), grid.x.end(), grid.y.start(), grid.y.end());
+    let (x_faces, y_faces) = (grid.x.faces(), grid.y.faces());
+    let x_face = |i: usize| x_faces[i];
+    let y_face = |j: usize| y_faces[j];
     // cell-centred velocities: the mean of the two faces (MFIX AVG_X_E, model-spec §4.1)
     let uc = |i: usize, j: usize| 0.5 * (u[i + (nx + 1) * j] + u[i + 1 + (nx + 1) * j]);
     let vc = |i: usize, j: usize| 0.5 * (v[i + nx * j] + v[i + nx * (j + 1)]);
@@ -54,37 +57,45 @@ pub fn strain_rates(
         for i in 0..nx {
             let du_dx = (u[i + 1 + (nx + 1) * j] - u[i + (nx + 1) * j]) / dx[i];
             let dv_dy = (v[i + nx * (j + 1)] - v[i + nx * j]) / dy[j];
-            // ∂u/∂y: centred difference of cell-centred u between the neighbouring rows, the
-            // wall face value standing in for the missing row
-            let (y_lo, u_lo) = if j > 0 {
-                (yc[j - 1], uc(i, j - 1))
-            } else {
-                walls.south.map_or((yc[j], uc(i, j)), |w| (y0, w[i]))
+            // ∂u/∂y = (u_n − u_s)/Δy with u on the cell's south and north faces interpolated
+            // between row centres (AVG_Y, model-spec §4.4 GET_FACE_VEL_SOLIDS), the wall face
+            // value at a wall (MFIX's ghost/fluid mean, §3.2); one-sided at an outlet
+            let du_dy = {
+                let face = |jf: usize| -> Option<f64> {
+                    if jf == 0 {
+                        walls.south.map(|w| w[i])
+                    } else if jf == ny {
+                        walls.north.map(|w| w[i])
+                    } else {
+                        let w = grid.y.interpolation_weight(jf - 1);
+                        Some(w * uc(i, jf - 1) + (1.0 - w) * uc(i, jf))
+                    }
+                };
+                match (face(j), face(j + 1)) {
+                    (Some(s), Some(n)) => (n - s) / dy[j],
+                    // one-sided across the missing face: centre to the other face
+                    (None, Some(n)) => (n - uc(i, j)) / (y_face(j + 1) - yc[j]),
+                    (Some(s), None) => (uc(i, j) - s) / (yc[j] - y_face(j)),
+                    (None, None) => 0.0,
+                }
             };
-            let (y_hi, u_hi) = if j + 1 < ny {
-                (yc[j + 1], uc(i, j + 1))
-            } else {
-                walls.north.map_or((yc[j], uc(i, j)), |w| (y1, w[i]))
-            };
-            let du_dy = if y_hi > y_lo {
-                (u_hi - u_lo) / (y_hi - y_lo)
-            } else {
-                0.0
-            };
-            let (x_lo, v_lo) = if i > 0 {
-                (xc[i - 1], vc(i - 1, j))
-            } else {
-                walls.west.map_or((xc[i], vc(i, j)), |w| (x0, w[j]))
-            };
-            let (x_hi, v_hi) = if i + 1 < nx {
-                (xc[i + 1], vc(i + 1, j))
-            } else {
-                walls.east.map_or((xc[i], vc(i, j)), |w| (x1, w[j]))
-            };
-            let dv_dx = if x_hi > x_lo {
-                (v_hi - v_lo) / (x_hi - x_lo)
-            } else {
-                0.0
+            let dv_dx = {
+                let face = |i_f: usize| -> Option<f64> {
+                    if i_f == 0 {
+                        walls.west.map(|w| w[j])
+                    } else if i_f == nx {
+                        walls.east.map(|w| w[j])
+                    } else {
+                        let w = grid.x.interpolation_weight(i_f - 1);
+                        Some(w * vc(i_f - 1, j) + (1.0 - w) * vc(i_f, j))
+                    }
+                };
+                match (face(i), face(i + 1)) {
+                    (Some(w), Some(e)) => (e - w) / dx[i],
+                    (None, Some(e)) => (e - vc(i, j)) / (x_face(i + 1) - xc[i]),
+                    (Some(w), None) => (vc(i, j) - w) / (xc[i] - x_face(i)),
+                    (None, None) => 0.0,
+                }
             };
             let d12 = 0.5 * (du_dy + dv_dx);
             let tr_d = du_dx + dv_dy;

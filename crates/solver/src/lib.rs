@@ -23,6 +23,7 @@ pub mod momentum;
 pub mod pea;
 pub mod run;
 pub mod single_phase;
+pub mod stress;
 pub mod transport;
 pub mod two_fluid;
 pub mod verify;

@@ -6,7 +6,8 @@
 //! u control volumes span from cell centre i−1 to i (half a cell at the domain ends), v
 //! control volumes from row j−1 to j. Per face of a control volume:
 //! - mass flux: the mean of the two adjacent scalar-cell face fluxes (model-spec §4.2), each
-//!   ρε_face u A with ρε_face taken upwind;
+//!   ρε_face u A with ρε_face from the convection scheme (upwind or Superbee, as MFIX's
+//!   continuity face densities, [`face_value`]);
 //! - conductance: μ A/δ, with μ of the cell at x-faces of u-cells and the harmonic mean of
 //!   the four surrounding cells at their y-faces (MFIX AVG_X_H of AVG_Y_H, §4.1);
 //! - transient: a_P⁰ = ½ (V_W ρε_W⁰ + V_E ρε_E⁰)/Δt (old bulk density averaged by cell
@@ -16,15 +17,16 @@
 //! - walls: the eliminated Robin closure of the tangential component (§3.2) with the fluid
 //!   cells' viscosity (§3.1).
 //!
-//! Not yet here (issue 7): the explicit stress cross terms of model-spec §4.4 (zero for a
-//! uniform viscosity in incompressible flow) and the interphase drag (partial elimination).
+//! The explicit stress terms of model-spec §4.4 come in as a per-node source
+//! ([`PhaseFields::explicit_source`], computed by [`crate::stress`]); the interphase drag is
+//! added by the partial elimination of the two-fluid model.
 
 use runout_linsolve::Stencil5;
 use runout_mesh::{Grid, Sides};
 use runout_walls::RobinFace;
 
 use crate::single_phase::SideBc;
-use crate::transport::{assemble, FaceData, Scheme};
+use crate::transport::{assemble, face_value, FaceData, Scheme};
 
 /// Cell-centred coefficient fields of one phase (index i + nx j).
 #[derive(Clone, Copy, Debug)]
@@ -39,6 +41,10 @@ pub struct PhaseFields<'a> {
     pub viscosity: &'a [f64],
     /// the solids pressure P_s of a solids phase [Pa]; `None` for the gas
     pub solids_pressure: Option<&'a [f64]>,
+    /// explicit stress source per node of the component being assembled, already integrated
+    /// over the control volume [N per m depth] (model-spec §4.4, [`crate::stress`]); `None`
+    /// where the viscosity is uniform and the flow incompressible (it vanishes)
+    pub explicit_source: Option<&'a [f64]>,
 }
 
 /// Per-node wall closures that replace a side's single [`SideBc`] (wall models whose
@@ -164,17 +170,6 @@ pub(crate) fn add_wall_face(
     }
 }
 
-/// Upwind bulk density on the face between cells `lo` and `hi` for a velocity `vel`
-/// (positive from lo to hi).
-#[inline]
-fn upwind(rho_eps: &[f64], lo: usize, hi: usize, vel: f64) -> f64 {
-    if vel >= 0.0 {
-        rho_eps[lo]
-    } else {
-        rho_eps[hi]
-    }
-}
-
 /// Assembles the u-momentum system of one phase on the (nx+1) × ny block of x-faces,
 /// without relaxation. Rows of fixed nodes (wall normal velocities) read u = 0.
 pub fn assemble_u(
@@ -202,14 +197,32 @@ pub fn assemble_u(
         } else if i == nx {
             rho_eps[nx - 1 + nx * j]
         } else {
-            upwind(rho_eps, i - 1 + nx * j, i + nx * j, vel)
+            let row = nx * j;
+            face_value(
+                ctx.scheme,
+                rho_eps,
+                (i >= 2).then(|| i - 2 + row),
+                i - 1 + row,
+                i + row,
+                (i + 1 < nx).then(|| i + 1 + row),
+                vel,
+            )
         };
         re * vel * dy[j]
     };
     // scalar-cell y-face mass flux at v-node (i, j), 1 ≤ j < ny
     let y_face_flux = |i: usize, j: usize| -> f64 {
         let vel = v[i + nx * j];
-        upwind(rho_eps, i + nx * (j - 1), i + nx * j, vel) * vel * dx[i]
+        face_value(
+            ctx.scheme,
+            rho_eps,
+            (j >= 2).then(|| i + nx * (j - 2)),
+            i + nx * (j - 1),
+            i + nx * j,
+            (j + 1 < ny).then(|| i + nx * (j + 1)),
+            vel,
+        ) * vel
+            * dx[i]
     };
     for j in 0..ny {
         for i in 1..=nx {
@@ -315,6 +328,9 @@ pub fn assemble_u(
             if let (Some(ps), Some(w), Some(e)) = (phase.solids_pressure, west, east) {
                 a.b[k] += (ps[w + nx * j] - ps[e + nx * j]) * dy[j];
             }
+            if let Some(tau) = phase.explicit_source {
+                a.b[k] += tau[k];
+            }
         }
     }
 }
@@ -344,13 +360,31 @@ pub fn assemble_v(
         } else if j == ny {
             rho_eps[i + nx * (ny - 1)]
         } else {
-            upwind(rho_eps, i + nx * (j - 1), i + nx * j, vel)
+            face_value(
+                ctx.scheme,
+                rho_eps,
+                (j >= 2).then(|| i + nx * (j - 2)),
+                i + nx * (j - 1),
+                i + nx * j,
+                (j + 1 < ny).then(|| i + nx * (j + 1)),
+                vel,
+            )
         };
         re * vel * dx[i]
     };
     let x_face_flux = |i: usize, j: usize| -> f64 {
         let vel = u[i + (nx + 1) * j];
-        upwind(rho_eps, i - 1 + nx * j, i + nx * j, vel) * vel * dy[j]
+        let row = nx * j;
+        face_value(
+            ctx.scheme,
+            rho_eps,
+            (i >= 2).then(|| i - 2 + row),
+            i - 1 + row,
+            i + row,
+            (i + 1 < nx).then(|| i + 1 + row),
+            vel,
+        ) * vel
+            * dy[j]
     };
     for j in 0..my {
         for i in 1..nx {
@@ -446,6 +480,9 @@ pub fn assemble_v(
             a.b[k] += eps_face * (p_s - p_n) * dx[i];
             if let (Some(ps), Some(s), Some(n)) = (phase.solids_pressure, south, north) {
                 a.b[k] += (ps[i + nx * s] - ps[i + nx * n]) * dx[i];
+            }
+            if let Some(tau) = phase.explicit_source {
+                a.b[k] += tau[k];
             }
         }
     }

@@ -321,6 +321,10 @@ trait CaseSolver {
     }
     /// h_w^u of the floor's velocity node nearest to `x` (the wall probe of paper Fig. 9),
     /// `None` where the floor has no state-dependent wall model.
+    /// wall time per part of the iteration, if the solver keeps it
+    fn time_profile(&self) -> Vec<(String, f64)> {
+        Vec::new()
+    }
     fn floor_h_u(&self, _x: f64) -> Option<f64> {
         None
     }
@@ -521,6 +525,14 @@ impl CaseSolver for TwoFluidCase {
             .sum()
     }
 
+    fn time_profile(&self) -> Vec<(String, f64)> {
+        self.solver
+            .profile()
+            .parts()
+            .iter()
+            .map(|(name, t)| (name.to_string(), *t))
+            .collect()
+    }
     fn floor_h_u(&self, x: f64) -> Option<f64> {
         let faces = self.solver.grid().x.faces();
         let k = (0..faces.len())
@@ -895,6 +907,7 @@ pub fn run_case(
         solids_mass_change: 0.0,
         max_mass_imbalance: 0.0,
         status: RunStatus::Running,
+        profile: Vec::new(),
     };
     let mut profiles: Vec<(f64, Vec<f64>, usize)> = case
         .monitors
@@ -1013,6 +1026,7 @@ pub fn run_case(
     }
     summary.simulated_time = time;
     summary.wall_time = started.elapsed().as_secs_f64();
+    summary.profile = solver.time_profile();
     if summary.status == RunStatus::Running {
         summary.status = RunStatus::Completed;
     }

@@ -382,6 +382,7 @@ impl SinglePhase {
             volume_fraction: &self.ones,
             viscosity: &self.viscosity_cells,
             solids_pressure: None,
+            explicit_source: None,
         };
         assemble_u(
             &ctx,
@@ -433,6 +434,7 @@ impl SinglePhase {
             volume_fraction: &self.ones,
             viscosity: &self.viscosity_cells,
             solids_pressure: None,
+            explicit_source: None,
         };
         assemble_v(
             &ctx,

@@ -12,15 +12,23 @@
 //! 5. granular energy of each phase ([`crate::energy`]), θ ≥ 10⁻¹² m²/s²;
 //! 6. residuals (model-spec §4.11).
 //!
-//! Not yet in this version (issue 7 continues): the explicit stress cross terms of
-//! model-spec §4.4, the Johnson–Jackson and Jenkins walls (the walls here are no-slip,
-//! free-slip or user partial slip for the solids, with a zero-flux or user θ condition), the
-//! Schaeffer plastic pressure P* and the DIL_EP_S velocity averaging of dilute faces.
+//! Also: the explicit stress terms of model-spec §4.4 once per step ([`crate::stress`]);
+//! per-face Johnson–Jackson, revisited-JJ and Jenkins closures with MFIX's near-wall state
+//! (§3.5–3.8, [`TwoFluid::update_walls`]); the wall face velocities in the strain rates of
+//! wall cells (§4.4); the continuity face values of the convection scheme (§4.2); the
+//! DIL_EP_S treatment of dilute faces and cells (§2.7, §4.8).
+//!
+//! Not yet: the Schaeffer plastic pressure P* (cases with Schaeffer friction are refused
+//! before any step), dry (gas-free) cases, the gas's own explicit stress terms (μ_g ∇(∇·u_g),
+//! negligible for air).
+
+use std::time::Instant;
 
 use runout_closures::{evaluate, CellState, ClosureParams};
 use runout_linsolve::{build, LinSolveError, LinearSolver, LinearSolverKind, Pattern, Stencil5};
 use runout_mesh::{Grid, Side, Sides};
-use runout_walls::{MomentumWallState, RobinFace, SolidsWallModel, ThetaWallState};
+use runout_walls::state::{corner_theta, face_theta};
+use runout_walls::{MomentumWallState, RobinFace, SolidsWallModel, ThetaWallState, WallStrain};
 
 use crate::energy::{assemble_theta, EnergyInputs};
 use crate::kinematics::{strain_rates, Strain, WallVelocities};
@@ -29,7 +37,7 @@ use crate::momentum::{
 };
 use crate::pea::eliminate_node;
 use crate::single_phase::{Fluid, SideBc};
-use crate::transport::{FaceData, Scheme};
+use crate::transport::{face_value, FaceData, Scheme};
 use crate::volume_fraction::{apply_correction, assemble_correction, CorrectionInputs};
 
 /// θ floor after each solve (model-spec §1.3, MFIX `adjust_theta.f`).
@@ -102,6 +110,7 @@ pub struct SolidsFields {
     /// solids pressure P_s = P_kin + P_fric per cell [Pa]
     pub p_s: Vec<f64>,
     mu: Vec<f64>,
+    lambda: Vec<f64>,
     kappa: Vec<f64>,
     k_cp: Vec<f64>,
     f_gs: Vec<f64>,
@@ -111,6 +120,13 @@ pub struct SolidsFields {
     gamma_over_theta: Vec<f64>,
     j_slip: Vec<f64>,
     strain: Vec<Strain>,
+    /// tangential velocity on the wall faces of the south/north rows (per column) and the
+    /// west/east columns (per row), from the wall closures (model-spec §3.2): what MFIX's
+    /// ghost cells put into the strain rates of the wall cells (§4.4)
+    wall_face_velocity: Sides<Vec<f64>>,
+    /// explicit stress sources of the u and v equations, once per step (model-spec §4.4)
+    tau_u: Vec<f64>,
+    tau_v: Vec<f64>,
     tr_d: Vec<f64>,
     tr_d2: Vec<f64>,
     e_u: Vec<f64>,
@@ -140,6 +156,74 @@ pub struct TwoFluidResiduals {
     pub solids_mass: f64,
     /// θ equations, Σ|residual| / Σ|a_P θ_P|, summed over phases
     pub theta: f64,
+}
+
+/// Wall time spent in each part of the outer iteration since the solver was built \[s\]
+/// (issue 9: where the time goes). Timers are `Instant`s around whole loops, a few tens of
+/// nanoseconds per call.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Profile {
+    /// closures per cell (KT, friction, drag), strain rates, wall face velocities
+    pub closures: f64,
+    /// state-dependent wall closures (JJ, revisited JJ, Jenkins)
+    pub walls: f64,
+    /// explicit stress sources (once per step)
+    pub stress: f64,
+    /// momentum assembly of every phase and the partial elimination
+    pub momentum_assembly: f64,
+    /// momentum linear solves
+    pub momentum_solve: f64,
+    /// ε-correction assembly and update
+    pub eps_assembly: f64,
+    /// ε-correction linear solves
+    pub eps_solve: f64,
+    /// gas pressure-correction assembly and update
+    pub pressure_assembly: f64,
+    /// gas pressure-correction linear solves
+    pub pressure_solve: f64,
+    /// granular-energy assembly
+    pub theta_assembly: f64,
+    /// granular-energy linear solves
+    pub theta_solve: f64,
+}
+
+impl Profile {
+    /// The parts by name, in the order of the outer iteration.
+    pub fn parts(&self) -> [(&'static str, f64); 11] {
+        [
+            ("closures", self.closures),
+            ("walls", self.walls),
+            ("stress", self.stress),
+            ("momentum_assembly", self.momentum_assembly),
+            ("momentum_solve", self.momentum_solve),
+            ("eps_assembly", self.eps_assembly),
+            ("eps_solve", self.eps_solve),
+            ("pressure_assembly", self.pressure_assembly),
+            ("pressure_solve", self.pressure_solve),
+            ("theta_assembly", self.theta_assembly),
+            ("theta_solve", self.theta_solve),
+        ]
+    }
+
+    /// Sum of all parts \[s\].
+    pub fn total(&self) -> f64 {
+        self.closures
+            + self.walls
+            + self.stress
+            + self.momentum_assembly
+            + self.momentum_solve
+            + self.eps_assembly
+            + self.eps_solve
+            + self.pressure_assembly
+            + self.pressure_solve
+            + self.theta_assembly
+            + self.theta_solve
+    }
+}
+
+/// Seconds since `t`.
+fn since(t: Instant) -> f64 {
+    t.elapsed().as_secs_f64()
 }
 
 /// Largest number of solids phases (the per-node partial-elimination work arrays are fixed
@@ -202,6 +286,11 @@ pub struct TwoFluid {
     solver_eps: Box<dyn LinearSolver>,
     solver_theta: Box<dyn LinearSolver>,
     pressure_pinned: bool,
+    /// the closures were evaluated at the current iterate (the start of a step) and need
+    /// not be evaluated again by the next outer iteration
+    closures_fresh: bool,
+    /// where the time went
+    profile: Profile,
 }
 
 fn lin(equation: &str) -> impl Fn(LinSolveError) -> TwoFluidError + '_ {
@@ -281,6 +370,7 @@ impl TwoFluid {
                 rho_eps_old: vec![0.0; n],
                 p_s: vec![0.0; n],
                 mu: vec![0.0; n],
+                lambda: vec![0.0; n],
                 kappa: vec![0.0; n],
                 k_cp: vec![0.0; n],
                 f_gs: vec![0.0; n],
@@ -290,6 +380,14 @@ impl TwoFluid {
                 gamma_over_theta: vec![0.0; n],
                 j_slip: vec![0.0; n],
                 strain: vec![Strain::default(); n],
+                wall_face_velocity: Sides {
+                    west: vec![0.0; ny],
+                    east: vec![0.0; ny],
+                    south: vec![0.0; nx],
+                    north: vec![0.0; nx],
+                },
+                tau_u: vec![0.0; (nx + 1) * ny],
+                tau_v: vec![0.0; nx * (ny + 1)],
                 tr_d: vec![0.0; n],
                 tr_d2: vec![0.0; n],
                 e_u: vec![0.0; (nx + 1) * ny],
@@ -333,6 +431,8 @@ impl TwoFluid {
             solver_eps,
             solver_theta,
             pressure_pinned,
+            closures_fresh: false,
+            profile: Profile::default(),
             grid,
             gas,
             gas_walls,
@@ -404,8 +504,14 @@ impl TwoFluid {
     /// Step 1: closures per cell and phase at the current iterate.
     fn update_closures(&mut self) {
         let (nx, ny) = (self.grid.nx(), self.grid.ny());
-        let walls = WallVelocities::default();
         for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
+            let on_wall = wall_face_velocities(&self.grid, spec, s);
+            let walls = WallVelocities {
+                south: on_wall.south.then_some(&s.wall_face_velocity.south[..]),
+                north: on_wall.north.then_some(&s.wall_face_velocity.north[..]),
+                west: on_wall.west.then_some(&s.wall_face_velocity.west[..]),
+                east: on_wall.east.then_some(&s.wall_face_velocity.east[..]),
+            };
             strain_rates(&self.grid, &s.u, &s.v, &walls, &mut s.strain);
             for j in 0..ny {
                 for i in 0..nx {
@@ -429,6 +535,7 @@ impl TwoFluid {
                     );
                     s.p_s[k] = c.stress.p_s;
                     s.mu[k] = c.stress.mu_s;
+                    s.lambda[k] = c.stress.lambda_s;
                     s.kappa[k] = c.kinetic.kappa_kin;
                     s.k_cp[k] = c.k_cp;
                     s.f_gs[k] = c.f_gs;
@@ -445,28 +552,46 @@ impl TwoFluid {
     }
 
     /// Per-face closures of the state-dependent walls from the current iterate (lagged one
-    /// outer iteration, model-spec §3.5 last line). The near-wall state is gathered as
-    /// model-spec §3.5/§3.6 describe, with two simplifications of this first version: the
-    /// ghost-row θ is taken equal to the fluid row's, and the slip is that of the previous
-    /// closure's face value.
-    fn update_walls(&mut self) {
+    /// outer iteration, model-spec §3.5 last line), with the near-wall state gathered as MFIX
+    /// does (model-spec §3.5, §3.6; `calc_grbdry.f`, `calc_s_ddot_s.f`, `bc_theta.f`). The
+    /// ghost values MFIX stores are those the previous closures imply ([`RobinFace::ghost`]):
+    /// - momentum, at each tangential-velocity node of the wall: εs interpolated between the
+    ///   two fluid cells; θ the mean of the ghost- and fluid-row means over those cells
+    ///   ([`corner_theta`]); the slip from the face value (mean of ghost and fluid); the
+    ///   strain rate at the wall location, with the normal derivative of the tangential
+    ///   velocity (U_F − U_G)/Δ, the normal derivative of the normal velocity from its value
+    ///   at the fluid cell centre and zero on the wall, and the derivative along the wall
+    ///   from the ghost/fluid-mean velocities at the two cell centres;
+    /// - θ, at each wall cell: the fluid cell's εs; θ the mean of ghost and fluid
+    ///   ([`face_theta`]); the slip from the ghost/fluid-mean tangential velocity at the cell
+    ///   centre.
+    ///
+    /// Gas–solids slips use the gas's own wall face values.
+    pub(crate) fn update_walls(&mut self) {
         let grid = &self.grid;
         let (nx, ny) = (grid.nx(), grid.ny());
         let (dx, dy) = (grid.x.widths(), grid.y.widths());
+        let (dxc, dyc) = (grid.x.face_spacing(), grid.y.face_spacing());
         for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
             for side in [Side::West, Side::East, Side::South, Side::North] {
                 let Some(model) = spec.wall_models.get(side) else {
                     continue;
                 };
                 let u_w = model.wall_velocity();
-                // along a south/north wall the tangential component is u (nodes i = 0..=nx,
-                // cells i−1 and i of the wall row); along west/east it is v
+                // along a south/north wall the tangential component is u (nodes 0..=nx,
+                // cells k−1 and k of the wall row); along west/east it is v
                 let horizontal = matches!(side, Side::South | Side::North);
-                let (nodes, row) = match side {
-                    Side::South => (nx + 1, 0),
-                    Side::North => (nx + 1, ny - 1),
-                    Side::West => (ny + 1, 0),
-                    Side::East => (ny + 1, nx - 1),
+                // +1 where the wall is on the low side of the fluid (south, west)
+                let sign = if matches!(side, Side::South | Side::West) {
+                    1.0
+                } else {
+                    -1.0
+                };
+                let (row, n_cells) = match side {
+                    Side::South => (0, nx),
+                    Side::North => (ny - 1, nx),
+                    Side::West => (0, ny),
+                    Side::East => (nx - 1, ny),
                 };
                 let cell = |along: usize| {
                     if horizontal {
@@ -475,60 +600,103 @@ impl TwoFluid {
                         row + nx * along
                     }
                 };
-                let n_cells = if horizontal { nx } else { ny };
                 let delta = if horizontal { dy[row] } else { dx[row] };
-                // reuse last iteration's closures (allocated on first use only): each node
-                // reads its previous face value for the lagged slip, then is overwritten; a
-                // first evaluation starts from zero gradient, whose face value is the fluid's
+                let along_spacing = if horizontal { dxc } else { dyc };
+                // tangential velocity of phase field `f` at node k of the fluid row
+                let tangential = |f_u: &[f64], f_v: &[f64], k: usize| {
+                    if horizontal {
+                        f_u[k + (nx + 1) * row]
+                    } else {
+                        f_v[row + nx * k]
+                    }
+                };
+                // normal velocity at the fluid cell centre (zero on the wall face)
+                let normal_centre = |c: usize| {
+                    let (i, j) = (c % nx, c / nx);
+                    if horizontal {
+                        0.5 * (s.v[i + nx * j] + s.v[i + nx * (j + 1)])
+                    } else {
+                        0.5 * (s.u[i + (nx + 1) * j] + s.u[i + 1 + (nx + 1) * j])
+                    }
+                };
+                let gas_face = match self.gas_walls.get(side) {
+                    SideBc::Wall(face) => Some(*face),
+                    _ => None,
+                };
+                let gas_face_value = |vel: f64| gas_face.map_or(vel, |f| f.face_value(vel, delta));
+                let face_velocity = match side {
+                    Side::West => &s.wall_face_velocity.west,
+                    Side::East => &s.wall_face_velocity.east,
+                    Side::South => &s.wall_face_velocity.south,
+                    Side::North => &s.wall_face_velocity.north,
+                };
                 let (velocity_slot, theta_slot) = match side {
                     Side::West => (&mut s.wall_velocity.west, &mut s.wall_theta.west),
                     Side::East => (&mut s.wall_velocity.east, &mut s.wall_theta.east),
                     Side::South => (&mut s.wall_velocity.south, &mut s.wall_theta.south),
                     Side::North => (&mut s.wall_velocity.north, &mut s.wall_theta.north),
                 };
+                // last iteration's closures (allocated on first use only); a first
+                // evaluation starts from zero gradient (ghost = fluid)
                 let mut faces = velocity_slot
                     .take()
-                    .unwrap_or_else(|| vec![RobinFace::ZERO_GRADIENT; nodes]);
+                    .unwrap_or_else(|| vec![RobinFace::ZERO_GRADIENT; n_cells + 1]);
                 let mut theta_faces = theta_slot
                     .take()
                     .unwrap_or_else(|| vec![RobinFace::ZERO_GRADIENT; n_cells]);
-                for k in 0..nodes {
-                    let pair = [k.checked_sub(1), (k < n_cells).then_some(k)];
-                    let cells = pair.iter().flatten().map(|&a| cell(a));
-                    let count = pair.iter().flatten().count() as f64;
-                    let mean = |f: &[f64]| cells.clone().map(|c| f[c]).sum::<f64>() / count;
-                    let (vel, gas_vel) = if horizontal {
-                        (s.u[k + (nx + 1) * row], self.u_g[k + (nx + 1) * row])
-                    } else {
-                        (s.v[row + nx * k], self.v_g[row + nx * k])
-                    };
-                    let face_vel = faces[k].face_value(vel, delta);
-                    let strain = |c: usize| s.strain[c];
-                    let tr_d = cells.clone().map(|c| strain(c).tr_d).sum::<f64>() / count;
-                    let s_ddot_s = cells.clone().map(|c| strain(c).s_ddot_s).sum::<f64>() / count;
-                    // normal–normal deviatoric strain: D_nn − tr D/3 with D_nn from the cells
-                    let d_nn = cells
-                        .clone()
-                        .map(|c| {
-                            let (i, j) = (c % nx, c / nx);
+                let ghost_theta = |c_along: usize| {
+                    let c = cell(c_along);
+                    theta_faces[c_along].ghost(s.theta[c], delta)
+                };
+                for k in 0..=n_cells {
+                    // the cells beside node k (one at a corner)
+                    let lo = k.checked_sub(1);
+                    let hi = (k < n_cells).then_some(k);
+                    let (c_lo, c_hi) = (lo.or(hi).unwrap(), hi.or(lo).unwrap());
+                    let weight = match (lo, hi) {
+                        (Some(a), Some(_)) => {
                             if horizontal {
-                                (s.v[i + nx * (j + 1)] - s.v[i + nx * j]) / dy[j]
+                                grid.x.interpolation_weight(a)
                             } else {
-                                (s.u[i + 1 + (nx + 1) * j] - s.u[i + (nx + 1) * j]) / dx[i]
+                                grid.y.interpolation_weight(a)
                             }
-                        })
-                        .sum::<f64>()
-                        / count;
-                    let eps = mean(&s.eps);
+                        }
+                        _ => 0.5,
+                    };
+                    let interp =
+                        |f: &[f64]| weight * f[cell(c_lo)] + (1.0 - weight) * f[cell(c_hi)];
+                    let vel = tangential(&s.u, &s.v, k);
+                    let closure = faces[k];
+                    let ghost = closure.ghost(vel, delta);
+                    let face_vel = closure.face_value(vel, delta);
+                    // strain rate at the wall location (CALC_S_DDOT_S)
+                    let d_tangent_normal = sign * (vel - ghost) / delta;
+                    let d_normal =
+                        sign * 0.5 * (normal_centre(cell(c_lo)) + normal_centre(cell(c_hi)))
+                            / delta;
+                    let d_along = match (lo, hi) {
+                        (Some(a), Some(b)) => {
+                            (face_velocity[b] - face_velocity[a]) / along_spacing[k]
+                        }
+                        _ => 0.0,
+                    };
+                    // (along, normal) play the roles of (x, y) of a floor on every side
+                    let strain = WallStrain::planar_floor(d_along, d_tangent_normal, 0.0, d_normal);
+                    let theta_rows = corner_theta(
+                        0.5 * (ghost_theta(c_lo) + ghost_theta(c_hi)),
+                        0.5 * (s.theta[cell(c_lo)] + s.theta[cell(c_hi)]),
+                    );
+                    let gas_vel = gas_face_value(tangential(&self.u_g, &self.v_g, k));
                     let state = MomentumWallState {
-                        eps_s_fluid: eps,
-                        eps_s: eps,
-                        theta: mean(&s.theta),
+                        // MFIX's IJK2 for U(i) is the cell west of the face (cell i)
+                        eps_s_fluid: s.eps[cell(c_lo)],
+                        eps_s: interp(&s.eps),
+                        theta: theta_rows,
                         slip: (face_vel - u_w).abs(),
-                        gas_slip: (gas_vel - vel).abs(),
-                        tr_d,
-                        s_ddot_s,
-                        s_nn: d_nn - tr_d / 3.0,
+                        gas_slip: (gas_vel - face_vel).abs(),
+                        tr_d: strain.tr_d,
+                        s_ddot_s: strain.s_ddot_s,
+                        s_nn: strain.s_nn,
                     };
                     let wall = model.momentum(&state, &spec.params);
                     if side == Side::South {
@@ -539,23 +707,19 @@ impl TwoFluid {
                 for along in 0..n_cells {
                     let c = cell(along);
                     let (i, j) = (c % nx, c / nx);
-                    let (vel, gas_vel) = if horizontal {
-                        (
-                            0.5 * (s.u[i + (nx + 1) * j] + s.u[i + 1 + (nx + 1) * j]),
-                            0.5 * (self.u_g[i + (nx + 1) * j] + self.u_g[i + 1 + (nx + 1) * j]),
-                        )
+                    let gas_centre = if horizontal {
+                        0.5 * (gas_face_value(self.u_g[i + (nx + 1) * j])
+                            + gas_face_value(self.u_g[i + 1 + (nx + 1) * j]))
                     } else {
-                        (
-                            0.5 * (s.v[c] + s.v[c + nx]),
-                            0.5 * (self.v_g[c] + self.v_g[c + nx]),
-                        )
+                        0.5 * (gas_face_value(self.v_g[c]) + gas_face_value(self.v_g[c + nx]))
                     };
                     let state = ThetaWallState {
                         eps_s: s.eps[c],
-                        theta: s.theta[c],
-                        slip: (vel - u_w).abs(),
-                        gas_slip: (gas_vel - vel).abs(),
+                        theta: face_theta(theta_faces[along].ghost(s.theta[c], delta), s.theta[c]),
+                        slip: (face_velocity[along] - u_w).abs(),
+                        gas_slip: (gas_centre - face_velocity[along]).abs(),
                     };
+                    // this cell's θ ghost was read by its two nodes above and just now
                     theta_faces[along] = model.granular_temperature(&state, &spec.params).face;
                 }
                 match side {
@@ -580,12 +744,26 @@ impl TwoFluid {
 
     /// One outer iteration with time step `dt`.
     pub fn outer_iteration(&mut self, dt: f64) -> Result<TwoFluidResiduals, TwoFluidError> {
-        self.update_closures();
+        if !std::mem::take(&mut self.closures_fresh) {
+            let t = Instant::now();
+            self.update_closures();
+            self.profile.closures += since(t);
+        }
+        let t = Instant::now();
         self.update_walls();
+        self.profile.walls += since(t);
+        let t = Instant::now();
         let momentum = self.momentum(dt)?;
+        self.profile.momentum_assembly += since(t);
+        let t = Instant::now();
         let solids_mass = self.volume_fraction_correction(dt)?;
+        self.profile.eps_assembly += since(t);
+        let t = Instant::now();
         let gas_mass = self.pressure_correction(dt)?;
+        self.profile.pressure_assembly += since(t);
+        let t = Instant::now();
         let theta = self.granular_energy(dt)?;
+        self.profile.theta_assembly += since(t);
         Ok(TwoFluidResiduals {
             momentum,
             gas_mass,
@@ -616,6 +794,9 @@ impl TwoFluid {
             volume_fraction: &self.eps_g,
             viscosity: &self.mu_g,
             solids_pressure: None,
+            // the gas's own cross terms are left out: with uniform μ_g they reduce to
+            // μ_g ∇(∇·u_g), negligible here (μ_g = 1.8e-5 Pa s)
+            explicit_source: None,
         };
         assemble_u(
             &ctx_gas,
@@ -651,6 +832,7 @@ impl TwoFluid {
                 volume_fraction: &s.eps,
                 viscosity: &s.mu,
                 solids_pressure: Some(&s.p_s),
+                explicit_source: Some(&s.tau_u),
             };
             assemble_u(
                 &ctx,
@@ -663,7 +845,10 @@ impl TwoFluid {
             );
             assemble_v(
                 &ctx,
-                &fields,
+                &PhaseFields {
+                    explicit_source: Some(&s.tau_v),
+                    ..fields
+                },
                 &s.u,
                 &s.v,
                 &s.v_old,
@@ -720,12 +905,21 @@ impl TwoFluid {
                         } else {
                             (&s.a_v, &s.v)
                         };
-                        // a face with εs ≤ DIL_EP_S on both sides carries no solids momentum
-                        // (MFIX keeps its velocity, model-spec §2.7)
-                        dilute[p] = c0
-                            .map_or(0.0, |c| s.eps[c])
-                            .max(c1.map_or(0.0, |c| s.eps[c]))
-                            <= DIL_EP_S;
+                        // a face whose interpolated εs ≤ DIL_EP_S carries no solids momentum
+                        // (MFIX `source_u_s.f`, model-spec §2.7): its velocity is set below
+                        let eps_face = match (c0, c1) {
+                            (Some(a), Some(b)) => {
+                                let w = if dir == 0 {
+                                    grid.x.interpolation_weight(i - 1)
+                                } else {
+                                    grid.y.interpolation_weight(j - 1)
+                                };
+                                w * s.eps[a] + (1.0 - w) * s.eps[b]
+                            }
+                            (Some(c), None) | (None, Some(c)) => s.eps[c],
+                            (None, None) => 0.0,
+                        };
+                        dilute[p] = eps_face <= DIL_EP_S;
                         a_in[p + 1] = if dilute[p] { 1.0 } else { a.a_p[k] };
                         r_in[p + 1] = if dilute[p] {
                             field[k]
@@ -781,7 +975,7 @@ impl TwoFluid {
                             (&mut s.a_v, &s.v, &mut s.e_v)
                         };
                         if dilute[p] {
-                            fixed_row(a, k, field[k]);
+                            dilute_row(a, k, field[k], c0.or(c1), &s.eps, (mx, my), nx);
                             e[k] = 0.0;
                             continue;
                         }
@@ -828,6 +1022,7 @@ impl TwoFluid {
                 }
             }
         }
+        let t = Instant::now();
         self.solver_u
             .setup_and_solve(&self.a_ug, &mut self.u_g)
             .map_err(lin("gas u momentum"))?;
@@ -842,6 +1037,10 @@ impl TwoFluid {
                 .setup_and_solve(&s.a_v, &mut s.v)
                 .map_err(lin("solids v momentum"))?;
         }
+        // solves are reported apart from the assembly that encloses them
+        let solve = since(t);
+        self.profile.momentum_solve += solve;
+        self.profile.momentum_assembly -= solve;
         Ok(residual)
     }
 
@@ -860,13 +1059,18 @@ impl TwoFluid {
                 e_v: &s.e_v,
                 k_cp: &s.k_cp,
                 dt,
+                scheme: self.settings.scheme,
             };
             assemble_correction(&self.grid, &inputs, &mut s.imbalance, &mut s.a_eps);
             total += s.imbalance.iter().map(|x| x.abs()).sum::<f64>() / n;
             s.eps_prime.iter_mut().for_each(|x| *x = 0.0);
+            let t = Instant::now();
             self.solver_eps
                 .setup_and_solve(&s.a_eps, &mut s.eps_prime)
                 .map_err(lin("solids volume fraction"))?;
+            let solve = since(t);
+            self.profile.eps_solve += solve;
+            self.profile.eps_assembly -= solve;
             apply_correction(
                 &self.grid,
                 &mut s.eps_prime,
@@ -891,15 +1095,21 @@ impl TwoFluid {
         let (dx, dy) = (grid.x.widths(), grid.y.widths());
         let rho = self.gas.density;
         let eps = &self.eps_g;
-        let upwind = |vel: f64, lo: Option<usize>, hi: Option<usize>| -> f64 {
+        let scheme = self.settings.scheme;
+        // face εg (MFIX `DISCRETIZE(1)`, model-spec §4.2): upwind or Superbee between the
+        // cells lo and hi, `stride` apart; the inside cell's on the domain boundary
+        let face = |vel: f64, lo: Option<usize>, hi: Option<usize>, stride: usize| -> f64 {
             match (lo, hi) {
-                (Some(l), Some(h)) => {
-                    if vel >= 0.0 {
-                        eps[l]
-                    } else {
-                        eps[h]
-                    }
-                }
+                (Some(l), Some(h)) => face_value(
+                    scheme,
+                    eps,
+                    l.checked_sub(stride)
+                        .filter(|&x| same_line(x, l, stride, nx)),
+                    l,
+                    h,
+                    Some(h + stride).filter(|&x| x < eps.len() && same_line(h, x, stride, nx)),
+                    vel,
+                ),
                 (Some(c), None) | (None, Some(c)) => eps[c],
                 (None, None) => 0.0,
             }
@@ -915,10 +1125,10 @@ impl TwoFluid {
                 let east = (i + 1 < nx).then_some(k + 1);
                 let south = (j > 0).then(|| k - nx);
                 let north = (j + 1 < ny).then_some(k + nx);
-                let ew = upwind(self.u_g[kw], west, Some(k));
-                let ee = upwind(self.u_g[ke], Some(k), east);
-                let es = upwind(self.v_g[ks], south, Some(k));
-                let en = upwind(self.v_g[kn], Some(k), north);
+                let ew = face(self.u_g[kw], west, Some(k), 1);
+                let ee = face(self.u_g[ke], Some(k), east, 1);
+                let es = face(self.v_g[ks], south, Some(k), nx);
+                let en = face(self.v_g[kn], Some(k), north, nx);
                 let volume = dx[i] * dy[j];
                 let b = rho
                     * (-(eps[k] - self.eps_g_old[k]) * volume / dt + ew * self.u_g[kw] * dy[j]
@@ -944,9 +1154,13 @@ impl TwoFluid {
             }
         }
         self.p_corr.iter_mut().for_each(|x| *x = 0.0);
+        let t = Instant::now();
         self.solver_p
             .setup_and_solve(&self.a_p, &mut self.p_corr)
             .map_err(lin("gas pressure correction"))?;
+        let solve = since(t);
+        self.profile.pressure_solve += solve;
+        self.profile.pressure_assembly -= solve;
         let pc = &self.p_corr;
         for j in 0..ny {
             for i in 0..=nx {
@@ -976,6 +1190,7 @@ impl TwoFluid {
     /// Step 5: granular energy of each solids phase (model-spec §4.8).
     fn granular_energy(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
         let relax = self.settings.relax_theta;
+        let nx = self.grid.nx();
         let mut residual = 0.0;
         for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
             let inputs = EnergyInputs {
@@ -1009,8 +1224,9 @@ impl TwoFluid {
             let (mut num, mut den) = (0.0, 0.0);
             for k in 0..s.theta.len() {
                 if s.eps[k] <= DIL_EP_S {
-                    // MFIX gives such cells the mean θ of denser neighbours (§4.8); kept here
-                    fixed_row(a, k, s.theta[k]);
+                    // the mean θ of the neighbours with εs > DIL_EP_S, or kept if none
+                    // (model-spec §4.8, MFIX `source_phi.f`)
+                    dilute_cell_row(a, k, s.theta[k], &s.eps, nx);
                     continue;
                 }
                 let nb = neighbour_sum(a, &s.theta, k) - a.a_p[k] * s.theta[k];
@@ -1021,9 +1237,13 @@ impl TwoFluid {
                 a.a_p[k] = ap;
             }
             residual += if den > 0.0 { num / den } else { num };
+            let t = Instant::now();
             self.solver_theta
                 .setup_and_solve(&s.a_theta, &mut s.theta)
                 .map_err(lin("granular energy"))?;
+            let solve = since(t);
+            self.profile.theta_solve += solve;
+            self.profile.theta_assembly -= solve;
             s.theta.iter_mut().for_each(|t| *t = t.max(THETA_SMALL));
         }
         Ok(residual)
@@ -1061,6 +1281,13 @@ impl TwoFluid {
         max_iterations: usize,
     ) -> Result<TwoFluidStep, TwoFluidError> {
         self.begin_step();
+        let t = Instant::now();
+        self.update_closures();
+        self.profile.closures += since(t);
+        let t = Instant::now();
+        self.update_stress_sources();
+        self.profile.stress += since(t);
+        self.closures_fresh = true;
         let (mut gas0, mut solids0) = (None, None);
         let mut out = TwoFluidStep {
             iterations: 0,
@@ -1120,6 +1347,32 @@ impl TwoFluid {
         Ok(out)
     }
 
+    /// The explicit stress sources of every solids phase from the current velocities and
+    /// closures (model-spec §4.4: once per step, at its start).
+    fn update_stress_sources(&mut self) {
+        let fixed_u = self.a_ug.pattern().fixed_mask();
+        let fixed_v = self.a_vg.pattern().fixed_mask();
+        for s in &mut self.solids {
+            crate::stress::explicit_stress(
+                &self.grid,
+                &s.u,
+                &s.v,
+                &s.mu,
+                &s.lambda,
+                &s.tr_d,
+                fixed_u,
+                fixed_v,
+                &mut s.tau_u,
+                &mut s.tau_v,
+            );
+        }
+    }
+
+    /// Wall time per part of the outer iteration so far.
+    pub fn profile(&self) -> Profile {
+        self.profile
+    }
+
     /// Sets gravity (a schedule may tilt it during a run).
     pub fn set_gravity(&mut self, gravity: (f64, f64)) {
         self.gravity = gravity;
@@ -1135,6 +1388,139 @@ impl TwoFluid {
     pub fn gravity(&self) -> (f64, f64) {
         self.gravity
     }
+}
+
+/// Fills `s.wall_face_velocity` with the tangential solids velocity on each wall face (the
+/// face value of the wall closure, model-spec §3.2: per-node closures of a state-dependent
+/// wall, else the side's fixed closure), averaged from the two velocity nodes of each
+/// boundary cell to its centre (MFIX AVG_X_E). Returns which sides are walls.
+fn wall_face_velocities(grid: &Grid, spec: &SolidsSpec, s: &mut SolidsFields) -> Sides<bool> {
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let (dx, dy) = (grid.x.widths(), grid.y.widths());
+    let mut on_wall = Sides {
+        west: false,
+        east: false,
+        south: false,
+        north: false,
+    };
+    for side in [Side::West, Side::East, Side::South, Side::North] {
+        let per_node = match side {
+            Side::West => s.wall_velocity.west.as_ref(),
+            Side::East => s.wall_velocity.east.as_ref(),
+            Side::South => s.wall_velocity.south.as_ref(),
+            Side::North => s.wall_velocity.north.as_ref(),
+        };
+        let fixed = match spec.walls.get(side) {
+            SideBc::Wall(face) => Some(*face),
+            _ => None,
+        };
+        if per_node.is_none() && fixed.is_none() {
+            continue;
+        }
+        let closure = |k: usize| per_node.map_or_else(|| fixed.unwrap(), |f| f[k]);
+        let (out, n_cells) = match side {
+            Side::West => (&mut s.wall_face_velocity.west, ny),
+            Side::East => (&mut s.wall_face_velocity.east, ny),
+            Side::South => (&mut s.wall_face_velocity.south, nx),
+            Side::North => (&mut s.wall_face_velocity.north, nx),
+        };
+        for c in 0..n_cells {
+            let face = |node: usize| match side {
+                Side::South => closure(node).face_value(s.u[node], dy[0]),
+                Side::North => {
+                    closure(node).face_value(s.u[node + (nx + 1) * (ny - 1)], dy[ny - 1])
+                }
+                Side::West => closure(node).face_value(s.v[nx * node], dx[0]),
+                Side::East => closure(node).face_value(s.v[nx - 1 + nx * node], dx[nx - 1]),
+            };
+            out[c] = 0.5 * (face(c) + face(c + 1));
+        }
+        match side {
+            Side::West => on_wall.west = true,
+            Side::East => on_wall.east = true,
+            Side::South => on_wall.south = true,
+            Side::North => on_wall.north = true,
+        }
+    }
+    on_wall
+}
+
+/// The row of a dilute solids velocity node k (model-spec §2.7, MFIX `source_u_s.f`): the
+/// plain mean of its neighbour nodes whose test cell — the neighbour of the node's low-side
+/// cell `cell` in that direction (MFIX's IJK) — holds εs > DIL_EP_S; with no such neighbour
+/// the node keeps `current`. Neighbours on fixed (wall) nodes do not count. `(mx, my)` is
+/// the node block, `nx` the cells per row.
+fn dilute_row(
+    a: &mut Stencil5,
+    k: usize,
+    current: f64,
+    cell: Option<usize>,
+    eps: &[f64],
+    (mx, my): (usize, usize),
+    nx: usize,
+) {
+    let ny = eps.len() / nx;
+    let (i, j) = (k % mx, k / mx);
+    fixed_row(a, k, current);
+    let Some(c) = cell else {
+        return;
+    };
+    let (ci, cj) = (c % nx, c / nx);
+    let dense = |ti: Option<usize>, tj: Option<usize>| match (ti, tj) {
+        (Some(ti), Some(tj)) if ti < nx && tj < ny => eps[ti + nx * tj] > DIL_EP_S,
+        _ => false,
+    };
+    // (neighbour node exists, its test cell is dense)
+    let west = i > 0 && dense(ci.checked_sub(1), Some(cj));
+    let east = i + 1 < mx && dense(Some(ci + 1), Some(cj));
+    let south = j > 0 && dense(Some(ci), cj.checked_sub(1));
+    let north = j + 1 < my && dense(Some(ci), Some(cj + 1));
+    let fixed = a.pattern().fixed_mask();
+    let (west, east, south, north) = (
+        west && !fixed[k - 1],
+        east && !fixed[k + 1],
+        south && !fixed[k - mx],
+        north && !fixed[k + mx],
+    );
+    let count = [west, east, south, north].iter().filter(|&&x| x).count();
+    if count == 0 {
+        return;
+    }
+    a.a_w[k] = if west { 1.0 } else { 0.0 };
+    a.a_e[k] = if east { 1.0 } else { 0.0 };
+    a.a_s[k] = if south { 1.0 } else { 0.0 };
+    a.a_n[k] = if north { 1.0 } else { 0.0 };
+    a.a_p[k] = count as f64;
+    a.b[k] = 0.0;
+}
+
+/// The θ row of a dilute cell k (εs ≤ DIL_EP_S): the plain mean of its neighbour cells with
+/// εs > DIL_EP_S, or `current` if there are none (model-spec §4.8).
+fn dilute_cell_row(a: &mut Stencil5, k: usize, current: f64, eps: &[f64], nx: usize) {
+    let n = eps.len();
+    let (i, j) = (k % nx, k / nx);
+    fixed_row(a, k, current);
+    let dense = |c: usize| eps[c] > DIL_EP_S;
+    let west = i > 0 && dense(k - 1);
+    let east = i + 1 < nx && dense(k + 1);
+    let south = j > 0 && dense(k - nx);
+    let north = k + nx < n && dense(k + nx);
+    let count = [west, east, south, north].iter().filter(|&&x| x).count();
+    if count == 0 {
+        return;
+    }
+    a.a_w[k] = if west { 1.0 } else { 0.0 };
+    a.a_e[k] = if east { 1.0 } else { 0.0 };
+    a.a_s[k] = if south { 1.0 } else { 0.0 };
+    a.a_n[k] = if north { 1.0 } else { 0.0 };
+    a.a_p[k] = count as f64;
+    a.b[k] = 0.0;
+}
+
+/// Whether cells `a` < `b`, `stride` apart, lie on one grid line (x lines: stride 1 within
+/// a row of `nx`; y lines: stride `nx`, always).
+fn same_line(a: usize, b: usize, stride: usize, nx: usize) -> bool {
+    stride != 1 || a / nx == b / nx
 }
 
 /// Mean of a cell field over the (one or two) cells beside a face.

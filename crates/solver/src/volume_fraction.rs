@@ -16,6 +16,8 @@
 use runout_linsolve::Stencil5;
 use runout_mesh::Grid;
 
+use crate::transport::{face_value, Scheme};
+
 /// Inputs of the correction equation of one solids phase.
 #[derive(Clone, Copy, Debug)]
 pub struct CorrectionInputs<'a> {
@@ -37,29 +39,91 @@ pub struct CorrectionInputs<'a> {
     pub k_cp: &'a [f64],
     /// time step [s]
     pub dt: f64,
+    /// scheme of the face volume fractions in the mass imbalance (MFIX `DISCRETIZE(2)`)
+    pub scheme: Scheme,
 }
 
 /// Net solids mass imbalance of every cell with the given velocities, ρs [(εs − εs⁰) V/Δt +
-/// Σ εs,upwind u·n A] [kg s⁻¹ per m depth], into `out`.
+/// Σ εs,face u·n A] [kg s⁻¹ per m depth], into `out`; the face values follow `x.scheme`
+/// ([`face_value`]; on the domain boundary the inside cell's).
 pub fn mass_imbalance(grid: &Grid, x: &CorrectionInputs<'_>, out: &mut [f64]) {
     let (nx, ny) = (grid.nx(), grid.ny());
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
     for j in 0..ny {
         for i in 0..nx {
             let k = i + nx * j;
-            let volume = dx[i] * dy[j];
-            let mut net = (x.eps[k] - x.eps_old[k]) * volume / x.dt;
-            for (vel, area, sign, nb) in faces(grid, x.u, x.v, i, j) {
-                let flux = sign * vel * area; // outward
-                let upwind = if flux >= 0.0 {
-                    x.eps[k]
-                } else {
-                    nb.map_or(x.eps[k], |n| x.eps[n])
-                };
-                net += upwind * flux;
-            }
-            out[k] = x.density * net;
+            out[k] = (x.eps[k] - x.eps_old[k]) * dx[i] * dy[j] / x.dt;
         }
+    }
+    for j in 0..ny {
+        let row = nx * j;
+        for i in 0..=nx {
+            let vel = x.u[i + (nx + 1) * j];
+            if vel == 0.0 {
+                continue;
+            }
+            let eps_face = if i == 0 || i == nx {
+                boundary_face(x.eps[i.min(nx - 1) + row], vel, i == 0)
+            } else {
+                face_value(
+                    x.scheme,
+                    x.eps,
+                    (i >= 2).then(|| i - 2 + row),
+                    i - 1 + row,
+                    i + row,
+                    (i + 1 < nx).then(|| i + 1 + row),
+                    vel,
+                )
+            };
+            let flux = eps_face * vel * dy[j];
+            if i > 0 {
+                out[i - 1 + row] += flux;
+            }
+            if i < nx {
+                out[i + row] -= flux;
+            }
+        }
+    }
+    for j in 0..=ny {
+        for i in 0..nx {
+            let vel = x.v[i + nx * j];
+            if vel == 0.0 {
+                continue;
+            }
+            let eps_face = if j == 0 || j == ny {
+                boundary_face(x.eps[i + nx * j.min(ny - 1)], vel, j == 0)
+            } else {
+                face_value(
+                    x.scheme,
+                    x.eps,
+                    (j >= 2).then(|| i + nx * (j - 2)),
+                    i + nx * (j - 1),
+                    i + nx * j,
+                    (j + 1 < ny).then(|| i + nx * (j + 1)),
+                    vel,
+                )
+            };
+            let flux = eps_face * vel * dx[i];
+            if j > 0 {
+                out[i + nx * (j - 1)] += flux;
+            }
+            if j < ny {
+                out[i + nx * j] -= flux;
+            }
+        }
+    }
+    out.iter_mut().for_each(|m| *m *= x.density);
+}
+
+/// εs on a domain-boundary face (an outlet; walls carry no normal velocity): the inside
+/// cell's value for outflow, zero for inflow (the gas outside carries no solids). `low` is
+/// true on the west/south side, where inflow is a positive velocity.
+fn boundary_face(inside: f64, vel: f64, low: bool) -> f64 {
+    let inflow = if low { vel > 0.0 } else { vel < 0.0 };
+    if inflow {
+        0.0
+    } else {
+        inside
     }
 }
 

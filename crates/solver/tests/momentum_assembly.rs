@@ -66,6 +66,7 @@ fn two_layer_couette_is_exact() {
         volume_fraction: &ones,
         viscosity: &viscosity,
         solids_pressure: None,
+        explicit_source: None,
     };
     let pattern = Pattern::new(nx + 1, ny).unwrap();
     let mut a = Stencil5::new(pattern.clone());

@@ -4,6 +4,7 @@
 
 use runout_linsolve::{build, LinearSolverKind, Pattern, Stencil5};
 use runout_mesh::{Axis, Grid, Segment};
+use runout_solver::transport::Scheme;
 use runout_solver::volume_fraction::{
     apply_correction, assemble_correction, mass_imbalance, CorrectionInputs,
 };
@@ -87,6 +88,7 @@ fn correct(k_cp_value: f64) -> (f64, f64) {
         e_v: &e_v,
         k_cp: &k_cp,
         dt,
+        scheme: Scheme::Upwind,
     };
     assemble_correction(&grid, &inputs, &mut imbalance, &mut a);
     let before = imbalance.iter().map(|x| x.abs()).sum::<f64>();
@@ -116,6 +118,7 @@ fn correct(k_cp_value: f64) -> (f64, f64) {
         e_v: &e_v,
         k_cp: &k_cp,
         dt,
+        scheme: Scheme::Upwind,
     };
     mass_imbalance(&grid, &after_inputs, &mut imbalance);
     let after = imbalance.iter().map(|x| x.abs()).sum::<f64>();

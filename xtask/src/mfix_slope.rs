@@ -1,0 +1,398 @@
+//! `cargo xtask verify mfix-slope`: family M against MFIX 21.3.2 (issue 9; cases.md
+//! "Family M").
+//!
+//! Runs cases/mfix-slope/jj.ron (MFIX's grid at `--fidelity paper`) once per thread count
+//! of `--threads` (rayon pool of that size, in this process), and prints at t = 0.3, 0.5
+//! and 0.8 s the front position and the εs-weighted mean solids x-velocity beside MFIX's,
+//! with the relative differences; fails if any differs by more than 5 %. Also prints the
+//! solids mass error, accepted and rejected steps, mean Δt, outer iterations per step, the
+//! CPU seconds per simulated second (getrusage of this process: user + system, all
+//! threads) beside MFIX's 490, and where the wall time went. Unless `--skip-variants`, the
+//! other floors (revisited JJ, Jenkins, user partial slip) run too, and their
+//! wall-adjacent solids velocity, θ and front at t = 0.3 s are compared. Everything goes to
+//! docs/mfix-slope.md as well.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+use anyhow::{bail, Context, Result};
+use runout_case::{load, Fidelity, Loaded, SourcedCase};
+use runout_output::RunSummary;
+use runout_solver::run_case;
+
+/// MFIX's results (cases.md "Family M"): (t, front x, ū_s).
+pub const MFIX: [(f64, f64, f64); 3] = [(0.3, 1.04, 1.25), (0.5, 1.66, 1.97), (0.8, 2.92, 3.01)];
+/// MFIX's cost: CPU s per simulated second, serial (cases.md).
+pub const MFIX_CPU_PER_SIMULATED_SECOND: f64 = 490.0;
+/// MFIX's rejected steps over the 1 s run (cases.md).
+pub const MFIX_REJECTED: u64 = 72;
+/// Largest relative difference allowed (issue 9).
+pub const TOLERANCE: f64 = 0.05;
+/// The time of the floor-variant comparison (issue 9, item 4) [s].
+const VARIANT_TIME: f64 = 0.3;
+/// εs above which a floor cell counts as part of the flow in the variant comparison.
+const FLOW_EPS: f64 = 0.01;
+
+/// Options of the check.
+pub struct Options {
+    /// fidelity (paper = MFIX's 200 × 50 grid)
+    pub fidelity: Fidelity,
+    /// rayon thread counts to time the JJ case with
+    pub threads: Vec<usize>,
+    /// skip the three other floors
+    pub skip_variants: bool,
+}
+
+/// CPU time of this process so far (user + system, all threads) [s].
+fn cpu_seconds() -> f64 {
+    // SAFETY: getrusage writes into the zeroed struct we own.
+    let mut usage: libc::rusage = unsafe { std::mem::zeroed() };
+    let rc = unsafe { libc::getrusage(libc::RUSAGE_SELF, &mut usage) };
+    if rc != 0 {
+        return f64::NAN;
+    }
+    let tv = |t: libc::timeval| t.tv_sec as f64 + t.tv_usec as f64 * 1e-6;
+    tv(usage.ru_utime) + tv(usage.ru_stime)
+}
+
+/// One timed run.
+struct Timed {
+    summary: RunSummary,
+    cpu: f64,
+    threads: usize,
+    dir: PathBuf,
+}
+
+fn load_one(file: &Path) -> Result<SourcedCase> {
+    match load(file).with_context(|| format!("loading {}", file.display()))? {
+        Loaded::Cases(mut cases) if cases.len() == 1 => Ok(cases.remove(0)),
+        _ => bail!("{} must hold exactly one case", file.display()),
+    }
+}
+
+fn run_timed(case: &SourcedCase, fidelity: Fidelity, threads: usize, root: &Path) -> Result<Timed> {
+    let dir = root
+        .join("runs")
+        .join(&case.case.name)
+        .join(format!("{}-threads{threads}", fidelity.name()));
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .context("building the thread pool")?;
+    let cpu0 = cpu_seconds();
+    let wall = Instant::now();
+    let mut last_print = Instant::now();
+    let summary = pool
+        .install(|| {
+            run_case(&case.case, fidelity, &dir, |p| {
+                if last_print.elapsed().as_secs_f64() > 10.0 {
+                    last_print = Instant::now();
+                    eprintln!(
+                        "  {} ({threads} thread(s)): t = {:.3} s, dt = {:.2e} s, {:.0} s wall",
+                        case.case.name,
+                        p.time,
+                        p.dt,
+                        wall.elapsed().as_secs_f64()
+                    );
+                }
+            })
+        })
+        .with_context(|| format!("running {}", case.case.name))?;
+    let cpu = cpu_seconds() - cpu0;
+    Ok(Timed {
+        summary,
+        cpu,
+        threads,
+        dir,
+    })
+}
+
+/// Rows (t, front, ū_s) of a run's bulk.csv.
+fn read_bulk(dir: &Path) -> Result<Vec<(f64, f64, f64)>> {
+    let path = dir.join("bulk.csv");
+    let mut reader =
+        csv::Reader::from_path(&path).with_context(|| format!("reading {}", path.display()))?;
+    let mut rows = Vec::new();
+    for record in reader.records() {
+        let r = record?;
+        let num = |i: usize| -> Result<f64> {
+            r.get(i)
+                .context("short row")?
+                .trim()
+                .parse::<f64>()
+                .with_context(|| format!("{}: bad number", path.display()))
+        };
+        rows.push((num(0)?, num(2)?, num(3)?));
+    }
+    Ok(rows)
+}
+
+/// Linear interpolation of (front, ū) at time t from bulk rows.
+pub fn at_time(rows: &[(f64, f64, f64)], t: f64) -> Option<(f64, f64)> {
+    let i = rows.iter().position(|r| r.0 >= t)?;
+    if i == 0 {
+        return Some((rows[0].1, rows[0].2));
+    }
+    let (a, b) = (rows[i - 1], rows[i]);
+    let w = if b.0 > a.0 {
+        (t - a.0) / (b.0 - a.0)
+    } else {
+        1.0
+    };
+    Some((a.1 + w * (b.1 - a.1), a.2 + w * (b.2 - a.2)))
+}
+
+/// Values of a named cell array of an ASCII `.vtr` file.
+pub fn vtr_array(text: &str, name: &str) -> Option<Vec<f64>> {
+    let tag = format!("Name=\"{name}\"");
+    let start = text.find(&tag)?;
+    let open = start + text[start..].find('>')? + 1;
+    let close = open + text[open..].find("</DataArray>")?;
+    text[open..close]
+        .split_whitespace()
+        .map(|v| v.parse().ok())
+        .collect()
+}
+
+/// The `.vtr` of a run's `fields.pvd` closest to time t, with its time.
+fn fields_near(dir: &Path, t: f64) -> Result<(f64, String)> {
+    let pvd = std::fs::read_to_string(dir.join("fields.pvd"))
+        .with_context(|| format!("reading {}/fields.pvd", dir.display()))?;
+    let mut best: Option<(f64, String)> = None;
+    for line in pvd.lines().filter(|l| l.contains("<DataSet")) {
+        let attr = |key: &str| -> Option<String> {
+            let s = line.find(&format!("{key}=\""))? + key.len() + 2;
+            let e = s + line[s..].find('"')?;
+            Some(line[s..e].to_string())
+        };
+        let (Some(time), Some(file)) = (attr("timestep"), attr("file")) else {
+            continue;
+        };
+        let time: f64 = time.parse()?;
+        if best
+            .as_ref()
+            .is_none_or(|(b, _)| (time - t).abs() < (b - t).abs())
+        {
+            best = Some((time, file));
+        }
+    }
+    let (time, file) = best.context("no fields in fields.pvd")?;
+    let text = std::fs::read_to_string(dir.join(&file))
+        .with_context(|| format!("reading {}", dir.join(&file).display()))?;
+    Ok((time, text))
+}
+
+/// Floor-row values at the field time nearest `t`: (time, εs-weighted mean u_s, εs-weighted
+/// mean θ, largest u_s) over the floor cells with εs > [`FLOW_EPS`].
+fn floor_row(dir: &Path, t: f64) -> Result<(f64, f64, f64, f64)> {
+    let (time, text) = fields_near(dir, t)?;
+    let eps = vtr_array(&text, "eps_s").context("eps_s missing")?;
+    let u = vtr_array(&text, "u_s").context("u_s missing")?;
+    let theta = vtr_array(&text, "theta").context("theta missing")?;
+    let extent = text
+        .split("WholeExtent=\"")
+        .nth(1)
+        .and_then(|s| s.split('"').next())
+        .context("WholeExtent missing")?;
+    let nx: usize = extent
+        .split_whitespace()
+        .nth(1)
+        .context("bad WholeExtent")?
+        .parse()?;
+    // u_s is written with three components per cell (VTK vectors) or one
+    let stride = u.len() / eps.len();
+    let (mut w, mut su, mut st, mut umax) = (0.0, 0.0, 0.0, 0.0_f64);
+    for i in 0..nx {
+        if eps[i] > FLOW_EPS {
+            w += eps[i];
+            su += eps[i] * u[i * stride];
+            st += eps[i] * theta[i];
+            umax = umax.max(u[i * stride]);
+        }
+    }
+    if w == 0.0 {
+        bail!("no floor cell above εs = {FLOW_EPS} at t = {time}");
+    }
+    Ok((time, su / w, st / w, umax))
+}
+
+/// Runs the check; writes `root/docs/mfix-slope.md`.
+pub fn check(root: &Path, opts: &Options) -> Result<()> {
+    let dir = root.join("cases/mfix-slope");
+    let jj = load_one(&dir.join("jj.ron"))?;
+    let mut md = String::new();
+    let mut failures = Vec::new();
+    writeln!(
+        md,
+        "# Family M against MFIX 21.3.2\n\nWritten by `cargo xtask verify mfix-slope --fidelity {} \
+         --threads {}` ({}). MFIX's numbers are those of cases.md (\"Family M\"), run with MFIX \
+         21.3.2 on the same kind of machine; they were not re-measured here.\n",
+        opts.fidelity.name(),
+        opts.threads
+            .iter()
+            .map(|t| t.to_string())
+            .collect::<Vec<_>>()
+            .join(","),
+        jj.file.display()
+    )?;
+    let mut timed = Vec::new();
+    for &threads in &opts.threads {
+        eprintln!("running {} with {threads} thread(s)", jj.case.name);
+        timed.push(run_timed(&jj, opts.fidelity, threads, root)?);
+    }
+    let first = timed.first().context("--threads is empty")?;
+    let rows = read_bulk(&first.dir)?;
+    writeln!(
+        md,
+        "## Front and mean solids velocity (JJ floor, φ = 0.1; {} × {} cells)\n",
+        first.summary.cells.0, first.summary.cells.1
+    )?;
+    writeln!(
+        md,
+        "| t [s] | front runout [m] | front MFIX [m] | diff | ū_s runout [m/s] | ū_s MFIX [m/s] | diff |\n|---|---|---|---|---|---|---|"
+    )?;
+    for (t, front_mfix, u_mfix) in MFIX {
+        let (front, u) =
+            at_time(&rows, t).with_context(|| format!("the run ended before t = {t}"))?;
+        let (df, du) = (front / front_mfix - 1.0, u / u_mfix - 1.0);
+        writeln!(
+            md,
+            "| {t} | {front:.3} | {front_mfix} | {:+.1} % | {u:.3} | {u_mfix} | {:+.1} % |",
+            df * 100.0,
+            du * 100.0
+        )?;
+        if df.abs() > TOLERANCE {
+            failures.push(format!("front at t = {t}: {:+.1} %", df * 100.0));
+        }
+        if du.abs() > TOLERANCE {
+            failures.push(format!("mean u_s at t = {t}: {:+.1} %", du * 100.0));
+        }
+    }
+    let s = &first.summary;
+    writeln!(
+        md,
+        "\nFront = largest x with εs > 0.01; ū_s = εs-weighted mean solids x-velocity (bulk.csv, \
+         interpolated linearly in time between its 0.01 s samples). Pass: every difference within \
+         ±{:.0} %.\n",
+        TOLERANCE * 100.0
+    )?;
+    writeln!(md, "## Run statistics and cost\n")?;
+    writeln!(
+        md,
+        "| threads | simulated [s] | steps | rejected | mean Δt [s] | outer it./step | solids mass error | wall [s] | CPU [s] | CPU s per simulated s | MFIX / runout |\n|---|---|---|---|---|---|---|---|---|---|---|"
+    )?;
+    for t in &timed {
+        let s = &t.summary;
+        let per = t.cpu / s.simulated_time.max(1e-12);
+        writeln!(
+            md,
+            "| {} | {:.3} | {} | {} | {:.3e} | {:.1} | {:.1e} | {:.1} | {:.1} | {:.1} | {:.2} |",
+            t.threads,
+            s.simulated_time,
+            s.steps,
+            s.rejected_steps,
+            s.dt.mean,
+            s.outer_iterations as f64 / s.steps.max(1) as f64,
+            s.solids_mass_change,
+            s.wall_time,
+            t.cpu,
+            per,
+            MFIX_CPU_PER_SIMULATED_SECOND / per
+        )?;
+    }
+    writeln!(
+        md,
+        "\nMFIX: {MFIX_CPU_PER_SIMULATED_SECOND} CPU s per simulated second on one core, 1205 \
+         accepted and {MFIX_REJECTED} rejected steps, 10.5 outer iterations per step. The \
+         target (issue 9) is at most {:.0} CPU s per simulated second on one thread.\n",
+        MFIX_CPU_PER_SIMULATED_SECOND / 10.0
+    )?;
+    if s.rejected_steps > MFIX_REJECTED {
+        failures.push(format!(
+            "{} rejected steps, more than MFIX's {MFIX_REJECTED}",
+            s.rejected_steps
+        ));
+    }
+    if !s.profile.is_empty() {
+        let total: f64 = s.profile.iter().map(|p| p.1).sum();
+        writeln!(
+            md,
+            "## Where the time goes ({} thread(s), wall time of the solver's parts)\n\n| part | wall [s] | share |\n|---|---|---|",
+            first.threads
+        )?;
+        for (name, secs) in &s.profile {
+            writeln!(md, "| {name} | {secs:.2} | {:.1} % |", 100.0 * secs / total)?;
+        }
+        writeln!(
+            md,
+            "| rest of the run (time loop, monitors, output) | {:.2} | |\n",
+            s.wall_time - total
+        )?;
+    }
+    if !opts.skip_variants {
+        writeln!(
+            md,
+            "## The four floors at t = {VARIANT_TIME} s (issue 9, item 4)\n\nFloor-row (wall-adjacent) \
+             cells with εs > {FLOW_EPS}: εs-weighted mean solids x-velocity and θ, the largest \
+             solids x-velocity, and the front. Fields nearest t = {VARIANT_TIME} s.\n\n| floor | \
+             field time [s] | ū_s wall row [m/s] | max u_s wall row [m/s] | θ wall row [m²/s²] | \
+             front [m] | status |\n|---|---|---|---|---|---|---|"
+        )?;
+        let mut cases = vec![(jj.clone(), first.dir.clone(), first.summary.status.clone())];
+        for file in ["rjj.ron", "jenkins.ron", "partial-slip.ron"] {
+            let case = load_one(&dir.join(file))?;
+            eprintln!("running {}", case.case.name);
+            let t = run_timed(&case, opts.fidelity, opts.threads[0], root)?;
+            cases.push((case, t.dir, t.summary.status));
+        }
+        for (case, run_dir, status) in &cases {
+            let (time, u, theta, umax) = floor_row(run_dir, VARIANT_TIME)?;
+            let front = at_time(&read_bulk(run_dir)?, VARIANT_TIME).map_or(f64::NAN, |r| r.0);
+            writeln!(
+                md,
+                "| {} | {time:.3} | {u:.3} | {umax:.3} | {theta:.3e} | {front:.3} | {status:?} |",
+                case.case.name
+            )?;
+        }
+        writeln!(md)?;
+    }
+    if failures.is_empty() {
+        writeln!(
+            md,
+            "**Result: pass** (all within ±{:.0} %).",
+            TOLERANCE * 100.0
+        )?;
+    } else {
+        writeln!(md, "**Result: fail**: {}.", failures.join("; "))?;
+    }
+    print!("{md}");
+    let out = root.join("docs/mfix-slope.md");
+    std::fs::write(&out, &md).with_context(|| format!("writing {}", out.display()))?;
+    eprintln!("wrote {}", out.display());
+    if !failures.is_empty() {
+        bail!("mfix-slope: {}", failures.join("; "));
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn interpolates_bulk_rows_in_time() {
+        let rows = [(0.0, 0.5, 0.0), (0.2, 0.7, 1.0), (0.4, 1.1, 2.0)];
+        let (f, u) = at_time(&rows, 0.3).unwrap();
+        assert!((f - 0.9).abs() < 1e-12 && (u - 1.5).abs() < 1e-12);
+        assert!(at_time(&rows, 0.5).is_none());
+    }
+
+    #[test]
+    fn reads_a_named_vtr_array() {
+        let text = "<DataArray type=\"Float64\" Name=\"eps_s\" format=\"ascii\">1 2.5 3e-1</DataArray>\n<DataArray Name=\"u_s\">4</DataArray>";
+        assert_eq!(vtr_array(text, "eps_s").unwrap(), vec![1.0, 2.5, 0.3]);
+        assert_eq!(vtr_array(text, "u_s").unwrap(), vec![4.0]);
+        assert!(vtr_array(text, "theta").is_none());
+    }
+}
