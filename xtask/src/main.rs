@@ -7,11 +7,14 @@
 //! - `verify <name> [--report]`: the verification suite of the single-phase core;
 //!   `verify mfix-slope`: family M against MFIX (issue 9, [`mfix_slope`]);
 //! - `report analytic`: family A, the closed-form profiles of paper Fig. 1, as SVG and CSV
-//!   in docs/analytic/.
+//!   in docs/analytic/;
+//! - `report [results] [--fidelity F]`: the runs of the sweep beside the paper, in
+//!   docs/results.md with SVG figures in docs/results/.
 
 mod analytic;
 mod metrics;
 mod mfix_slope;
+mod report;
 mod sweep;
 mod verify;
 
@@ -70,10 +73,17 @@ enum Task {
         #[arg(long)]
         skip_variants: bool,
     },
-    /// Figures and tables: `cargo xtask report analytic` (paper Fig. 1 into docs/analytic/).
+    /// Figures and tables: `cargo xtask report [results]` (the runs beside the paper, into
+    /// docs/results.md and docs/results/) or `cargo xtask report analytic` (paper Fig. 1 into
+    /// docs/analytic/).
     Report {
-        /// what to report (analytic)
+        /// what to report: results (default) or analytic
+        #[arg(default_value = "results")]
         what: String,
+        /// read only runs of this fidelity (smoke, coarse or paper); default: the best
+        /// finished run of each case
+        #[arg(long)]
+        fidelity: Option<String>,
     },
     /// Benchmarks: `cargo xtask bench linsolve [-- --max-cells N]`.
     Bench {
@@ -151,9 +161,16 @@ fn main() -> Result<()> {
                 verify::verify(&name, report, &root())
             }
         }
-        Task::Report { what } => match what.as_str() {
+        Task::Report { what, fidelity } => match what.as_str() {
             "analytic" => analytic::report(&root()),
-            other => bail!("unknown report `{other}` (known: analytic)"),
+            "results" => report::report(
+                &root(),
+                fidelity
+                    .map(|f| f.parse())
+                    .transpose()
+                    .map_err(anyhow::Error::msg)?,
+            ),
+            other => bail!("unknown report `{other}` (known: results, analytic)"),
         },
         Task::Bench { what, args } => match what.as_str() {
             "linsolve" => {

@@ -15,11 +15,11 @@
 use std::path::Path;
 
 /// Fraction of the peak εs below which the floor is an air cushion.
-const CUSHION_FRACTION: f64 = 0.8;
+pub const CUSHION_FRACTION: f64 = 0.8;
 /// εs that counts as flowing material (cases.md front threshold).
-const FLOW_THRESHOLD: f64 = 0.01;
+pub const FLOW_THRESHOLD: f64 = 0.01;
 /// Time of the paper's profiles and probe reading [s].
-const PROFILE_TIME: f64 = 1.25;
+pub const PROFILE_TIME: f64 = 1.25;
 
 /// The flow columns of one run; `None` where the run has no such monitor.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -145,21 +145,33 @@ pub fn flow_metrics(dir: &Path, described: &[(usize, f64)]) -> FlowMetrics {
             .filter(|r| r[3].is_finite())
             .map(|r| (r[0] as usize, r[3]))
             .collect();
-        let pairs: Vec<f64> = m
-            .gate_speeds
-            .iter()
-            .filter_map(|(g, s)| {
-                described
-                    .iter()
-                    .find(|(d, _)| d == g)
-                    .map(|(_, v)| (s - v).powi(2))
-            })
-            .collect();
-        if !pairs.is_empty() {
-            m.mse_vs_described = Some(pairs.iter().sum::<f64>() / pairs.len() as f64);
-        }
+        m.mse_vs_described = mse_vs_described(&m.gate_speeds, described).map(|(e, _)| e);
     }
     m
+}
+
+/// Mean square difference between gate speeds and the described speeds over the gates both
+/// have, with the number of those gates; `None` if they share none. Both lists hold
+/// (gate number, speed) pairs.
+pub fn mse_vs_described(
+    speeds: &[(usize, f64)],
+    described: &[(usize, f64)],
+) -> Option<(f64, usize)> {
+    let squares: Vec<f64> = speeds
+        .iter()
+        .filter_map(|(g, s)| {
+            described
+                .iter()
+                .find(|(d, _)| d == g)
+                .map(|(_, v)| (s - v).powi(2))
+        })
+        .collect();
+    (!squares.is_empty()).then(|| {
+        (
+            squares.iter().sum::<f64>() / squares.len() as f64,
+            squares.len(),
+        )
+    })
 }
 
 /// The described gate speeds of cases/flume/gates.csv: (gate number, speed) for rows with a
