@@ -463,6 +463,7 @@ pub mod fixture {
             solids_mass_change: 0.0,
             max_mass_imbalance: 0.0,
             status: RunStatus::Completed,
+            profile: Vec::new(),
         };
         summary
             .write_json(&dir.join("summary.json"))
