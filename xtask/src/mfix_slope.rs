@@ -71,11 +71,22 @@ fn load_one(file: &Path) -> Result<SourcedCase> {
     }
 }
 
-fn run_timed(case: &SourcedCase, fidelity: Fidelity, threads: usize, root: &Path) -> Result<Timed> {
-    let dir = root
-        .join("runs")
-        .join(&case.case.name)
-        .join(format!("{}-threads{threads}", fidelity.name()));
+/// Runs `case` on a pool of `threads`; the output goes to the sweep's folder
+/// runs/<case>/<fidelity> (read by `cargo xtask report`) when `primary`, else to
+/// runs/<case>/<fidelity>-threads<n>.
+fn run_timed(
+    case: &SourcedCase,
+    fidelity: Fidelity,
+    threads: usize,
+    primary: bool,
+    root: &Path,
+) -> Result<Timed> {
+    let leaf = if primary {
+        fidelity.name().to_string()
+    } else {
+        format!("{}-threads{threads}", fidelity.name())
+    };
+    let dir = root.join("runs").join(&case.case.name).join(leaf);
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
@@ -237,9 +248,9 @@ pub fn check(root: &Path, opts: &Options) -> Result<()> {
         jj.file.display()
     )?;
     let mut timed = Vec::new();
-    for &threads in &opts.threads {
+    for (n, &threads) in opts.threads.iter().enumerate() {
         eprintln!("running {} with {threads} thread(s)", jj.case.name);
-        timed.push(run_timed(&jj, opts.fidelity, threads, root)?);
+        timed.push(run_timed(&jj, opts.fidelity, threads, n == 0, root)?);
     }
     let first = timed.first().context("--threads is empty")?;
     let rows = read_bulk(&first.dir)?;
@@ -343,7 +354,7 @@ pub fn check(root: &Path, opts: &Options) -> Result<()> {
         for file in ["rjj.ron", "jenkins.ron", "partial-slip.ron"] {
             let case = load_one(&dir.join(file))?;
             eprintln!("running {}", case.case.name);
-            let t = run_timed(&case, opts.fidelity, opts.threads[0], root)?;
+            let t = run_timed(&case, opts.fidelity, opts.threads[0], true, root)?;
             cases.push((case, t.dir, t.summary.status));
         }
         for (case, run_dir, status) in &cases {

@@ -554,7 +554,7 @@ pub const FLUME: &[(&str, &str, &str)] = &[
 ];
 
 /// The family-M case (shared/docs/cases.md).
-pub const MFIX_CASE: &str = "M-slide";
+pub const MFIX_CASE: &str = "M-JJ";
 
 /// Family M: MFIX's (t, front x, mean u_s) of cases.md.
 pub const MFIX_SLIDE: &[(f64, f64, f64)] =
