@@ -24,6 +24,8 @@
 
 use std::time::Instant;
 
+use rayon::prelude::*;
+
 use runout_closures::{evaluate, CellState, ClosureParams};
 use runout_linsolve::{build, LinSolveError, LinearSolver, LinearSolverKind, Pattern, Stencil5};
 use runout_mesh::{Grid, Side, Sides};
@@ -90,6 +92,54 @@ impl Default for TwoFluidSettings {
     }
 }
 
+/// The closure values one cell contributes to the solver (model-spec §2), all zero where
+/// εs = 0.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct CellClosures {
+    /// P_s = P_kin + P_fric [Pa]
+    pub p_s: f64,
+    /// μ_s = μ_kin + μ_fric [Pa s]
+    pub mu: f64,
+    /// λ_s = λ_kin + λ_fric [Pa s]
+    pub lambda: f64,
+    /// κ_s [kg m⁻¹ s⁻¹]
+    pub kappa: f64,
+    /// K_cp = dP_s/dεs [Pa]
+    pub k_cp: f64,
+    /// F_gs [kg m⁻³ s⁻¹]
+    pub f_gs: f64,
+    /// P_kin/θ [kg m⁻³]
+    pub p_kin_over_theta: f64,
+    /// μ_kin [Pa s]
+    pub mu_kin: f64,
+    /// λ_kin [Pa s]
+    pub lambda_kin: f64,
+    /// γ/θ, collisional dissipation over θ [kg m⁻³ s⁻¹]
+    pub gamma_over_theta: f64,
+    /// J_slip, drag production of θ [kg m⁻¹ s⁻³]
+    pub j_slip: f64,
+}
+
+impl CellClosures {
+    /// The values of one cell from runout-closures' `evaluate` (θ ≥ θ_small expected).
+    pub fn evaluate(state: &CellState, params: &ClosureParams) -> Self {
+        let c = evaluate(state, params);
+        CellClosures {
+            p_s: c.stress.p_s,
+            mu: c.stress.mu_s,
+            lambda: c.stress.lambda_s,
+            kappa: c.kinetic.kappa_kin,
+            k_cp: c.k_cp,
+            f_gs: c.f_gs,
+            p_kin_over_theta: c.kinetic.p_kin / state.theta,
+            mu_kin: c.kinetic.mu_kin,
+            lambda_kin: c.kinetic.lambda_kin,
+            gamma_over_theta: c.kinetic.dissipation / state.theta,
+            j_slip: c.j_slip,
+        }
+    }
+}
+
 /// Fields and closure values of one solids phase.
 #[derive(Clone, Debug)]
 pub struct SolidsFields {
@@ -120,6 +170,8 @@ pub struct SolidsFields {
     gamma_over_theta: Vec<f64>,
     j_slip: Vec<f64>,
     strain: Vec<Strain>,
+    /// closure values per cell (the parallel evaluation's output)
+    cells: Vec<CellClosures>,
     /// tangential velocity on the wall faces of the south/north rows (per column) and the
     /// west/east columns (per row), from the wall closures (model-spec §3.2): what MFIX's
     /// ghost cells put into the strain rates of the wall cells (§4.4)
@@ -380,6 +432,7 @@ impl TwoFluid {
                 gamma_over_theta: vec![0.0; n],
                 j_slip: vec![0.0; n],
                 strain: vec![Strain::default(); n],
+                cells: vec![CellClosures::default(); n],
                 wall_face_velocity: Sides {
                     west: vec![0.0; ny],
                     east: vec![0.0; ny],
@@ -513,40 +566,54 @@ impl TwoFluid {
                 east: on_wall.east.then_some(&s.wall_face_velocity.east[..]),
             };
             strain_rates(&self.grid, &s.u, &s.v, &walls, &mut s.strain);
-            for j in 0..ny {
-                for i in 0..nx {
+            // per cell, rows in parallel (rayon), into the closure records; then scattered
+            // into the field arrays the assemblies read
+            let (u_g, v_g) = (&self.u_g, &self.v_g);
+            let (u, v, eps, theta, strain) = (&s.u, &s.v, &s.eps, &s.theta, &s.strain);
+            let params = &spec.params;
+            s.cells.par_chunks_mut(nx).enumerate().for_each(|(j, row)| {
+                for (i, out) in row.iter_mut().enumerate() {
                     let k = i + nx * j;
+                    if eps[k] == 0.0 {
+                        // no solids: every closure value the solver reads is zero
+                        // (runout-closures gives exactly that at εs = 0; checked by
+                        // the test `closures_vanish_without_solids`)
+                        *out = CellClosures::default();
+                        continue;
+                    }
                     // |u_g − u_s| from cell-centred averages of the face velocities (§2.6)
                     let du = 0.5
-                        * ((self.u_g[i + (nx + 1) * j] - s.u[i + (nx + 1) * j])
-                            + (self.u_g[i + 1 + (nx + 1) * j] - s.u[i + 1 + (nx + 1) * j]));
-                    let dv = 0.5 * ((self.v_g[k] - s.v[k]) + (self.v_g[k + nx] - s.v[k + nx]));
-                    let st = s.strain[k];
-                    let theta = s.theta[k].max(THETA_SMALL);
-                    let c = evaluate(
+                        * ((u_g[i + (nx + 1) * j] - u[i + (nx + 1) * j])
+                            + (u_g[i + 1 + (nx + 1) * j] - u[i + 1 + (nx + 1) * j]));
+                    let dv = 0.5 * ((v_g[k] - v[k]) + (v_g[k + nx] - v[k + nx]));
+                    let st = strain[k];
+                    *out = CellClosures::evaluate(
                         &CellState {
-                            eps_s: s.eps[k],
-                            theta,
+                            eps_s: eps[k],
+                            theta: theta[k].max(THETA_SMALL),
                             slip: du.hypot(dv),
                             tr_d: st.tr_d,
                             s_ddot_s: st.s_ddot_s,
                         },
-                        &spec.params,
+                        params,
                     );
-                    s.p_s[k] = c.stress.p_s;
-                    s.mu[k] = c.stress.mu_s;
-                    s.lambda[k] = c.stress.lambda_s;
-                    s.kappa[k] = c.kinetic.kappa_kin;
-                    s.k_cp[k] = c.k_cp;
-                    s.f_gs[k] = c.f_gs;
-                    s.p_kin_over_theta[k] = c.kinetic.p_kin / theta;
-                    s.mu_kin[k] = c.kinetic.mu_kin;
-                    s.lambda_kin[k] = c.kinetic.lambda_kin;
-                    s.gamma_over_theta[k] = c.kinetic.dissipation / theta;
-                    s.j_slip[k] = c.j_slip;
-                    s.tr_d[k] = st.tr_d;
-                    s.tr_d2[k] = st.tr_d2;
                 }
+            });
+            for k in 0..nx * ny {
+                let c = s.cells[k];
+                s.p_s[k] = c.p_s;
+                s.mu[k] = c.mu;
+                s.lambda[k] = c.lambda;
+                s.kappa[k] = c.kappa;
+                s.k_cp[k] = c.k_cp;
+                s.f_gs[k] = c.f_gs;
+                s.p_kin_over_theta[k] = c.p_kin_over_theta;
+                s.mu_kin[k] = c.mu_kin;
+                s.lambda_kin[k] = c.lambda_kin;
+                s.gamma_over_theta[k] = c.gamma_over_theta;
+                s.j_slip[k] = c.j_slip;
+                s.tr_d[k] = s.strain[k].tr_d;
+                s.tr_d2[k] = s.strain[k].tr_d2;
             }
         }
     }
