@@ -1000,9 +1000,26 @@ impl TwoFluid {
                             c0.map_or(0.0, |c| s.f_gs[c] * h0) + c1.map_or(0.0, |c| s.f_gs[c] * h1)
                         };
                     }
-                    // momentum residuals of the coupled node (before relaxation, §4.11)
+                    // momentum residuals of the coupled node (before relaxation, §4.11):
+                    // only where the phase moves, |(U, V)| > 1e-15 with U, V the two face
+                    // velocities MFIX stores at one index (the east and north faces of the
+                    // cell west of a u-node, south of a v-node)
                     for p in 0..=m {
                         if p > 0 && dilute[p - 1] {
+                            continue;
+                        }
+                        let (pu, pv): (&[f64], &[f64]) = if p == 0 {
+                            (&self.u_g, &self.v_g)
+                        } else {
+                            (&self.solids[p - 1].u, &self.solids[p - 1].v)
+                        };
+                        let other = match (dir, c0) {
+                            (0, Some(c)) => pv[c + nx],
+                            (1, Some(c)) => pu[c + c / nx + 1],
+                            _ => 0.0,
+                        };
+                        let speed = phi[p].hypot(other);
+                        if speed <= 1e-15 {
                             continue;
                         }
                         let coupling = if p == 0 {
@@ -1011,7 +1028,7 @@ impl TwoFluid {
                             drag[p - 1] * (phi[0] - phi[p])
                         };
                         num += (r_in[p] + coupling - a_in[p] * phi[p]).abs();
-                        den += a_in[p].abs() * phi[p].abs().max(1e-15);
+                        den += a_in[p].abs() * speed;
                     }
                     let (mut a_out, mut r_out) =
                         ([0.0; MAX_SOLIDS_PHASES + 1], [0.0; MAX_SOLIDS_PHASES + 1]);
