@@ -5,10 +5,12 @@
 //!   cases that need the two-fluid model (issue 7) are reported as unsupported.
 //! - `bench linsolve`: the linear-solver timing table of docs/performance.md.
 //! - `verify <name> [--report]`: the verification suite of the single-phase core;
+//!   `verify collapse [--fidelity smoke|coarse]`: issue 7's granular column collapse check;
 //! - `report analytic`: family A, the closed-form profiles of paper Fig. 1, as SVG and CSV
 //!   in docs/analytic/.
 
 mod analytic;
+mod collapse;
 mod metrics;
 mod sweep;
 mod verify;
@@ -51,13 +53,16 @@ enum Task {
         cases: PathBuf,
     },
     /// Verification of the single-phase core (issue 6): cavity, cavity-re1000, poiseuille,
-    /// taylor-green or all.
+    /// taylor-green or all; and the granular column collapse (issue 7): collapse.
     Verify {
-        /// cavity, cavity-re1000, poiseuille, taylor-green or all
+        /// cavity, cavity-re1000, poiseuille, taylor-green, all or collapse
         name: String,
         /// also write error against run time (CSV/SVG/Markdown) into docs/verification/
         #[arg(long)]
         report: bool,
+        /// fidelity of the collapse runs: smoke or coarse (collapse only)
+        #[arg(long, default_value = "coarse")]
+        fidelity: String,
     },
     /// Figures and tables: `cargo xtask report analytic` (paper Fig. 1 into docs/analytic/).
     Report {
@@ -118,7 +123,17 @@ fn main() -> Result<()> {
             };
             sweep::sweep(&root(), &dir, &opts)
         }
-        Task::Verify { name, report } => verify::verify(&name, report, &root()),
+        Task::Verify {
+            name,
+            report,
+            fidelity,
+        } => {
+            if name == "collapse" {
+                collapse::verify(&root(), fidelity.parse().map_err(anyhow::Error::msg)?)
+            } else {
+                verify::verify(&name, report, &root())
+            }
+        }
         Task::Report { what } => match what.as_str() {
             "analytic" => analytic::report(&root()),
             other => bail!("unknown report `{other}` (known: analytic)"),
