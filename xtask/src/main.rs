@@ -5,7 +5,8 @@
 //!   cases that need the two-fluid model (issue 7) are reported as unsupported.
 //! - `bench linsolve`: the linear-solver timing table of docs/performance.md.
 //! - `verify <name> [--report]`: the verification suite of the single-phase core;
-//!   `verify collapse [--fidelity smoke|coarse]`: issue 7's granular column collapse check;
+//!   `verify collapse [--fidelity smoke|coarse] [--reuse]`: issue 7's granular column collapse
+//!   check;
 //! - `report analytic`: family A, the closed-form profiles of paper Fig. 1, as SVG and CSV
 //!   in docs/analytic/.
 
@@ -63,6 +64,9 @@ enum Task {
         /// fidelity of the collapse runs: smoke or coarse (collapse only)
         #[arg(long, default_value = "coarse")]
         fidelity: String,
+        /// reuse finished runs of unchanged cases (collapse only)
+        #[arg(long)]
+        reuse: bool,
     },
     /// Figures and tables: `cargo xtask report analytic` (paper Fig. 1 into docs/analytic/).
     Report {
@@ -127,9 +131,14 @@ fn main() -> Result<()> {
             name,
             report,
             fidelity,
+            reuse,
         } => {
             if name == "collapse" {
-                collapse::verify(&root(), fidelity.parse().map_err(anyhow::Error::msg)?)
+                collapse::verify(
+                    &root(),
+                    fidelity.parse().map_err(anyhow::Error::msg)?,
+                    reuse,
+                )
             } else {
                 verify::verify(&name, report, &root())
             }
