@@ -6,12 +6,15 @@
 //! - `bench linsolve`: the linear-solver timing table of docs/performance.md.
 //! - `verify <name> [--report]`: the verification suite of the single-phase core;
 //!   `verify mfix-slope`: family M against MFIX (issue 9, [`mfix_slope`]);
+//!   `verify collapse [--fidelity smoke|coarse] [--reuse]`: issue 7's granular column collapse
+//!   check;
 //! - `report analytic`: family A, the closed-form profiles of paper Fig. 1, as SVG and CSV
 //!   in docs/analytic/;
 //! - `report [results] [--fidelity F]`: the runs of the sweep beside the paper, in
 //!   docs/results.md with SVG figures in docs/results/.
 
 mod analytic;
+mod collapse;
 mod metrics;
 mod mfix_slope;
 mod report;
@@ -56,16 +59,21 @@ enum Task {
         cases: PathBuf,
     },
     /// Verification: the single-phase core (issue 6: cavity, cavity-re1000, poiseuille,
-    /// taylor-green, all) and family M against MFIX (issue 9: mfix-slope).
+    /// taylor-green, all), the granular column collapse (issue 7: collapse) and family M
+    /// against MFIX (issue 9: mfix-slope).
     Verify {
-        /// cavity, cavity-re1000, poiseuille, taylor-green, all, or mfix-slope
+        /// cavity, cavity-re1000, poiseuille, taylor-green, all, collapse or mfix-slope
         name: String,
         /// also write error against run time (CSV/SVG/Markdown) into docs/verification/
         #[arg(long)]
         report: bool,
-        /// mfix-slope: fidelity (paper = MFIX's 200 × 50 grid)
-        #[arg(long, default_value = "paper")]
-        fidelity: String,
+        /// fidelity of the runs (collapse: smoke or coarse, default coarse; mfix-slope:
+        /// default paper, MFIX's 200 × 50 grid)
+        #[arg(long)]
+        fidelity: Option<String>,
+        /// reuse finished runs of unchanged cases (collapse only)
+        #[arg(long)]
+        reuse: bool,
         /// mfix-slope: comma-separated rayon thread counts to time the JJ case with
         #[arg(long, default_value = "1")]
         threads: String,
@@ -143,12 +151,17 @@ fn main() -> Result<()> {
             name,
             report,
             fidelity,
+            reuse,
             threads,
             skip_variants,
         } => {
             if name == "mfix-slope" {
                 let opts = mfix_slope::Options {
-                    fidelity: fidelity.parse().map_err(anyhow::Error::msg)?,
+                    fidelity: fidelity
+                        .as_deref()
+                        .unwrap_or("paper")
+                        .parse()
+                        .map_err(anyhow::Error::msg)?,
                     threads: threads
                         .split(',')
                         .map(|t| t.trim().parse::<usize>())
@@ -157,6 +170,16 @@ fn main() -> Result<()> {
                     skip_variants,
                 };
                 mfix_slope::check(&root(), &opts)
+            } else if name == "collapse" {
+                collapse::verify(
+                    &root(),
+                    fidelity
+                        .as_deref()
+                        .unwrap_or("coarse")
+                        .parse()
+                        .map_err(anyhow::Error::msg)?,
+                    reuse,
+                )
             } else {
                 verify::verify(&name, report, &root())
             }

@@ -18,7 +18,7 @@ fn load_cases(rel: &str) -> Vec<runout_case::SourcedCase> {
 #[test]
 fn every_shipped_file_is_valid() {
     let mut n = 0;
-    for family in ["sensitivity", "flume", "mfix-slope", "analytic"] {
+    for family in ["sensitivity", "flume", "mfix-slope", "analytic", "collapse"] {
         for entry in std::fs::read_dir(cases_dir().join(family)).unwrap() {
             let path = entry.unwrap().path();
             if path.extension().is_some_and(|e| e == "ron") {
