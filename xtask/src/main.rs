@@ -7,9 +7,12 @@
 //! - `verify <name> [--report]`: the verification suite of the single-phase core;
 //! - `report analytic`: family A, the closed-form profiles of paper Fig. 1, as SVG and CSV
 //!   in docs/analytic/.
+//! - `stability`: the stiff and extreme cases of cases/stability/ (issue 7), one at a time,
+//!   with the table of docs/stability.md; fails if a run writes NaN.
 
 mod analytic;
 mod metrics;
+mod stability;
 mod sweep;
 mod verify;
 
@@ -49,6 +52,20 @@ enum Task {
         /// case directory
         #[arg(long, default_value = "cases")]
         cases: PathBuf,
+    },
+    /// Run the stiff and extreme cases of cases/stability/ (issue 7) and write their table to
+    /// docs/stability.md and docs/stability/summary.csv; fails if a run writes a NaN or an
+    /// infinity, or panics (a stop with a diagnosis is acceptable).
+    Stability {
+        /// smoke, coarse (default: the table) or paper
+        #[arg(long, default_value = "coarse")]
+        fidelity: String,
+        /// run only the cases whose name contains this
+        #[arg(long)]
+        only: Option<String>,
+        /// parallel runs (default 1: wall times stay comparable)
+        #[arg(long, default_value_t = 1)]
+        jobs: usize,
     },
     /// Verification of the single-phase core (issue 6): cavity, cavity-re1000, poiseuille,
     /// taylor-green or all.
@@ -118,6 +135,18 @@ fn main() -> Result<()> {
             };
             sweep::sweep(&root(), &dir, &opts)
         }
+        Task::Stability {
+            fidelity,
+            only,
+            jobs,
+        } => stability::stability(
+            &root(),
+            &stability::StabilityOptions {
+                fidelity: fidelity.parse().map_err(anyhow::Error::msg)?,
+                only,
+                jobs,
+            },
+        ),
         Task::Verify { name, report } => verify::verify(&name, report, &root()),
         Task::Report { what } => match what.as_str() {
             "analytic" => analytic::report(&root()),
