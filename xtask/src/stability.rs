@@ -391,12 +391,17 @@ pub fn md_row(row: &Row) -> String {
         }
         _ => row.status(),
     };
+    // a stop in the first millisecond must not read as 0.000
+    let time = if row.time > 0.0 && row.time < 1e-3 {
+        format!("{:.2e}", row.time)
+    } else {
+        format!("{:.3}", row.time)
+    };
     format!(
-        "| {} | {} | {} | {:.3} / {} | {} × {} | {} | {}{} | {} | {} | {:.1} |",
+        "| {} | {} | {} | {time} / {} | {} × {} | {} | {}{} | {} | {} | {:.1} |",
         row.case,
         row.stresses.replace('|', "/"),
         status,
-        row.time,
         row.end_time,
         row.cells.0,
         row.cells.1,
@@ -464,13 +469,18 @@ pub fn markdown(rows: &[Row], fidelity: Fidelity, command: &str, date: &str) -> 
          - **solids mass error**: (M(end) − M(0)) / M(0) of the total solids mass \
          (`summary.json` `solids_mass_change`).\n\
          - **max εs**: the largest solids volume fraction of any cell over the initial state \
-         and every accepted step (`summary.json` `max_eps_s`); εs,max = {} in every case.\n\
+         and every accepted step (`summary.json` `max_eps_s`); {packing}.\n\
          - **NaN scan**: every `.csv`, `.vtr`, `.pvd` and `summary.json` of \
          `runs/stability/<case>/{fidelity}/` searched for `nan`, `inf`, `infinity` (any case) \
          and, in JSON, `null`.\n\
          - **wall**: wall-clock time of the run on this machine (shared with other work, so \
          indicative only).",
-        rows.first().map_or(0.0, |r| r.eps_s_max)
+        packing = match rows.first() {
+            Some(first) if rows.iter().all(|r| r.eps_s_max == first.eps_s_max) => {
+                format!("εs,max = {} in every case", first.eps_s_max)
+            }
+            _ => "εs,max of each case in the `eps_s_max` column of the CSV".to_string(),
+        }
     );
     let messages: Vec<&Row> = rows
         .iter()
@@ -710,6 +720,32 @@ mod tests {
                 csv_width(CSV_HEADER)
             );
         }
+    }
+
+    #[test]
+    fn the_page_holds_the_command_the_date_every_row_and_every_message() {
+        let mut nan = row(Outcome::Completed);
+        nan.case = "ST-nan".into();
+        nan.non_finite.push(("bulk.csv".into(), 2));
+        let mut early = row(Outcome::Stopped("t = 6.5e-6 s: momentum 1e-3".into()));
+        early.case = "ST-early".into();
+        early.time = 6.5e-6;
+        let rows = [row(Outcome::Refused("needs P*".into())), nan, early];
+        let md = markdown(
+            &rows,
+            Fidelity::Smoke,
+            "cargo xtask stability",
+            "2026-01-02",
+        );
+        assert!(md.contains("`cargo xtask stability` on 2026-01-02"), "{md}");
+        assert_eq!(md.lines().filter(|l| l.starts_with("| ST-")).count(), 3);
+        assert!(
+            md.contains("stopped (diagnosis: no cell) | 6.50e-6 / 0.35"),
+            "{md}"
+        );
+        assert!(md.contains("- **ST-x** (refused): needs P*"), "{md}");
+        assert!(md.contains("- **ST-nan**: bulk.csv (2)"), "{md}");
+        assert!(md.contains("εs,max = 0.65 in every case"), "{md}");
     }
 
     #[test]
