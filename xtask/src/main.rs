@@ -12,12 +12,15 @@
 //!   in docs/analytic/;
 //! - `report [results] [--fidelity F]`: the runs of the sweep beside the paper, in
 //!   docs/results.md with SVG figures in docs/results/.
+//! - `stability`: the stiff and extreme cases of cases/stability/ (issue 7), one at a time,
+//!   with the table of docs/stability.md; fails if a run writes NaN.
 
 mod analytic;
 mod collapse;
 mod metrics;
 mod mfix_slope;
 mod report;
+mod stability;
 mod sweep;
 mod verify;
 
@@ -57,6 +60,20 @@ enum Task {
         /// case directory
         #[arg(long, default_value = "cases")]
         cases: PathBuf,
+    },
+    /// Run the stiff and extreme cases of cases/stability/ (issue 7) and write their table to
+    /// docs/stability.md and docs/stability/summary.csv; fails if a run writes a NaN or an
+    /// infinity, or panics (a stop with a diagnosis is acceptable).
+    Stability {
+        /// smoke, coarse (default: the table) or paper
+        #[arg(long, default_value = "coarse")]
+        fidelity: String,
+        /// run only the cases whose name contains this
+        #[arg(long)]
+        only: Option<String>,
+        /// parallel runs (default 1: wall times stay comparable)
+        #[arg(long, default_value_t = 1)]
+        jobs: usize,
     },
     /// Verification: the single-phase core (issue 6: cavity, cavity-re1000, poiseuille,
     /// taylor-green, all), the granular column collapse (issue 7: collapse) and family M
@@ -147,6 +164,18 @@ fn main() -> Result<()> {
             };
             sweep::sweep(&root(), &dir, &opts)
         }
+        Task::Stability {
+            fidelity,
+            only,
+            jobs,
+        } => stability::stability(
+            &root(),
+            &stability::StabilityOptions {
+                fidelity: fidelity.parse().map_err(anyhow::Error::msg)?,
+                only,
+                jobs,
+            },
+        ),
         Task::Verify {
             name,
             report,

@@ -1,4 +1,5 @@
-//! `cargo xtask sweep`: the paper's case matrix, expanded from cases/, run in parallel.
+//! `cargo xtask sweep`: the paper's case matrix, expanded from cases/ (except the stiff
+//! cases of cases/stability/, which `cargo xtask stability` runs), run in parallel.
 //!
 //! Every run writes into `runs/<case>/<fidelity>.partial/` and is renamed to
 //! `runs/<case>/<fidelity>/` when it ends, so a finished folder is always complete; a run
@@ -18,6 +19,7 @@ use runout_output::RunSummary;
 use runout_solver::{run_case, RunError};
 
 use crate::metrics::{described_speeds, flow_metrics, FlowMetrics};
+use crate::stability::STABILITY_DIR;
 
 /// Options of a sweep.
 pub struct SweepOptions {
@@ -39,6 +41,13 @@ pub struct Matrix {
     pub runs: Vec<SourcedCase>,
     /// analytic families: (name, file)
     pub analytic: Vec<(String, PathBuf)>,
+}
+
+/// The progress-bar style of one run (case name, bar, time and Δt, eta).
+pub fn progress_style() -> ProgressStyle {
+    ProgressStyle::with_template("{prefix:<34} [{bar:25}] {msg} (eta {eta})")
+        .expect("a valid template")
+        .progress_chars("=> ")
 }
 
 /// Expands and validates every file below `cases_dir` into the [`Matrix`].
@@ -135,7 +144,7 @@ fn run_one(case: &SourcedCase, fidelity: Fidelity, runs: &Path, bar: &ProgressBa
 }
 
 /// CSV field quoting (RFC 4180).
-fn csv_field(s: &str) -> String {
+pub fn csv_field(s: &str) -> String {
     if s.contains([',', '"', '\n']) {
         format!("\"{}\"", s.replace('"', "\"\""))
     } else {
@@ -178,7 +187,10 @@ fn csv_row(name: &str, fidelity: Fidelity, outcome: &Outcome, flow: &FlowMetrics
 
 /// Expands, lists and (unless `list`) runs the matrix; writes results/summary.csv.
 pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
-    let Matrix { runs, analytic } = matrix(cases_dir)?;
+    let Matrix { mut runs, analytic } = matrix(cases_dir)?;
+    // the stiff cases of `cargo xtask stability` are not part of the paper's matrix
+    let stability = cases_dir.join(STABILITY_DIR);
+    runs.retain(|r| !r.file.starts_with(&stability));
     let selected: Vec<&SourcedCase> = runs
         .iter()
         .filter(|r| opts.only.as_deref().is_none_or(|p| r.case.name.contains(p)))
@@ -224,9 +236,7 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
     let runs_dir = root.join("runs");
     let started = Instant::now();
     let progress = MultiProgress::new();
-    let style = ProgressStyle::with_template("{prefix:<34} [{bar:25}] {msg} (eta {eta})")
-        .expect("a valid template")
-        .progress_chars("=> ");
+    let style = progress_style();
     let outcomes: Mutex<Vec<(usize, Outcome)>> = Mutex::new(Vec::new());
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(opts.jobs.max(1))
@@ -332,6 +342,7 @@ mod tests {
             },
             solids_mass_change: 0.0,
             max_mass_imbalance: 0.0,
+            max_eps_s: 0.6,
             status: RunStatus::Completed,
             profile: Vec::new(),
         };

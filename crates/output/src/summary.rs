@@ -25,7 +25,7 @@ pub enum RunStatus {
 /// Time-step statistics [s].
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct DtStats {
-    /// smallest accepted Δt
+    /// smallest accepted Δt, not counting a last step shortened to land on the end time
     pub min: f64,
     /// largest accepted Δt
     pub max: f64,
@@ -59,6 +59,10 @@ pub struct RunSummary {
     /// largest net continuity imbalance of a converged step, relative to the flow through
     /// the domain [-]
     pub max_mass_imbalance: f64,
+    /// largest solids volume fraction εs of any phase in any cell, over the initial state
+    /// and every accepted step [-] (0 without solids)
+    #[serde(default)]
+    pub max_eps_s: f64,
     /// how the run ended
     pub status: RunStatus,
     /// wall time per part of the solver's iteration [s] (closures, walls, each assembly and

@@ -142,6 +142,7 @@ fn summary_round_trips() {
         },
         solids_mass_change: 1e-12,
         max_mass_imbalance: 1e-11,
+        max_eps_s: 0.6,
         status: RunStatus::Diverged {
             diagnosis: "theta at (3, 4), t = 0.05 s".into(),
         },

@@ -315,6 +315,10 @@ trait CaseSolver {
     fn solids_mass(&self) -> f64 {
         0.0
     }
+    /// Largest solids volume fraction of any phase in any cell (0 for a single phase).
+    fn max_eps_s(&self) -> f64 {
+        0.0
+    }
     /// (front x, εs-weighted mean solids u) for the bulk monitor, `None` without solids.
     fn bulk(&self, _threshold: f64) -> Option<(f64, f64)> {
         None
@@ -533,6 +537,14 @@ impl CaseSolver for TwoFluidCase {
             .map(|(name, t)| (name.to_string(), *t))
             .collect()
     }
+    fn max_eps_s(&self) -> f64 {
+        self.solver
+            .solids
+            .iter()
+            .flat_map(|s| s.eps.iter())
+            .fold(0.0, |a: f64, &e| a.max(e))
+    }
+
     fn floor_h_u(&self, x: f64) -> Option<f64> {
         let faces = self.solver.grid().x.faces();
         let k = (0..faces.len())
@@ -906,6 +918,7 @@ pub fn run_case(
         },
         solids_mass_change: 0.0,
         max_mass_imbalance: 0.0,
+        max_eps_s: solver.max_eps_s(),
         status: RunStatus::Running,
         profile: Vec::new(),
     };
@@ -921,6 +934,7 @@ pub fn run_case(
     let max_it = run.tolerances.max_iterations as usize;
     while time < end * (1.0 - 1e-12) {
         let step_dt = dt.dt().min(end - time);
+        let shortened = step_dt < dt.dt();
         solver.before_step();
         let outcome = solver.step(step_dt, run).map_err(|e| match e {
             RunError::Solver { source, .. } => RunError::Solver {
@@ -950,12 +964,15 @@ pub fn run_case(
         time += step_dt;
         summary.steps += 1;
         summary.outer_iterations += outcome.iterations as u64;
-        summary.dt.min = summary.dt.min.min(step_dt);
+        if !shortened {
+            summary.dt.min = summary.dt.min.min(step_dt);
+        }
         summary.dt.max = summary.dt.max.max(step_dt);
         summary.dt.mean += step_dt;
         summary.max_mass_imbalance = summary
             .max_mass_imbalance
             .max(solver.mass_imbalance_ratio());
+        summary.max_eps_s = summary.max_eps_s.max(solver.max_eps_s());
         dt.converged(step_dt, outcome.iterations, outcome.iterations >= max_it);
         if time >= next_output * (1.0 - 1e-9) || time >= end * (1.0 - 1e-12) {
             solver.write_fields(&mut series, time).map_err(out_err)?;
@@ -1018,8 +1035,10 @@ pub fn run_case(
     }
     if summary.steps > 0 {
         summary.dt.mean /= summary.steps as f64;
-    } else {
-        summary.dt.min = 0.0;
+    }
+    if !summary.dt.min.is_finite() {
+        // no accepted step, or only one shortened to the end time
+        summary.dt.min = summary.dt.max;
     }
     if mass0 > 0.0 {
         summary.solids_mass_change = solver.solids_mass() / mass0 - 1.0;

@@ -462,6 +462,7 @@ pub mod fixture {
             },
             solids_mass_change: 0.0,
             max_mass_imbalance: 0.0,
+            max_eps_s: 0.6,
             status: RunStatus::Completed,
             profile: Vec::new(),
         };

@@ -1,0 +1,793 @@
+//! `cargo xtask stability`: the stiff and extreme cases of issue 7 (cases/stability/).
+//!
+//! Every case must either run to its end time or stop with a diagnosis (equation, cell,
+//! time); none may write a non-finite value. Each case runs in-process like a sweep run
+//! (one at a time unless `--jobs`), into `runs/stability/<case>/<fidelity>/` (cleared first),
+//! and gets one row: how it ended, the smallest accepted Δt, steps and rejected steps, the
+//! relative solids mass error, the largest εs of the run and the wall time. Every monitor,
+//! field and summary file of the run is then scanned for NaN/inf. The table goes to
+//! docs/stability.md and docs/stability/summary.csv; the command fails if a run wrote a
+//! non-finite value or panicked (a stop with a diagnosis is an acceptable outcome).
+
+use std::fmt::Write as _;
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::path::{Path, PathBuf};
+use std::sync::Mutex;
+use std::time::{Instant, SystemTime, UNIX_EPOCH};
+
+use anyhow::{bail, Context, Result};
+use indicatif::{MultiProgress, ProgressBar};
+use rayon::prelude::*;
+use runout_case::{Fidelity, SourcedCase};
+use runout_output::{RunStatus, RunSummary};
+use runout_solver::{run_case, RunError};
+
+use crate::sweep::{csv_field, matrix, progress_style};
+
+/// The folder of the stability cases below the case directory (the sweep skips it).
+pub const STABILITY_DIR: &str = "stability";
+
+/// Options of a stability run.
+pub struct StabilityOptions {
+    /// fidelity of every run
+    pub fidelity: Fidelity,
+    /// keep only cases whose name contains this
+    pub only: Option<String>,
+    /// parallel runs
+    pub jobs: usize,
+}
+
+/// How one case ended.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Outcome {
+    /// reached its end time
+    Completed,
+    /// a step failed below dt_min; the solver's diagnosis
+    Stopped(String),
+    /// the solver refused the case before any step (it lacks what the case needs)
+    Refused(String),
+    /// the run ended with an error after it started (no summary)
+    Error(String),
+    /// the run panicked
+    Panicked(String),
+}
+
+impl Outcome {
+    /// Short label for the tables.
+    pub fn label(&self) -> &'static str {
+        match self {
+            Outcome::Completed => "completed",
+            Outcome::Stopped(_) => "stopped",
+            Outcome::Refused(_) => "refused",
+            Outcome::Error(_) => "error",
+            Outcome::Panicked(_) => "panicked",
+        }
+    }
+
+    /// The solver's message, if any.
+    pub fn message(&self) -> Option<&str> {
+        match self {
+            Outcome::Completed => None,
+            Outcome::Stopped(m)
+            | Outcome::Refused(m)
+            | Outcome::Error(m)
+            | Outcome::Panicked(m) => Some(m),
+        }
+    }
+}
+
+/// One row of the table.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Row {
+    /// case name
+    pub case: String,
+    /// what the case stresses (its description)
+    pub stresses: String,
+    /// cells (nx, ny) at the fidelity run
+    pub cells: (usize, usize),
+    /// end time at the fidelity run [s]
+    pub end_time: f64,
+    /// how it ended
+    pub outcome: Outcome,
+    /// simulated time reached [s]
+    pub time: f64,
+    /// smallest accepted Δt [s] (none without an accepted step)
+    pub min_dt: Option<f64>,
+    /// accepted steps
+    pub steps: u64,
+    /// rejected steps (unknown without a summary)
+    pub rejected: Option<u64>,
+    /// relative solids mass error at the end [-] (unknown without a summary)
+    pub mass_error: Option<f64>,
+    /// largest εs over the run [-] (unknown without a summary)
+    pub max_eps_s: Option<f64>,
+    /// the packing limit εs,max of the case [-]
+    pub eps_s_max: f64,
+    /// wall-clock time [s]
+    pub wall_time: f64,
+    /// files (or summary fields) holding non-finite values, with their count
+    pub non_finite: Vec<(String, usize)>,
+}
+
+impl Row {
+    /// Whether this case breaks the rule of the suite: a non-finite value was written, or
+    /// the run panicked.
+    pub fn violates(&self) -> bool {
+        !self.non_finite.is_empty() || matches!(self.outcome, Outcome::Panicked(_))
+    }
+
+    /// The status column: the outcome, `NaN written` overriding it.
+    pub fn status(&self) -> String {
+        if self.non_finite.is_empty() {
+            self.outcome.label().to_string()
+        } else {
+            format!("NaN written ({})", self.outcome.label())
+        }
+    }
+}
+
+/// Number of non-finite numbers in `text`: tokens `nan`, `inf` or `infinity` (any case, any
+/// sign) between separators, as Rust, C and Python print them; with `json`, also `null`
+/// (serde_json's rendering of a non-finite f64).
+pub fn non_finite_tokens(text: &str, json: bool) -> usize {
+    text.split(|c: char| !(c.is_ascii_alphanumeric() || c == '_'))
+        .filter(|t| {
+            let t = t.to_ascii_lowercase();
+            t == "nan" || t == "inf" || t == "infinity" || (json && t == "null")
+        })
+        .count()
+}
+
+/// Every output file of a run folder (.csv, .vtr, .pvd, .json) with non-finite values, and
+/// how many; files that cannot be read count as one.
+pub fn scan_run(dir: &Path) -> Vec<(String, usize)> {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return Vec::new();
+    };
+    let mut files: Vec<PathBuf> = entries
+        .filter_map(|e| e.ok().map(|e| e.path()))
+        .filter(|p| {
+            p.extension()
+                .and_then(|e| e.to_str())
+                .is_some_and(|e| matches!(e, "csv" | "vtr" | "pvd" | "json"))
+        })
+        .collect();
+    files.sort();
+    files
+        .into_iter()
+        .filter_map(|p| {
+            let name = p.file_name()?.to_string_lossy().into_owned();
+            let json = p.extension().is_some_and(|e| e == "json");
+            let count = std::fs::read_to_string(&p).map_or(1, |t| non_finite_tokens(&t, json));
+            (count > 0).then_some((name, count))
+        })
+        .collect()
+}
+
+/// Which of equation, cell and time a diagnosis names (issue 7 asks for all three).
+pub fn diagnosis_names(text: &str) -> (bool, bool, bool) {
+    let t = text.to_lowercase();
+    let equation = [
+        "momentum",
+        "continuity",
+        "granular energy",
+        "pressure",
+        "theta",
+        "θ",
+    ]
+    .iter()
+    .any(|e| t.contains(e));
+    let cell = t.contains("x =") || t.contains("cell");
+    let time = t.contains("t =");
+    (equation, cell, time)
+}
+
+/// What a diagnosis lacks of equation, cell and time, e.g. `no cell`; empty if complete.
+fn diagnosis_gaps(text: &str) -> String {
+    let (e, c, t) = diagnosis_names(text);
+    let missing: Vec<&str> = [(e, "equation"), (c, "cell"), (t, "time")]
+        .iter()
+        .filter(|(named, _)| !named)
+        .map(|(_, what)| *what)
+        .collect();
+    if missing.is_empty() {
+        String::new()
+    } else {
+        format!("no {}", missing.join(", no "))
+    }
+}
+
+/// The row of a finished run from its summary.
+fn row_from_summary(base: Row, s: &RunSummary) -> Row {
+    let mut non_finite = base.non_finite;
+    for (field, v) in [
+        ("summary.json: simulated_time", s.simulated_time),
+        ("summary.json: dt.min", s.dt.min),
+        ("summary.json: solids_mass_change", s.solids_mass_change),
+        ("summary.json: max_eps_s", s.max_eps_s),
+    ] {
+        if !v.is_finite() {
+            non_finite.push((field.to_string(), 1));
+        }
+    }
+    Row {
+        outcome: match &s.status {
+            RunStatus::Diverged { diagnosis } => Outcome::Stopped(diagnosis.clone()),
+            RunStatus::Completed => Outcome::Completed,
+            other => Outcome::Error(format!("run ended as {other:?}")),
+        },
+        time: s.simulated_time,
+        min_dt: (s.steps > 0).then_some(s.dt.min),
+        steps: s.steps,
+        rejected: Some(s.rejected_steps),
+        mass_error: Some(s.solids_mass_change),
+        max_eps_s: Some(s.max_eps_s),
+        wall_time: s.wall_time,
+        non_finite,
+        ..base
+    }
+}
+
+/// Runs one case at `fidelity` into `dir` (cleared first) and makes its row.
+pub fn run_one(case: &SourcedCase, fidelity: Fidelity, dir: &Path, bar: &ProgressBar) -> Row {
+    let c = case.case.at_fidelity(fidelity);
+    let cells = c.grid().map_or((0, 0), |g| (g.nx(), g.ny()));
+    let _ = std::fs::remove_dir_all(dir);
+    // accepted steps as the progress reports them, for a run that ends without a summary
+    let (mut time, mut steps, mut min_dt) = (0.0_f64, 0_u64, f64::INFINITY);
+    let started = Instant::now();
+    let result = catch_unwind(AssertUnwindSafe(|| {
+        run_case(&case.case, fidelity, dir, |p| {
+            min_dt = min_dt.min(p.time - time);
+            time = p.time;
+            steps = p.steps;
+            bar.set_position((1000.0 * p.time / p.end_time) as u64);
+            bar.set_message(format!(
+                "t = {:.3} s, dt = {:.1e} s, {} it",
+                p.time, p.dt, p.iterations
+            ));
+        })
+    }));
+    bar.finish_and_clear();
+    let base = Row {
+        case: c.name.clone(),
+        stresses: c
+            .description
+            .trim_start_matches("Stability:")
+            .trim()
+            .to_string(),
+        cells,
+        end_time: c.run.end_time,
+        outcome: Outcome::Completed,
+        time,
+        min_dt: (steps > 0).then_some(min_dt),
+        steps,
+        rejected: None,
+        mass_error: None,
+        max_eps_s: None,
+        eps_s_max: c.solids.iter().map(|s| s.max_packing).fold(0.0, f64::max),
+        wall_time: started.elapsed().as_secs_f64(),
+        non_finite: scan_run(dir),
+    };
+    match result {
+        Ok(Ok(summary)) => row_from_summary(base, &summary),
+        Ok(Err(RunError::Unsupported { reason, .. })) if steps == 0 => Row {
+            outcome: Outcome::Refused(reason),
+            ..base
+        },
+        Ok(Err(e)) => Row {
+            outcome: Outcome::Error(format!("at t = {time:.6e} s after {steps} steps: {e}")),
+            ..base
+        },
+        Err(panic) => {
+            let message = panic
+                .downcast_ref::<String>()
+                .cloned()
+                .or_else(|| panic.downcast_ref::<&str>().map(|s| s.to_string()))
+                .unwrap_or_else(|| "a panic without a message".into());
+            Row {
+                outcome: Outcome::Panicked(format!("at t = {time:.6e} s: {message}")),
+                ..base
+            }
+        }
+    }
+}
+
+/// Runs the cases of `cases_dir` (sweeps expanded) at `opts.fidelity`, each into
+/// `runs_dir/<case>/<fidelity>/`, and returns their rows in case order.
+pub fn run_cases(cases_dir: &Path, runs_dir: &Path, opts: &StabilityOptions) -> Result<Vec<Row>> {
+    let runs = matrix(cases_dir)?.runs;
+    let selected: Vec<&SourcedCase> = runs
+        .iter()
+        .filter(|r| opts.only.as_deref().is_none_or(|p| r.case.name.contains(p)))
+        .collect();
+    if selected.is_empty() {
+        bail!("no stability case in {}", cases_dir.display());
+    }
+    let progress = MultiProgress::new();
+    let rows: Mutex<Vec<(usize, Row)>> = Mutex::new(Vec::new());
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(opts.jobs.max(1))
+        .build()?;
+    pool.install(|| {
+        selected.par_iter().enumerate().for_each(|(k, r)| {
+            let bar = progress.add(ProgressBar::new(1000));
+            bar.set_style(progress_style());
+            bar.set_prefix(r.case.name.clone());
+            let dir = runs_dir.join(&r.case.name).join(opts.fidelity.name());
+            let row = run_one(r, opts.fidelity, &dir, &bar);
+            println!(
+                "  {:<16} {}{}",
+                row.case,
+                row.status(),
+                row.outcome
+                    .message()
+                    .map_or(String::new(), |m| format!(": {m}"))
+            );
+            rows.lock().expect("no poisoned lock").push((k, row));
+        });
+    });
+    let mut rows = rows.into_inner().expect("no poisoned lock");
+    rows.sort_by_key(|(k, _)| *k);
+    Ok(rows.into_iter().map(|(_, r)| r).collect())
+}
+
+fn num(v: Option<f64>, f: impl Fn(f64) -> String) -> String {
+    v.map_or(String::new(), f)
+}
+
+/// Header of docs/stability/summary.csv.
+pub const CSV_HEADER: &str = "case,fidelity,nx,ny,status,end_time_s,time_reached_s,min_dt_s,\
+steps,rejected_steps,solids_mass_error,max_eps_s,eps_s_max,wall_time_s,non_finite,diagnosis_gaps,message";
+
+/// One CSV row (RFC 4180 quoting).
+pub fn csv_row(row: &Row, fidelity: Fidelity) -> String {
+    let non_finite: Vec<String> = row
+        .non_finite
+        .iter()
+        .map(|(f, n)| format!("{f}: {n}"))
+        .collect();
+    let message = row.outcome.message().unwrap_or("");
+    let gaps = match row.outcome {
+        Outcome::Stopped(ref d) => diagnosis_gaps(d),
+        _ => String::new(),
+    };
+    [
+        csv_field(&row.case),
+        fidelity.to_string(),
+        row.cells.0.to_string(),
+        row.cells.1.to_string(),
+        csv_field(&row.status()),
+        format!("{}", row.end_time),
+        format!("{:e}", row.time),
+        num(row.min_dt, |v| format!("{v:e}")),
+        row.steps.to_string(),
+        row.rejected.map_or(String::new(), |r| r.to_string()),
+        num(row.mass_error, |v| format!("{v:e}")),
+        num(row.max_eps_s, |v| format!("{v:e}")),
+        format!("{}", row.eps_s_max),
+        format!("{:.3}", row.wall_time),
+        csv_field(&non_finite.join("; ")),
+        csv_field(&gaps),
+        csv_field(message),
+    ]
+    .join(",")
+}
+
+/// Header of the Markdown table.
+pub const MD_HEADER: &str = "| case | stresses | status | t reached / end [s] | cells | min Δt [s] | \
+steps (rejected) | solids mass error | max εs | wall [s] |\n|---|---|---|---|---|---|---|---|---|---|";
+
+/// One Markdown table row.
+pub fn md_row(row: &Row) -> String {
+    let status = match &row.outcome {
+        Outcome::Stopped(d) => {
+            let gaps = diagnosis_gaps(d);
+            if gaps.is_empty() || !row.non_finite.is_empty() {
+                row.status()
+            } else {
+                format!("{} (diagnosis: {gaps})", row.status())
+            }
+        }
+        _ => row.status(),
+    };
+    // a stop in the first millisecond must not read as 0.000
+    let time = if row.time > 0.0 && row.time < 1e-3 {
+        format!("{:.2e}", row.time)
+    } else {
+        format!("{:.3}", row.time)
+    };
+    format!(
+        "| {} | {} | {} | {time} / {} | {} × {} | {} | {}{} | {} | {} | {:.1} |",
+        row.case,
+        row.stresses.replace('|', "/"),
+        status,
+        row.end_time,
+        row.cells.0,
+        row.cells.1,
+        num(row.min_dt, |v| format!("{v:.2e}")),
+        row.steps,
+        row.rejected.map_or(String::new(), |r| format!(" ({r})")),
+        num(row.mass_error, |v| format!("{v:.1e}")),
+        num(row.max_eps_s, |v| format!("{v:.4}")),
+        row.wall_time
+    )
+}
+
+/// The civil date (year, month, day) of a day count since 1970-01-01 (H. Hinnant's
+/// `civil_from_days`).
+pub fn civil_date(days: i64) -> (i64, u32, u32) {
+    let z = days + 719_468;
+    let era = z.div_euclid(146_097);
+    let doe = z.rem_euclid(146_097);
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let day = (doy - (153 * mp + 2) / 5 + 1) as u32;
+    let month = if mp < 10 { mp + 3 } else { mp - 9 } as u32;
+    (yoe + era * 400 + i64::from(month <= 2), month, day)
+}
+
+fn today() -> String {
+    let days = SystemTime::now()
+        .duration_since(UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs() / 86_400) as i64;
+    let (y, m, d) = civil_date(days);
+    format!("{y:04}-{m:02}-{d:02}")
+}
+
+/// The Markdown page: the command, the date, the table, the definitions and every message.
+pub fn markdown(rows: &[Row], fidelity: Fidelity, command: &str, date: &str) -> String {
+    let mut s = String::new();
+    let _ = writeln!(
+        s,
+        "# Stability of stiff and extreme cases (issue 7)\n\n\
+         Generated by `{command}` on {date} (fidelity `{fidelity}`, one run at a time, \
+         {cores} core(s) available); regenerate it after any physics change, do not edit it \
+         by hand. The same rows are in `docs/stability/summary.csv`.\n\n\
+         Each case in `cases/stability/` is the sensitivity slide (`cases/sensitivity/base.ron`) \
+         with one stiff or extreme change; the header of each file says what it stresses and \
+         what is assumed. Each case must run to its end time or stop with a diagnosis naming \
+         the equation, the cell and the time; no output may contain a NaN or an infinity. \
+         The command fails if a run wrote one or panicked.\n",
+        cores = std::thread::available_parallelism().map_or(1, |n| n.get())
+    );
+    let _ = writeln!(s, "{MD_HEADER}");
+    for r in rows {
+        let _ = writeln!(s, "{}", md_row(r));
+    }
+    let _ = writeln!(
+        s,
+        "\n- **status**: `completed` (reached the end time); `stopped` (a step did not converge \
+         and Δt fell below dt_min: the run stopped, kept its output and wrote the diagnosis \
+         below; a diagnosis lacking the equation, the cell or the time says so); `refused` (the \
+         solver lacks what the case needs and said so before any step); `error` (the run ended \
+         on an error after it started); `panicked`; `NaN written` (a NaN or infinity in an \
+         output file or in the summary: the failure this suite exists to catch).\n\
+         - **min Δt**: the smallest accepted step, not counting a last step shortened to land \
+         on the end time (`summary.json` `dt.min`).\n\
+         - **solids mass error**: (M(end) − M(0)) / M(0) of the total solids mass \
+         (`summary.json` `solids_mass_change`).\n\
+         - **max εs**: the largest solids volume fraction of any cell over the initial state \
+         and every accepted step (`summary.json` `max_eps_s`); {packing}.\n\
+         - **NaN scan**: every `.csv`, `.vtr`, `.pvd` and `summary.json` of \
+         `runs/stability/<case>/{fidelity}/` searched for `nan`, `inf`, `infinity` (any case) \
+         and, in JSON, `null`.\n\
+         - **wall**: wall-clock time of the run on this machine (shared with other work, so \
+         indicative only).",
+        packing = match rows.first() {
+            Some(first) if rows.iter().all(|r| r.eps_s_max == first.eps_s_max) => {
+                format!("εs,max = {} in every case", first.eps_s_max)
+            }
+            _ => "εs,max of each case in the `eps_s_max` column of the CSV".to_string(),
+        }
+    );
+    let messages: Vec<&Row> = rows
+        .iter()
+        .filter(|r| r.outcome.message().is_some())
+        .collect();
+    if !messages.is_empty() {
+        let _ = writeln!(s, "\n## Diagnoses and messages\n");
+        for r in messages {
+            let _ = writeln!(
+                s,
+                "- **{}** ({}): {}",
+                r.case,
+                r.outcome.label(),
+                r.outcome.message().unwrap_or("")
+            );
+        }
+    }
+    let nan: Vec<&Row> = rows.iter().filter(|r| !r.non_finite.is_empty()).collect();
+    if !nan.is_empty() {
+        let _ = writeln!(s, "\n## Non-finite values written\n");
+        for r in nan {
+            let files: Vec<String> = r
+                .non_finite
+                .iter()
+                .map(|(f, n)| format!("{f} ({n})"))
+                .collect();
+            let _ = writeln!(s, "- **{}**: {}", r.case, files.join(", "));
+        }
+    }
+    s
+}
+
+/// `cargo xtask stability`: runs cases/stability/ and writes docs/stability.md and
+/// docs/stability/summary.csv; fails if a run wrote a non-finite value or panicked.
+pub fn stability(root: &Path, opts: &StabilityOptions) -> Result<()> {
+    let cases_dir = root.join("cases").join(STABILITY_DIR);
+    let runs_dir = root.join("runs").join(STABILITY_DIR);
+    let started = Instant::now();
+    println!(
+        "stability cases of {} at fidelity `{}`",
+        cases_dir.strip_prefix(root).unwrap_or(&cases_dir).display(),
+        opts.fidelity
+    );
+    let rows = run_cases(&cases_dir, &runs_dir, opts)?;
+    let mut command = format!("cargo xtask stability --fidelity {}", opts.fidelity);
+    if let Some(only) = &opts.only {
+        let _ = write!(command, " --only {only}");
+    }
+    let md = markdown(&rows, opts.fidelity, &command, &today());
+    let mut csv = format!("{CSV_HEADER}\n");
+    for r in &rows {
+        csv.push_str(&csv_row(r, opts.fidelity));
+        csv.push('\n');
+    }
+    let docs = root.join("docs");
+    runout_output::write_atomic(&docs.join("stability.md"), md.as_bytes())
+        .context("writing docs/stability.md")?;
+    std::fs::create_dir_all(docs.join("stability")).context("creating docs/stability/")?;
+    runout_output::write_atomic(&docs.join("stability").join("summary.csv"), csv.as_bytes())
+        .context("writing docs/stability/summary.csv")?;
+    println!("{MD_HEADER}");
+    for r in &rows {
+        println!("{}", md_row(r));
+    }
+    println!(
+        "{} case(s) in {:.1} s; table in docs/stability.md and docs/stability/summary.csv",
+        rows.len(),
+        started.elapsed().as_secs_f64()
+    );
+    let bad: Vec<String> = rows
+        .iter()
+        .filter(|r| r.violates())
+        .map(|r| format!("{} ({})", r.case, r.status()))
+        .collect();
+    if !bad.is_empty() {
+        bail!(
+            "{} case(s) wrote non-finite values or panicked: {}",
+            bad.len(),
+            bad.join(", ")
+        );
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn row(outcome: Outcome) -> Row {
+        Row {
+            case: "ST-x".into(),
+            stresses: "a | b, \"c\"".into(),
+            cells: (100, 9),
+            end_time: 0.35,
+            outcome,
+            time: 0.2,
+            min_dt: Some(1e-5),
+            steps: 40,
+            rejected: Some(3),
+            mass_error: Some(-2e-12),
+            max_eps_s: Some(0.651),
+            eps_s_max: 0.65,
+            wall_time: 1.5,
+            non_finite: Vec::new(),
+        }
+    }
+
+    fn csv_width(line: &str) -> usize {
+        csv::ReaderBuilder::new()
+            .has_headers(false)
+            .from_reader(line.as_bytes())
+            .records()
+            .next()
+            .expect("one record")
+            .expect("valid CSV")
+            .len()
+    }
+
+    #[test]
+    fn the_scan_finds_every_spelling_of_a_non_finite_number_and_nothing_else() {
+        assert_eq!(
+            non_finite_tokens("t,eps\n1e0,NaN\n2e0,-inf\n3e0,inf", false),
+            3
+        );
+        assert_eq!(non_finite_tokens("1 nan 2 Infinity -INF +inf", false), 4);
+        assert_eq!(
+            non_finite_tokens(
+                "<DataArray type=\"Float64\" Name=\"eps_s\" format=\"ascii\">0e0 6.5e-1 1e-12",
+                false
+            ),
+            0
+        );
+        // words that contain the letters are not numbers
+        assert_eq!(
+            non_finite_tokens("information nano infinite_loop", false),
+            0
+        );
+        assert_eq!(non_finite_tokens("{\"min\": null}", true), 1);
+        assert_eq!(non_finite_tokens("{\"min\": null}", false), 0);
+    }
+
+    #[test]
+    fn the_scan_reports_the_files_of_a_run_that_hold_nan() {
+        let dir =
+            std::env::temp_dir().join(format!("runout-stability-scan-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(dir.join("bulk.csv"), "t,m\n0e0,1e0\n1e-2,NaN\n").unwrap();
+        std::fs::write(dir.join("fields_00001.vtr"), "<x>0e0 inf -inf</x>").unwrap();
+        std::fs::write(dir.join("summary.json"), "{\"dt\": 1e-3}").unwrap();
+        std::fs::write(dir.join("resolved.ron"), "NaN is not scanned here").unwrap();
+        assert_eq!(
+            scan_run(&dir),
+            vec![
+                ("bulk.csv".to_string(), 1),
+                ("fields_00001.vtr".to_string(), 2)
+            ]
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn a_diagnosis_is_checked_for_equation_cell_and_time() {
+        let single = "the step from t = 1.0e-2 s did not converge; u momentum 1e-3 (largest at \
+                      x = 0.1 m, y = 0.2 m)";
+        assert_eq!(diagnosis_names(single), (true, true, true));
+        assert_eq!(diagnosis_gaps(single), "");
+        let two_fluid = "the step from t = 3.1e-1 s did not converge: momentum 1e-2, gas \
+                         continuity 3e-4";
+        assert_eq!(diagnosis_gaps(two_fluid), "no cell");
+        assert_eq!(diagnosis_gaps("it broke"), "no equation, no cell, no time");
+    }
+
+    #[test]
+    fn nan_or_a_panic_fails_the_suite_and_a_diagnosed_stop_does_not() {
+        assert!(!row(Outcome::Completed).violates());
+        assert!(!row(Outcome::Stopped("t = 1 s".into())).violates());
+        assert!(!row(Outcome::Refused("Schaeffer".into())).violates());
+        assert!(row(Outcome::Panicked("index out of bounds".into())).violates());
+        let mut nan = row(Outcome::Completed);
+        nan.non_finite.push(("bulk.csv".into(), 2));
+        assert!(nan.violates());
+        assert_eq!(nan.status(), "NaN written (completed)");
+        // a summary with a non-finite number is caught even if no file shows it
+        let mut s = RunSummary {
+            case: "ST-x".into(),
+            fidelity: "smoke".into(),
+            cells: (100, 9),
+            simulated_time: 0.35,
+            wall_time: 1.0,
+            steps: 10,
+            rejected_steps: 0,
+            outer_iterations: 100,
+            dt: runout_output::DtStats {
+                min: 1e-3,
+                max: 1e-2,
+                mean: 5e-3,
+            },
+            solids_mass_change: f64::NAN,
+            max_mass_imbalance: 0.0,
+            max_eps_s: 0.6,
+            status: RunStatus::Completed,
+            profile: Vec::new(),
+        };
+        assert!(row_from_summary(row(Outcome::Completed), &s).violates());
+        s.solids_mass_change = 0.0;
+        s.status = RunStatus::Diverged {
+            diagnosis: "t = 0.1 s".into(),
+        };
+        let r = row_from_summary(row(Outcome::Completed), &s);
+        assert!(!r.violates());
+        assert_eq!(r.outcome, Outcome::Stopped("t = 0.1 s".into()));
+    }
+
+    #[test]
+    fn every_row_has_the_width_of_its_header() {
+        let md_width = |l: &str| l.matches('|').count();
+        let header = MD_HEADER.lines().next().unwrap();
+        for outcome in [
+            Outcome::Completed,
+            Outcome::Stopped("t = 1 s, momentum, x = 2 m".into()),
+            Outcome::Stopped("momentum, no place".into()),
+            Outcome::Refused("needs \"P*\", not implemented".into()),
+            Outcome::Error("x".into()),
+        ] {
+            let mut r = row(outcome);
+            assert_eq!(md_width(&md_row(&r)), md_width(header));
+            assert_eq!(
+                csv_width(&csv_row(&r, Fidelity::Smoke)),
+                csv_width(CSV_HEADER)
+            );
+            r.non_finite.push(("a.csv".into(), 1));
+            r.min_dt = None;
+            r.rejected = None;
+            assert_eq!(md_width(&md_row(&r)), md_width(header));
+            assert_eq!(
+                csv_width(&csv_row(&r, Fidelity::Smoke)),
+                csv_width(CSV_HEADER)
+            );
+        }
+    }
+
+    #[test]
+    fn the_page_holds_the_command_the_date_every_row_and_every_message() {
+        let mut nan = row(Outcome::Completed);
+        nan.case = "ST-nan".into();
+        nan.non_finite.push(("bulk.csv".into(), 2));
+        let mut early = row(Outcome::Stopped("t = 6.5e-6 s: momentum 1e-3".into()));
+        early.case = "ST-early".into();
+        early.time = 6.5e-6;
+        let rows = [row(Outcome::Refused("needs P*".into())), nan, early];
+        let md = markdown(
+            &rows,
+            Fidelity::Smoke,
+            "cargo xtask stability",
+            "2026-01-02",
+        );
+        assert!(md.contains("`cargo xtask stability` on 2026-01-02"), "{md}");
+        assert_eq!(md.lines().filter(|l| l.starts_with("| ST-")).count(), 3);
+        assert!(
+            md.contains("stopped (diagnosis: no cell) | 6.50e-6 / 0.35"),
+            "{md}"
+        );
+        assert!(md.contains("- **ST-x** (refused): needs P*"), "{md}");
+        assert!(md.contains("- **ST-nan**: bulk.csv (2)"), "{md}");
+        assert!(md.contains("εs,max = 0.65 in every case"), "{md}");
+    }
+
+    #[test]
+    fn civil_dates_from_day_counts() {
+        assert_eq!(civil_date(0), (1970, 1, 1));
+        assert_eq!(civil_date(11_016), (2000, 2, 29));
+        assert_eq!(civil_date(19_723), (2024, 1, 1));
+        assert_eq!(civil_date(-1), (1969, 12, 31));
+    }
+
+    /// CI smoke: one stiff case (Δt_max ten times too large, started at Δt_max) at smoke
+    /// fidelity, through the same runner as the table; about a second.
+    #[test]
+    fn the_dt_max_case_runs_at_smoke_fidelity_without_writing_nan() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+        let cases = root.join("cases").join(STABILITY_DIR);
+        let out = std::env::temp_dir().join(format!("runout-stability-{}", std::process::id()));
+        let opts = StabilityOptions {
+            fidelity: Fidelity::Smoke,
+            only: Some("ST-dt-max".into()),
+            jobs: 1,
+        };
+        let rows = run_cases(&cases, &out, &opts).expect("the case loads");
+        assert_eq!(rows.len(), 1);
+        let r = &rows[0];
+        assert!(
+            matches!(r.outcome, Outcome::Completed | Outcome::Stopped(_)),
+            "{r:?}"
+        );
+        assert!(r.non_finite.is_empty(), "{r:?}");
+        assert!(r.steps > 0 && r.min_dt.is_some_and(|dt| dt > 0.0), "{r:?}");
+        assert!(
+            r.mass_error.is_some_and(f64::is_finite) && r.max_eps_s.is_some_and(f64::is_finite),
+            "{r:?}"
+        );
+        // the run folder was really scanned: its bulk monitor exists
+        assert!(out
+            .join("ST-dt-max")
+            .join("smoke")
+            .join("bulk.csv")
+            .exists());
+        std::fs::remove_dir_all(&out).unwrap();
+    }
+}
