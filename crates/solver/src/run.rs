@@ -454,14 +454,20 @@ impl CaseSolver for TwoFluidCase {
             converged: out.converged,
             iterations: out.iterations,
             residual: out.residual,
-            detail: format!(
-                "momentum {:.3e}, gas continuity {:.3e}, solids continuity {:.3e}, granular energy {:.3e}{}",
-                r.momentum,
-                r.gas_mass,
-                r.solids_mass,
-                r.theta,
-                out.failure.map_or(String::new(), |f| format!("; the last try stopped on: {f}"))
-            ),
+            // only a failed step's detail is read (its diagnosis)
+            detail: if out.converged {
+                String::new()
+            } else {
+                format!(
+                    "momentum {:.3e}, gas continuity {:.3e}, solids continuity {:.3e}, granular energy {:.3e}; {}{}",
+                    r.momentum,
+                    r.gas_mass,
+                    r.solids_mass,
+                    r.theta,
+                    self.solver.residual_locations(),
+                    out.failure.map_or(String::new(), |f| format!("; the last try stopped on: {f}"))
+                )
+            },
         })
     }
 

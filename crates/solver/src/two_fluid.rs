@@ -347,6 +347,17 @@ pub struct TwoFluid {
     closures_fresh: bool,
     /// where the time went
     profile: Profile,
+    /// where the residuals of the last outer iteration were largest
+    worst: Worst,
+}
+
+/// Locations of the largest residuals of the last outer iteration (for diagnoses).
+#[derive(Clone, Copy, Debug, Default)]
+struct Worst {
+    /// |residual|, phase (0 gas, m solids m), component (0 u, 1 v), node i, j
+    momentum: (f64, usize, usize, usize, usize),
+    /// |residual|, cell
+    theta: (f64, usize),
 }
 
 fn lin(equation: &str) -> impl Fn(LinSolveError) -> TwoFluidError + '_ {
@@ -490,6 +501,7 @@ impl TwoFluid {
             pressure_pinned,
             closures_fresh: false,
             profile: Profile::default(),
+            worst: Worst::default(),
             grid,
             gas,
             gas_walls,
@@ -851,6 +863,7 @@ impl TwoFluid {
 
     /// Step 2: momentum predictor of every phase with partial elimination of the drag.
     fn momentum(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
+        self.worst.momentum = (0.0, 0, 0, 0, 0);
         let grid = &self.grid;
         let (nx, ny) = (grid.nx(), grid.ny());
         let (dx, dy) = (grid.x.widths(), grid.y.widths());
@@ -1037,8 +1050,12 @@ impl TwoFluid {
                         } else {
                             drag[p - 1] * (phi[0] - phi[p])
                         };
-                        num += (r_in[p] + coupling - a_in[p] * phi[p]).abs();
+                        let res = (r_in[p] + coupling - a_in[p] * phi[p]).abs();
+                        num += res;
                         den += a_in[p].abs() * speed;
+                        if res > self.worst.momentum.0 {
+                            self.worst.momentum = (res, p, dir, i, j);
+                        }
                     }
                     let (mut a_out, mut r_out) =
                         ([0.0; MAX_SOLIDS_PHASES + 1], [0.0; MAX_SOLIDS_PHASES + 1]);
@@ -1283,6 +1300,7 @@ impl TwoFluid {
 
     /// Step 5: granular energy of each solids phase (model-spec §4.8).
     fn granular_energy(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
+        let mut worst_theta = (0.0, 0);
         let relax = self.settings.relax_theta;
         let nx = self.grid.nx();
         let mut residual = 0.0;
@@ -1325,6 +1343,9 @@ impl TwoFluid {
                 }
                 let nb = neighbour_sum(a, &s.theta, k) - a.a_p[k] * s.theta[k];
                 num += nb.abs();
+                if nb.abs() > worst_theta.0 {
+                    worst_theta = (nb.abs(), k);
+                }
                 den += (a.a_p[k] * s.theta[k]).abs();
                 let ap = a.a_p[k] / relax;
                 a.b[k] += (1.0 - relax) * ap * s.theta[k];
@@ -1340,7 +1361,69 @@ impl TwoFluid {
             self.profile.theta_assembly -= solve;
             s.theta.iter_mut().for_each(|t| *t = t.max(THETA_SMALL));
         }
+        self.worst.theta = worst_theta;
         Ok(residual)
+    }
+
+    /// Where the residuals of the last outer iteration were largest: momentum (phase,
+    /// component, node), gas and solids continuity (cell) and granular energy (cell), with
+    /// grid indices and coordinates, for the diagnosis of a step that fails.
+    pub fn residual_locations(&self) -> String {
+        let g = &self.grid;
+        let nx = g.nx();
+        let cell = |k: usize| {
+            let (i, j) = (k % nx, k / nx);
+            let (x, y) = g.cell_centre(i, j);
+            format!("cell ({i}, {j}) at x = {x:.4} m, y = {y:.4} m")
+        };
+        let largest = |v: &[f64]| {
+            v.iter().enumerate().fold(
+                (0.0_f64, 0),
+                |m, (k, r)| if r.abs() > m.0 { (r.abs(), k) } else { m },
+            )
+        };
+        let mut out = Vec::new();
+        let (r, p, dir, i, j) = self.worst.momentum;
+        if r > 0.0 {
+            let phase = if p == 0 {
+                "gas".to_string()
+            } else {
+                format!("solids {p}")
+            };
+            let (comp, (x, y)) = if dir == 0 {
+                ("u", g.u_face_position(i, j))
+            } else {
+                ("v", g.v_face_position(i, j))
+            };
+            out.push(format!(
+                "momentum: largest residual {r:.3e} in {phase} {comp} at node ({i}, {j}), x = {x:.4} m, y = {y:.4} m"
+            ));
+        }
+        let (r, k) = largest(&self.imbalance);
+        if r > 0.0 {
+            out.push(format!(
+                "gas continuity: largest imbalance {r:.3e} kg/s per m in {}",
+                cell(k)
+            ));
+        }
+        for (m, s) in self.solids.iter().enumerate() {
+            let (r, k) = largest(&s.imbalance);
+            if r > 0.0 {
+                out.push(format!(
+                    "solids {} continuity: largest imbalance {r:.3e} kg/s per m in {}",
+                    m + 1,
+                    cell(k)
+                ));
+            }
+        }
+        let (r, k) = self.worst.theta;
+        if r > 0.0 {
+            out.push(format!(
+                "granular energy: largest residual {r:.3e} in {}",
+                cell(k)
+            ));
+        }
+        out.join("; ")
     }
 }
 
