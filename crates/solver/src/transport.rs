@@ -156,7 +156,8 @@ pub fn assemble(faces: &FaceData, phi: &[f64], scheme: Scheme, a: &mut Stencil5)
         return;
     }
     // Superbee deferred correction: for each interior face, δ = F (φ_f − φ_upwind) leaves
-    // the west/south node and enters the east/north node.
+    // the west/south node and enters the east/north node (nothing where F = 0, e.g. where a
+    // phase is absent).
     let at = |i: isize, j: isize| -> Option<f64> {
         (i >= 0 && j >= 0 && (i as usize) < mx && (j as usize) < my)
             .then(|| phi[i as usize + mx * j as usize])
@@ -164,6 +165,9 @@ pub fn assemble(faces: &FaceData, phi: &[f64], scheme: Scheme, a: &mut Stencil5)
     for j in 0..my {
         for i in 1..mx {
             let f = faces.flux_x[faces.xf(i, j)];
+            if f == 0.0 {
+                continue;
+            }
             let (ii, jj) = (i as isize, j as isize);
             let delta = if f >= 0.0 {
                 correction(f, at(ii - 2, jj), phi[i - 1 + mx * j], phi[i + mx * j])
@@ -177,6 +181,9 @@ pub fn assemble(faces: &FaceData, phi: &[f64], scheme: Scheme, a: &mut Stencil5)
     for j in 1..my {
         for i in 0..mx {
             let f = faces.flux_y[faces.yf(i, j)];
+            if f == 0.0 {
+                continue;
+            }
             let (ii, jj) = (i as isize, j as isize);
             let delta = if f >= 0.0 {
                 correction(f, at(ii, jj - 2), phi[i + mx * (j - 1)], phi[i + mx * j])
