@@ -663,6 +663,7 @@ pub fn write_report(paths: &ReportPaths, requested: Option<Fidelity>) -> Result<
          case (shared/docs/cases.md family M).\n\n",
     );
     mfix_table(&mut md, &cases);
+    floors_section(&mut md, &paths.docs);
 
     md.push_str("## Runs used\n\n");
     runs_table(&mut md, &names, &cases);
@@ -670,6 +671,58 @@ pub fn write_report(paths: &ReportPaths, requested: Option<Fidelity>) -> Result<
     runout_output::write_atomic(&paths.docs.join(RESULTS_FILE), md.as_bytes())
         .context("writing results.md")?;
     Ok(md)
+}
+
+/// The floor-variant comparison of family M (issue 9, item 4) as `cargo xtask verify
+/// mfix-slope` wrote it into docs/mfix-slope.md, with a sentence ranking the floors by slip;
+/// a note if that file or section does not exist yet.
+fn floors_section(md: &mut String, docs: &Path) {
+    const HEADING: &str = "## The four floors at t = 0.3 s";
+    md.push_str("### Family M: the four floors at t = 0.3 s (issue 9)\n\n");
+    let text = std::fs::read_to_string(docs.join("mfix-slope.md")).unwrap_or_default();
+    let Some(start) = text.find(HEADING) else {
+        md.push_str(
+            "**Missing**: docs/mfix-slope.md has no floor comparison yet; run `cargo xtask \
+             verify mfix-slope`.\n\n",
+        );
+        return;
+    };
+    let body = &text[start + HEADING.len()..];
+    let body = body.split_once("\n(").map_or(body, |(b, _)| b);
+    let end = body
+        .find("\n## ")
+        .or_else(|| body.find("\n**Result"))
+        .unwrap_or(body.len());
+    let section = body[..end].trim_start_matches(|c: char| c != '\n').trim();
+    md.push_str(section);
+    md.push_str(
+        "\n\nFrom docs/mfix-slope.md (written by `cargo xtask verify mfix-slope`, MFIX's grid).",
+    );
+    // rank by the wall-row mean solids velocity (table column 3) and give θ (column 5)
+    let mut rows: Vec<(String, f64, f64)> = section
+        .lines()
+        .filter(|l| l.starts_with("| M-"))
+        .filter_map(|l| {
+            let c: Vec<&str> = l.split('|').map(str::trim).collect();
+            Some((
+                c.get(1)?.to_string(),
+                c.get(3)?.parse().ok()?,
+                c.get(5)?.parse().ok()?,
+            ))
+        })
+        .collect();
+    if rows.len() > 1 {
+        rows.sort_by(|a, b| a.1.total_cmp(&b.1));
+        let order: Vec<String> = rows
+            .iter()
+            .map(|(name, u, theta)| format!("{name} ({u:.2} m/s, θ {theta:.1e} m²/s²)"))
+            .collect();
+        md.push_str(&format!(
+            " Ranked by wall slip (wall-row mean u_s), least to most: {}.",
+            order.join(" < ")
+        ));
+    }
+    md.push_str("\n\n");
 }
 
 /// `cargo xtask report [results]`: the report of the runs under `root`.

@@ -1645,9 +1645,9 @@ fn wall_face_velocities(grid: &Grid, spec: &SolidsSpec, s: &mut SolidsFields) ->
 }
 
 /// The row of a dilute solids velocity node k (model-spec §2.7, MFIX `source_u_s.f`): the
-/// plain mean of its neighbour nodes whose test cell — the neighbour of the node's low-side
-/// cell `cell` in that direction (MFIX's IJK) — holds εs > DIL_EP_S; with no such neighbour
-/// the node keeps `current`. Neighbours on fixed (wall) nodes do not count. `(mx, my)` is
+/// mean of its neighbour nodes whose test cell — the neighbour of the node's low-side cell
+/// `cell` in that direction (MFIX's IJK) — holds εs > DIL_EP_S, and of its own current
+/// value; with no such neighbour the node keeps `current`. Neighbours on fixed (wall) nodes do not count. `(mx, my)` is
 /// the node block, `nx` the cells per row.
 fn dilute_row(
     a: &mut Stencil5,
@@ -1685,12 +1685,14 @@ fn dilute_row(
     if count == 0 {
         return;
     }
+    // the node's own current value counts once as well: two dilute nodes that would only
+    // average each other otherwise form a singular pair (MFIX's plain mean has no self term)
     a.a_w[k] = if west { 1.0 } else { 0.0 };
     a.a_e[k] = if east { 1.0 } else { 0.0 };
     a.a_s[k] = if south { 1.0 } else { 0.0 };
     a.a_n[k] = if north { 1.0 } else { 0.0 };
-    a.a_p[k] = count as f64;
-    a.b[k] = 0.0;
+    a.a_p[k] = count as f64 + 1.0;
+    a.b[k] = current;
 }
 
 /// The θ row of a dilute cell k (εs ≤ DIL_EP_S): the plain mean of its neighbour cells with
