@@ -6,6 +6,7 @@
 //! - `bench linsolve`: the linear-solver timing table of docs/performance.md.
 //! - `verify <name> [--report]`: the verification suite of the single-phase core;
 //!   `verify mfix-slope`: family M against MFIX (issue 9, [`mfix_slope`]);
+//!   `verify two-fluid`: issue 7's cooling, settling and S-JJ-phi checks at full size;
 //!   `verify collapse [--fidelity smoke|coarse] [--reuse]`: issue 7's granular column collapse
 //!   check;
 //! - `report analytic`: family A, the closed-form profiles of paper Fig. 1, as SVG and CSV
@@ -79,7 +80,8 @@ enum Task {
     /// taylor-green, all), the granular column collapse (issue 7: collapse) and family M
     /// against MFIX (issue 9: mfix-slope).
     Verify {
-        /// cavity, cavity-re1000, poiseuille, taylor-green, all, collapse or mfix-slope
+        /// cavity, cavity-re1000, poiseuille, taylor-green, all, two-fluid, collapse or
+        /// mfix-slope
         name: String,
         /// also write error against run time (CSV/SVG/Markdown) into docs/verification/
         #[arg(long)]
@@ -199,6 +201,35 @@ fn main() -> Result<()> {
                     skip_variants,
                 };
                 mfix_slope::check(&root(), &opts)
+            } else if name == "two-fluid" {
+                // issue 7's two-fluid checks at full size: homogeneous cooling, the settling
+                // column and S-JJ-phi φ = 0.1 at smoke and coarse fidelity to 1.25 s (the
+                // test suite runs all but the coarse one)
+                let status =
+                    Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
+                        .current_dir(root())
+                        .args([
+                            "test",
+                            "--release",
+                            "-p",
+                            "runout-solver",
+                            "--test",
+                            "tfm_cooling",
+                            "--test",
+                            "settling",
+                            "--test",
+                            "s_jj_phi",
+                            "--",
+                            "--include-ignored",
+                            "--nocapture",
+                            "--test-threads",
+                            "1",
+                        ])
+                        .status()?;
+                if !status.success() {
+                    bail!("two-fluid verification failed: {status}");
+                }
+                Ok(())
             } else if name == "collapse" {
                 collapse::verify(
                     &root(),
