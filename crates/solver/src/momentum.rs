@@ -26,7 +26,7 @@ use runout_mesh::{Grid, Sides};
 use runout_walls::RobinFace;
 
 use crate::single_phase::SideBc;
-use crate::transport::{assemble, face_value, FaceData, Scheme};
+use crate::transport::{assemble_masked, face_value, FaceData, Scheme};
 
 /// Cell-centred coefficient fields of one phase (index i + nx j).
 #[derive(Clone, Copy, Debug)]
@@ -45,6 +45,9 @@ pub struct PhaseFields<'a> {
     /// over the control volume [N per m depth] (model-spec §4.4, [`crate::stress`]); `None`
     /// where the viscosity is uniform and the flow incompressible (it vanishes)
     pub explicit_source: Option<&'a [f64]>,
+    /// nodes of the component being assembled whose rows the caller replaces (dilute solids
+    /// faces, model-spec §2.7): their rows and the faces between two of them are skipped
+    pub skip: Option<&'a [bool]>,
 }
 
 /// Per-node wall closures that replace a side's single [`SideBc`] (wall models whose
@@ -170,6 +173,12 @@ pub(crate) fn add_wall_face(
     }
 }
 
+/// Whether both momentum nodes `k0` and `k1` are skipped (their shared face is not needed).
+#[inline]
+fn both_skipped(skip: Option<&[bool]>, k0: usize, k1: usize) -> bool {
+    skip.is_some_and(|s| s[k0] && s[k1])
+}
+
 /// Assembles the u-momentum system of one phase on the (nx+1) × ny block of x-faces,
 /// without relaxation. Rows of fixed nodes (wall normal velocities) read u = 0.
 pub fn assemble_u(
@@ -228,6 +237,10 @@ pub fn assemble_u(
         for i in 1..=nx {
             // u-CV x-face at cell centre i−1, between u-nodes i−1 and i
             let k = faces.xf(i, j);
+            if both_skipped(phase.skip, i - 1 + mx * j, i + mx * j) {
+                (faces.flux_x[k], faces.cond_x[k]) = (0.0, 0.0);
+                continue;
+            }
             faces.flux_x[k] = 0.5 * (x_face_flux(i - 1, j) + x_face_flux(i, j));
             faces.cond_x[k] = mu[i - 1 + nx * j] * dy[j] / dx[i - 1];
         }
@@ -235,6 +248,11 @@ pub fn assemble_u(
     for j in 1..ny {
         for i in 0..mx {
             // u-CV y-face at y-face j: halves of the two adjacent cells' v-face fluxes
+            if both_skipped(phase.skip, i + mx * (j - 1), i + mx * j) {
+                let k = faces.yf(i, j);
+                (faces.flux_y[k], faces.cond_y[k]) = (0.0, 0.0);
+                continue;
+            }
             let (west, east) = (i.checked_sub(1), (i < nx).then_some(i));
             let flux: f64 = [west, east]
                 .into_iter()
@@ -261,7 +279,7 @@ pub fn assemble_u(
             faces.cond_y[k] = mu_corner * cv_width(dx, i) / dyc[j];
         }
     }
-    assemble(faces, u, ctx.scheme, a);
+    assemble_masked(faces, u, ctx.scheme, phase.skip, a);
     let y0 = grid.y.start();
     let yc = grid.y.centres();
     for j in 0..ny {
@@ -279,6 +297,9 @@ pub fn assemble_u(
             let k = i + mx * j;
             if a.pattern().fixed_mask()[k] {
                 fixed_row(a, k, 0.0);
+                continue;
+            }
+            if phase.skip.is_some_and(|s| s[k]) {
                 continue;
             }
             let width = cv_width(dx, i);
@@ -389,6 +410,11 @@ pub fn assemble_v(
     for j in 0..my {
         for i in 1..nx {
             // v-CV x-face at x-face i: halves of the two adjacent rows' u-face fluxes
+            if both_skipped(phase.skip, i - 1 + nx * j, i + nx * j) {
+                let k = faces.xf(i, j);
+                (faces.flux_x[k], faces.cond_x[k]) = (0.0, 0.0);
+                continue;
+            }
             let (south, north) = (j.checked_sub(1), (j < ny).then_some(j));
             let flux: f64 = [south, north]
                 .into_iter()
@@ -415,11 +441,15 @@ pub fn assemble_v(
     for j in 1..my {
         for i in 0..nx {
             let k = faces.yf(i, j);
+            if both_skipped(phase.skip, i + nx * (j - 1), i + nx * j) {
+                (faces.flux_y[k], faces.cond_y[k]) = (0.0, 0.0);
+                continue;
+            }
             faces.flux_y[k] = 0.5 * (y_face_flux(i, j - 1) + y_face_flux(i, j));
             faces.cond_y[k] = mu[i + nx * (j - 1)] * dx[i] / dy[j - 1];
         }
     }
-    assemble(faces, v, ctx.scheme, a);
+    assemble_masked(faces, v, ctx.scheme, phase.skip, a);
     let x0 = grid.x.start();
     let xc = grid.x.centres();
     for j in 0..my {
@@ -427,6 +457,9 @@ pub fn assemble_v(
             let k = i + nx * j;
             if a.pattern().fixed_mask()[k] {
                 fixed_row(a, k, 0.0);
+                continue;
+            }
+            if phase.skip.is_some_and(|s| s[k]) {
                 continue;
             }
             let height = cv_width(dy, j);

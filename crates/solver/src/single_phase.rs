@@ -383,6 +383,7 @@ impl SinglePhase {
             viscosity: &self.viscosity_cells,
             solids_pressure: None,
             explicit_source: None,
+            skip: None,
         };
         assemble_u(
             &ctx,
@@ -435,6 +436,7 @@ impl SinglePhase {
             viscosity: &self.viscosity_cells,
             solids_pressure: None,
             explicit_source: None,
+            skip: None,
         };
         assemble_v(
             &ctx,

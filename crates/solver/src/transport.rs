@@ -131,10 +131,25 @@ fn correction(flux: f64, up: Option<f64>, centre: f64, down: f64) -> f64 {
 /// model-spec §4.3 is used: a_P carries no net-outflow term. Transient, pressure, body
 /// force and wall terms are added by the caller afterwards.
 pub fn assemble(faces: &FaceData, phi: &[f64], scheme: Scheme, a: &mut Stencil5) {
+    assemble_masked(faces, phi, scheme, None, a);
+}
+
+/// [`assemble`], leaving the rows of the nodes marked in `skip` untouched (the caller
+/// replaces them; their faces' fluxes must be zero unless a neighbour is active).
+pub fn assemble_masked(
+    faces: &FaceData,
+    phi: &[f64],
+    scheme: Scheme,
+    skip: Option<&[bool]>,
+    a: &mut Stencil5,
+) {
     let (mx, my) = (faces.mx, faces.my);
     for j in 0..my {
         for i in 0..mx {
             let k = i + mx * j;
+            if skip.is_some_and(|s| s[k]) {
+                continue;
+            }
             let fe = faces.flux_x[faces.xf(i + 1, j)];
             let fw = faces.flux_x[faces.xf(i, j)];
             let fn_ = faces.flux_y[faces.yf(i, j + 1)];

@@ -179,6 +179,9 @@ pub struct SolidsFields {
     gamma_over_theta: Vec<f64>,
     j_slip: Vec<f64>,
     strain: Vec<Strain>,
+    /// dilute u and v faces of the current momentum assembly (model-spec §2.7)
+    dilute_u: Vec<bool>,
+    dilute_v: Vec<bool>,
     /// closure values per cell (the parallel evaluation's output)
     cells: Vec<CellClosures>,
     /// tangential velocity on the wall faces of the south/north rows (per column) and the
@@ -462,6 +465,8 @@ impl TwoFluid {
                 j_slip: vec![0.0; n],
                 strain: vec![Strain::default(); n],
                 cells: vec![CellClosures::default(); n],
+                dilute_u: vec![false; (nx + 1) * ny],
+                dilute_v: vec![false; nx * (ny + 1)],
                 wall_face_velocity: Sides {
                     west: vec![0.0; ny],
                     east: vec![0.0; ny],
@@ -901,6 +906,7 @@ impl TwoFluid {
             // the gas's own cross terms are left out: with uniform μ_g they reduce to
             // μ_g ∇(∇·u_g), negligible here (μ_g = 1.8e-5 Pa s)
             explicit_source: None,
+            skip: None,
         };
         assemble_u(
             &ctx_gas,
@@ -921,6 +927,22 @@ impl TwoFluid {
             &mut self.a_vg,
         );
         for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
+            // dilute faces (interpolated εs ≤ DIL_EP_S, model-spec §2.7): their rows are
+            // replaced below, so the assembly skips them (most of a slide's domain)
+            dilute_faces(
+                grid,
+                &s.eps,
+                self.a_ug.pattern().fixed_mask(),
+                0,
+                &mut s.dilute_u,
+            );
+            dilute_faces(
+                grid,
+                &s.eps,
+                self.a_vg.pattern().fixed_mask(),
+                1,
+                &mut s.dilute_v,
+            );
             let ctx = Context {
                 grid,
                 bcs: &spec.walls,
@@ -937,6 +959,7 @@ impl TwoFluid {
                 viscosity: &s.mu,
                 solids_pressure: Some(&s.p_s),
                 explicit_source: Some(&s.tau_u),
+                skip: Some(&s.dilute_u),
             };
             assemble_u(
                 &ctx,
@@ -951,6 +974,7 @@ impl TwoFluid {
                 &ctx,
                 &PhaseFields {
                     explicit_source: Some(&s.tau_v),
+                    skip: Some(&s.dilute_v),
                     ..fields
                 },
                 &s.u,
@@ -1011,19 +1035,11 @@ impl TwoFluid {
                         };
                         // a face whose interpolated εs ≤ DIL_EP_S carries no solids momentum
                         // (MFIX `source_u_s.f`, model-spec §2.7): its velocity is set below
-                        let eps_face = match (c0, c1) {
-                            (Some(a), Some(b)) => {
-                                let w = if dir == 0 {
-                                    grid.x.interpolation_weight(i - 1)
-                                } else {
-                                    grid.y.interpolation_weight(j - 1)
-                                };
-                                w * s.eps[a] + (1.0 - w) * s.eps[b]
-                            }
-                            (Some(c), None) | (None, Some(c)) => s.eps[c],
-                            (None, None) => 0.0,
+                        dilute[p] = if dir == 0 {
+                            s.dilute_u[k]
+                        } else {
+                            s.dilute_v[k]
                         };
-                        dilute[p] = eps_face <= DIL_EP_S;
                         a_in[p + 1] = if dilute[p] { 1.0 } else { a.a_p[k] };
                         r_in[p + 1] = if dilute[p] {
                             field[k]
@@ -1642,6 +1658,47 @@ fn wall_face_velocities(grid: &Grid, spec: &SolidsSpec, s: &mut SolidsFields) ->
         }
     }
     on_wall
+}
+
+/// Marks the dilute velocity nodes of a solids phase, component `dir` (0: u on x-faces,
+/// 1: v on y-faces): εs interpolated to the face (AVG_X / AVG_Y; the one cell's value on a
+/// boundary face) ≤ DIL_EP_S (model-spec §2.7, MFIX `source_u_s.f`). Fixed (wall) nodes are
+/// not dilute: their rows are fixed anyway.
+fn dilute_faces(grid: &Grid, eps: &[f64], fixed: &[bool], dir: usize, out: &mut [bool]) {
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let (mx, my) = if dir == 0 { (nx + 1, ny) } else { (nx, ny + 1) };
+    for j in 0..my {
+        for i in 0..mx {
+            let k = i + mx * j;
+            let (lo, hi, w) = if dir == 0 {
+                (
+                    i.checked_sub(1).map(|c| c + nx * j),
+                    (i < nx).then(|| i + nx * j),
+                    if i > 0 && i < nx {
+                        grid.x.interpolation_weight(i - 1)
+                    } else {
+                        0.5
+                    },
+                )
+            } else {
+                (
+                    j.checked_sub(1).map(|r| i + nx * r),
+                    (j < ny).then(|| i + nx * j),
+                    if j > 0 && j < ny {
+                        grid.y.interpolation_weight(j - 1)
+                    } else {
+                        0.5
+                    },
+                )
+            };
+            let eps_face = match (lo, hi) {
+                (Some(a), Some(b)) => w * eps[a] + (1.0 - w) * eps[b],
+                (Some(c), None) | (None, Some(c)) => eps[c],
+                (None, None) => 0.0,
+            };
+            out[k] = !fixed[k] && eps_face <= DIL_EP_S;
+        }
+    }
 }
 
 /// The row of a dilute solids velocity node k (model-spec §2.7, MFIX `source_u_s.f`): the

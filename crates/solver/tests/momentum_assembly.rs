@@ -67,6 +67,7 @@ fn two_layer_couette_is_exact() {
         viscosity: &viscosity,
         solids_pressure: None,
         explicit_source: None,
+        skip: None,
     };
     let pattern = Pattern::new(nx + 1, ny).unwrap();
     let mut a = Stencil5::new(pattern.clone());
