@@ -566,6 +566,8 @@ struct Run {
     case: String,
     level: Level,
     cells: (usize, usize),
+    /// speed resolution of gates.csv on this grid, if the case has gates [m/s]
+    speed_quantum: Option<f64>,
     data: LevelData,
     /// its summary, or why the run failed
     summary: Result<RunSummary, String>,
@@ -634,6 +636,13 @@ fn run_level(
     }
     let grid = resolved.grid()?;
     let cells = (grid.nx(), grid.ny());
+    // gates.csv takes a central difference of the front over four samples, and the front
+    // moves by whole cells: speeds come in steps of Δx/(4 × interval) at the gates
+    let speed_quantum = resolved.monitors.front.as_ref().and_then(|f| {
+        let x = f.gate_origin + f.gates.first()?;
+        let k = grid.x.locate(x)?;
+        Some(grid.x.widths()[k] / (4.0 * f.interval))
+    });
     let folder = root.join(RUNS_DIR).join(&case.name);
     let tag = format!("{level}-{}", scheme_name(scheme));
     let done = folder.join(&tag);
@@ -691,6 +700,7 @@ fn run_level(
         case: case.name.clone(),
         level,
         cells,
+        speed_quantum,
         data,
         summary,
         reused,
@@ -1054,9 +1064,13 @@ fn case_section(
         let gates: Vec<String> = f.gates.iter().map(f64::to_string).collect();
         let _ = writeln!(
             md,
-            "Gates at {} m from x = {} m.",
+            "Gates at {} m from x = {} m. The gate speeds of `gates.csv` are a central \
+             difference of the front position over four samples {} s apart, and the front moves \
+             by whole cells: a speed is resolved only to Δx/(4 × {} s), the column \"speed step\".",
             gates.join(", "),
-            f.gate_origin
+            f.gate_origin,
+            f.interval,
+            f.interval
         );
     }
     let _ = writeln!(
@@ -1067,12 +1081,22 @@ fn case_section(
     let headings: Vec<&str> = qs.iter().map(|q| q.heading()).collect();
     let _ = writeln!(
         md,
-        "| scheme | level | cells | h | wall time [s] | steps | status | {} |",
+        "| scheme | level | cells | h | wall time [s] | steps | status |{} {} |",
+        if case.monitors.front.is_some() {
+            " speed step [m/s] |"
+        } else {
+            ""
+        },
         headings.join(" | ")
     );
     let _ = writeln!(
         md,
-        "|---|---|---:|---:|---:|---:|---|{}",
+        "|---|---|---:|---:|---:|---:|---|{}{}",
+        if case.monitors.front.is_some() {
+            "---:|"
+        } else {
+            ""
+        },
         "---:|".repeat(qs.len())
     );
     let ladders: Vec<&Ladder> = ladders.iter().filter(|l| l.case == case.name).collect();
@@ -1115,12 +1139,14 @@ fn case_section(
                 .collect();
             let _ = writeln!(
                 md,
-                "| {} | {} | {} × {} | {:.2} | {wall} | {steps} | {status} | {} |",
+                "| {} | {} | {} × {} | {:.2} | {wall} | {steps} | {status} |{} {} |",
                 scheme_name(&ladder.scheme),
                 run.level,
                 run.cells.0,
                 run.cells.1,
                 run.data.h,
+                run.speed_quantum
+                    .map_or(String::new(), |q| format!(" {q:.2} |")),
                 errors.join(" | ")
             );
         }
@@ -1208,6 +1234,18 @@ fn order_line(ladder: &Ladder, q: Quantity, e: &QuantityErrors) -> String {
     line
 }
 
+/// The powers of ten around positive `values` (at least one decade apart), so a log axis
+/// always has labelled decades.
+fn decades(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    let (lo, hi) = values.fold((f64::INFINITY, 0.0_f64), |(lo, hi), v| {
+        (lo.min(v), hi.max(v))
+    });
+    // a margin of 1.5× keeps points off the frame
+    let lo = 10f64.powf((lo / 1.5).log10().floor());
+    let hi = 10f64.powf((hi * 1.5).log10().ceil()).max(10.0 * lo);
+    (lo, hi)
+}
+
 fn plot_error<E: std::fmt::Debug>(e: E) -> anyhow::Error {
     anyhow::anyhow!("plotting the error-time figure: {e:?}")
 }
@@ -1248,16 +1286,8 @@ fn draw(path: &Path, case: &str, quantity: Quantity, ladders: &[Ladder]) -> Resu
     if all.is_empty() {
         return Ok(false);
     }
-    let (t_lo, t_hi) = all
-        .iter()
-        .fold((f64::INFINITY, 0.0_f64), |(lo, hi), &(t, _)| {
-            (lo.min(t), hi.max(t))
-        });
-    let (e_lo, e_hi) = all
-        .iter()
-        .fold((f64::INFINITY, 0.0_f64), |(lo, hi), &(_, e)| {
-            (lo.min(e), hi.max(e))
-        });
+    let (t_lo, t_hi) = decades(all.iter().map(|&(t, _)| t));
+    let (e_lo, e_hi) = decades(all.iter().map(|&(_, e)| e));
     let area = SVGBackend::new(path, FIGURE_SIZE).into_drawing_area();
     area.fill(&WHITE).map_err(plot_error)?;
     let mut chart = ChartBuilder::on(&area)
@@ -1268,10 +1298,7 @@ fn draw(path: &Path, case: &str, quantity: Quantity, ladders: &[Ladder]) -> Resu
         .margin(15)
         .x_label_area_size(45)
         .y_label_area_size(70)
-        .build_cartesian_2d(
-            (t_lo / 2.0..t_hi * 2.0).log_scale(),
-            (e_lo / 2.0..e_hi * 2.0).log_scale(),
-        )
+        .build_cartesian_2d((t_lo..t_hi).log_scale(), (e_lo..e_hi).log_scale())
         .map_err(plot_error)?;
     chart
         .configure_mesh()
@@ -1462,6 +1489,9 @@ mod tests {
         assert_eq!(interpolate(&x, &y, 0.0), 0.0);
         assert_eq!(interpolate(&x, &y, 3.0), 1.5);
         assert_eq!(interpolate(&[1.0], &[4.0], 7.0), 4.0);
+        assert_eq!(decades([3.0, 40.0].into_iter()), (1.0, 100.0));
+        assert_eq!(decades([2.0].into_iter()), (1.0, 10.0));
+        assert_eq!(decades([8.8].into_iter()), (1.0, 100.0));
         let h = cell_heights(&[0.005, 0.015, 0.03, 0.06]);
         let expected = [0.01, 0.01, 0.02, 0.04];
         assert!(
