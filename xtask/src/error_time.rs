@@ -599,20 +599,20 @@ fn read_profile(dir: &Path, case: &Case) -> Option<Profile> {
     })
 }
 
-/// Front speeds per gate of a finished run with a front monitor.
+/// Front speeds per gate of a finished run with a front monitor; none if its front reached
+/// no gate (such a run is left out rather than emptying the common gates of the ladder).
 fn read_gates(dir: &Path, case: &Case) -> Option<Vec<(usize, f64)>> {
     case.monitors.front.as_ref()?;
     let pairs = Table::read(&dir.join("gates.csv"))
         .ok()?
         .pairs("gate", "speed")
         .ok()?;
-    Some(
-        pairs
-            .into_iter()
-            .filter(|(_, v)| v.is_finite())
-            .map(|(g, v)| (g as usize, v))
-            .collect(),
-    )
+    let speeds: Vec<(usize, f64)> = pairs
+        .into_iter()
+        .filter(|(_, v)| v.is_finite())
+        .map(|(g, v)| (g as usize, v))
+        .collect();
+    (!speeds.is_empty()).then_some(speeds)
 }
 
 /// Runs (or with `reuse` reads) one level of one case with one scheme.
