@@ -13,11 +13,15 @@
 //!   in docs/analytic/;
 //! - `report [results] [--fidelity F]`: the runs of the sweep beside the paper, in
 //!   docs/results.md with SVG figures in docs/results/.
+//! - `error-time`: issue 8's discretisation error of the station profiles and gate speeds
+//!   against wall time over a ladder of grids, for upwind and Superbee ([`error_time`]), in
+//!   docs/error-time.md;
 //! - `stability`: the stiff and extreme cases of cases/stability/ (issue 7), one at a time,
 //!   with the table of docs/stability.md; fails if a run writes NaN.
 
 mod analytic;
 mod collapse;
+mod error_time;
 mod metrics;
 mod mfix_slope;
 mod report;
@@ -75,6 +79,27 @@ enum Task {
         /// parallel runs (default 1: wall times stay comparable)
         #[arg(long, default_value_t = 1)]
         jobs: usize,
+    },
+    /// Discretisation error of the station profiles and gate speeds against wall time
+    /// (issue 8): each case on a ladder of grids, one run at a time, with each scheme; writes
+    /// docs/error-time.md, docs/error-time/error_time.csv and SVG figures.
+    ErrorTime {
+        /// comma-separated levels: tiny (pipeline check), smoke, coarse, paper, finer
+        #[arg(long, default_value = "smoke,coarse,paper,finer")]
+        levels: String,
+        /// comma-separated case names of the matrix
+        #[arg(long, default_value = error_time::DEFAULT_CASES)]
+        cases: String,
+        /// comma-separated convection schemes: upwind, superbee
+        #[arg(long, default_value = "upwind,superbee")]
+        schemes: String,
+        /// reuse finished runs of unchanged cases instead of rerunning them
+        #[arg(long)]
+        reuse: bool,
+        /// stop every run at this time [s] and compare the profiles there (default: the
+        /// case's end time and profile time)
+        #[arg(long)]
+        end_time: Option<f64>,
     },
     /// Verification: the single-phase core (issue 6: cavity, cavity-re1000, poiseuille,
     /// taylor-green, all), the granular column collapse (issue 7: collapse) and family M
@@ -178,6 +203,36 @@ fn main() -> Result<()> {
                 jobs,
             },
         ),
+        Task::ErrorTime {
+            levels,
+            cases,
+            schemes,
+            reuse,
+            end_time,
+        } => {
+            let list = |s: &str| -> Vec<String> {
+                s.split(',')
+                    .map(|v| v.trim().to_string())
+                    .filter(|v| !v.is_empty())
+                    .collect()
+            };
+            let opts = error_time::Options {
+                levels: list(&levels)
+                    .iter()
+                    .map(|l| l.parse())
+                    .collect::<Result<_, _>>()
+                    .map_err(anyhow::Error::msg)?,
+                cases: list(&cases),
+                schemes: list(&schemes)
+                    .iter()
+                    .map(|s| error_time::parse_scheme(s))
+                    .collect::<Result<_, _>>()
+                    .map_err(anyhow::Error::msg)?,
+                reuse,
+                end_time,
+            };
+            error_time::error_time(&root(), &opts)
+        }
         Task::Verify {
             name,
             report,

@@ -12,7 +12,7 @@
 //! before the paper's time, a monitor file the run does not have) is said in the figure's
 //! caption and in the tables; it is never an error.
 
-mod data;
+pub mod data;
 mod paper;
 mod plots;
 

@@ -257,6 +257,58 @@ impl Segment {
         }
     }
 
+    /// The same segment with cells `factor` times narrower (the inverse of
+    /// [`Segment::coarsened`], for grid-convergence studies): cell counts multiplied by
+    /// `factor`, widths divided by it and growth raised to the power 1/`factor`, so the fine
+    /// grid keeps the shape of the original. `refined(f).coarsened(f)` is the segment again
+    /// (up to the round-off of the width and growth arithmetic).
+    pub fn refined(&self, factor: u32) -> Segment {
+        let f = f64::from(factor.max(1));
+        let more = |cells: usize| cells * factor.max(1) as usize;
+        match *self {
+            Segment::Uniform { length, cells } => Segment::Uniform {
+                length,
+                cells: more(cells),
+            },
+            Segment::Geometric {
+                length,
+                cells,
+                growth,
+            } => Segment::Geometric {
+                length,
+                cells: more(cells),
+                growth: growth.powf(1.0 / f),
+            },
+            Segment::FirstWidth {
+                length,
+                cells,
+                first,
+            } => Segment::FirstWidth {
+                length,
+                cells: more(cells),
+                first: first / f,
+            },
+            Segment::LastWidth {
+                length,
+                cells,
+                last,
+            } => Segment::LastWidth {
+                length,
+                cells: more(cells),
+                last: last / f,
+            },
+            Segment::EndWidths {
+                length,
+                first,
+                last,
+            } => Segment::EndWidths {
+                length,
+                first: first / f,
+                last: last / f,
+            },
+        }
+    }
+
     /// The cell widths of this segment, lowest coordinate first.
     pub fn widths(&self) -> Result<Vec<f64>, MeshError> {
         self.validate("segment")?;
@@ -560,5 +612,114 @@ impl Axis {
             .windows(2)
             .map(|p| (p[1] / p[0]).max(p[0] / p[1]))
             .fold(1.0, f64::max)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn axis(s: &Segment) -> Axis {
+        Axis::from_segments(0.0, std::slice::from_ref(s)).unwrap()
+    }
+
+    /// Largest distance of the refined axis's every `f`-th face from the original faces,
+    /// relative to the original cell width there.
+    fn nesting_deviation(s: &Segment, f: u32) -> f64 {
+        let (a, b) = (axis(s), axis(&s.refined(f)));
+        (0..a.len())
+            .map(|k| (b.faces()[k * f as usize] - a.faces()[k]).abs() / a.widths()[k])
+            .fold(0.0, f64::max)
+    }
+
+    #[test]
+    fn refined_segments_have_f_times_the_cells_and_the_same_shape() {
+        let segments = [
+            Segment::Uniform {
+                length: 0.3,
+                cells: 60,
+            },
+            Segment::Geometric {
+                length: 1.5,
+                cells: 30,
+                growth: 1.13,
+            },
+            Segment::FirstWidth {
+                length: 1.5,
+                cells: 30,
+                first: 0.005,
+            },
+            Segment::LastWidth {
+                length: 1.5,
+                cells: 25,
+                last: 0.05,
+            },
+            Segment::EndWidths {
+                length: 1.5,
+                first: 0.01,
+                last: 0.05,
+            },
+        ];
+        for s in &segments {
+            for f in [2u32, 3] {
+                let (a, r) = (axis(s), s.refined(f));
+                let b = axis(&r);
+                assert!(
+                    (b.length() - a.length()).abs() < 1e-12,
+                    "{s:?}: length kept"
+                );
+                // EndWidths solves its count from the widths: within one cell of f × n
+                let expected = f as usize * a.len();
+                assert!(
+                    b.len().abs_diff(expected) <= 1,
+                    "{s:?} × {f}: {} cells",
+                    b.len()
+                );
+                // a stated end width is exact: 1/f of the original's (a geometric segment's
+                // first width follows from its growth: it nests instead, checked below)
+                if !matches!(s, Segment::Geometric { .. }) {
+                    let (fine_a, fine_b) = (a.width_range().0, b.width_range().0);
+                    assert!(
+                        (fine_b * f64::from(f) - fine_a).abs() < 1e-12 * fine_a,
+                        "{s:?} × {f}"
+                    );
+                }
+                // adjacent ratios are the f-th root of the original's
+                let (ga, gb) = (a.max_adjacent_ratio(), b.max_adjacent_ratio());
+                assert!(
+                    (gb.powi(f as i32) / ga - 1.0).abs() < 0.02,
+                    "{s:?} × {f}: growth {gb} against {ga}^(1/{f})"
+                );
+                // coarsening undoes the refinement
+                match (s, r.coarsened(f)) {
+                    (
+                        Segment::Geometric { growth: g0, .. },
+                        Segment::Geometric {
+                            growth: g1, cells, ..
+                        },
+                    ) => {
+                        assert_eq!(cells, a.len());
+                        assert!((g1 - g0).abs() < 1e-12);
+                    }
+                    (s, back) => assert_eq!(&back, s),
+                }
+            }
+        }
+        // uniform and geometric refinements nest exactly: every f-th face is an original one
+        for s in &segments[..2] {
+            assert!(nesting_deviation(s, 2) < 1e-12, "{s:?}");
+            assert!(nesting_deviation(s, 3) < 1e-12, "{s:?}");
+        }
+        // solved growths keep the shape within a fraction of a cell
+        for s in &segments[2..] {
+            assert!(
+                nesting_deviation(s, 2) < 0.2,
+                "{s:?}: {}",
+                nesting_deviation(s, 2)
+            );
+        }
+        // factor 1 (and 0, read as 1) changes nothing
+        assert_eq!(segments[2].refined(1), segments[2]);
+        assert_eq!(segments[2].refined(0), segments[2]);
     }
 }

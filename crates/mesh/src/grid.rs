@@ -106,6 +106,14 @@ impl AxisSpec {
         }
     }
 
+    /// The same axis with cells `factor` times narrower (see [`Segment::refined`]).
+    pub fn refined(&self, factor: u32) -> AxisSpec {
+        AxisSpec {
+            origin: self.origin,
+            segments: self.segments.iter().map(|s| s.refined(factor)).collect(),
+        }
+    }
+
     /// End coordinate: origin plus the segment lengths [m].
     pub fn end(&self) -> f64 {
         self.origin + self.segments.iter().map(Segment::length).sum::<f64>()
