@@ -45,7 +45,7 @@ pub struct CorrectionInputs<'a> {
 
 /// Net solids mass imbalance of every cell with the given velocities, ρs [(εs − εs⁰) V/Δt +
 /// Σ εs,face u·n A] [kg s⁻¹ per m depth], into `out`; the face values follow `x.scheme`
-/// ([`face_value`]; on the domain boundary the inside cell's).
+/// ([`face_value`]; on an outlet face the inside cell's for outflow and zero for inflow).
 pub fn mass_imbalance(grid: &Grid, x: &CorrectionInputs<'_>, out: &mut [f64]) {
     let (nx, ny) = (grid.nx(), grid.ny());
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
