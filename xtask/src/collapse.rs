@@ -273,18 +273,7 @@ pub fn front_metrics(rows: &[BulkRow], column: &Column, x_end: f64) -> FrontMetr
 
 /// The values of DataArray `name` in a `.vtr` written by runout-output.
 fn vtr_array(xml: &str, name: &str) -> Result<Vec<f64>> {
-    let start = xml
-        .find(&format!("Name=\"{name}\""))
-        .with_context(|| format!("no array `{name}`"))?;
-    let open = start + xml[start..].find('>').context("malformed DataArray")? + 1;
-    let close = open
-        + xml[open..]
-            .find("</DataArray>")
-            .context("unclosed DataArray")?;
-    xml[open..close]
-        .split_whitespace()
-        .map(|t| t.parse::<f64>().map_err(anyhow::Error::from))
-        .collect()
+    runout_output::read_vtr_array(xml, name).with_context(|| format!("no readable array `{name}`"))
 }
 
 /// The last field file of a run: εs and θ per cell.

@@ -18,7 +18,7 @@ use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
 use runout_case::{load, Fidelity, Loaded, SourcedCase};
-use runout_output::RunSummary;
+use runout_output::{read_vtr_array, RunSummary};
 use runout_solver::run_case;
 
 /// MFIX's results (cases.md "Family M"): (t, front x, ū_s).
@@ -154,18 +154,6 @@ pub fn at_time(rows: &[(f64, f64, f64)], t: f64) -> Option<(f64, f64)> {
     Some((a.1 + w * (b.1 - a.1), a.2 + w * (b.2 - a.2)))
 }
 
-/// Values of a named cell array of an ASCII `.vtr` file.
-pub fn vtr_array(text: &str, name: &str) -> Option<Vec<f64>> {
-    let tag = format!("Name=\"{name}\"");
-    let start = text.find(&tag)?;
-    let open = start + text[start..].find('>')? + 1;
-    let close = open + text[open..].find("</DataArray>")?;
-    text[open..close]
-        .split_whitespace()
-        .map(|v| v.parse().ok())
-        .collect()
-}
-
 /// The `.vtr` of a run's `fields.pvd` closest to time t, with its time.
 fn fields_near(dir: &Path, t: f64) -> Result<(f64, String)> {
     let pvd = std::fs::read_to_string(dir.join("fields.pvd"))
@@ -198,9 +186,9 @@ fn fields_near(dir: &Path, t: f64) -> Result<(f64, String)> {
 /// mean θ, largest u_s) over the floor cells with εs > [`FLOW_EPS`].
 fn floor_row(dir: &Path, t: f64) -> Result<(f64, f64, f64, f64)> {
     let (time, text) = fields_near(dir, t)?;
-    let eps = vtr_array(&text, "eps_s").context("eps_s missing")?;
-    let u = vtr_array(&text, "u_s").context("u_s missing")?;
-    let theta = vtr_array(&text, "theta").context("theta missing")?;
+    let eps = read_vtr_array(&text, "eps_s").context("eps_s missing")?;
+    let u = read_vtr_array(&text, "u_s").context("u_s missing")?;
+    let theta = read_vtr_array(&text, "theta").context("theta missing")?;
     let extent = text
         .split("WholeExtent=\"")
         .nth(1)
@@ -397,13 +385,5 @@ mod tests {
         let (f, u) = at_time(&rows, 0.3).unwrap();
         assert!((f - 0.9).abs() < 1e-12 && (u - 1.5).abs() < 1e-12);
         assert!(at_time(&rows, 0.5).is_none());
-    }
-
-    #[test]
-    fn reads_a_named_vtr_array() {
-        let text = "<DataArray type=\"Float64\" Name=\"eps_s\" format=\"ascii\">1 2.5 3e-1</DataArray>\n<DataArray Name=\"u_s\">4</DataArray>";
-        assert_eq!(vtr_array(text, "eps_s").unwrap(), vec![1.0, 2.5, 0.3]);
-        assert_eq!(vtr_array(text, "u_s").unwrap(), vec![4.0]);
-        assert!(vtr_array(text, "theta").is_none());
     }
 }

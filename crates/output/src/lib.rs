@@ -19,7 +19,7 @@ mod vtk;
 
 pub use csv_series::CsvSeries;
 pub use summary::{DtStats, RunStatus, RunSummary};
-pub use vtk::{write_vtr, CellField, PvdSeries};
+pub use vtk::{read_vtr_array, write_vtr, CellField, PvdSeries};
 
 use std::io::Write;
 use std::path::{Path, PathBuf};

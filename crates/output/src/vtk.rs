@@ -188,3 +188,30 @@ impl PvdSeries {
         write_atomic(&self.path, s.as_bytes())
     }
 }
+
+/// The values of the ASCII DataArray `name` in a `.vtr` file written by [`write_vtr`] (its
+/// components interleaved for a vector), or `None` if there is no such array or a value is
+/// not a number.
+pub fn read_vtr_array(xml: &str, name: &str) -> Option<Vec<f64>> {
+    let start = xml.find(&format!("Name=\"{name}\""))?;
+    let open = start + xml[start..].find('>')? + 1;
+    let close = open + xml[open..].find("</DataArray>")?;
+    xml[open..close]
+        .split_whitespace()
+        .map(|t| t.parse().ok())
+        .collect()
+}
+
+#[cfg(test)]
+mod read_tests {
+    use super::read_vtr_array;
+
+    #[test]
+    fn reads_a_named_array() {
+        let text = "<DataArray type=\"Float64\" Name=\"eps_s\" format=\"ascii\">1 2.5 3e-1</DataArray>\n<DataArray Name=\"u_s\">4</DataArray>";
+        assert_eq!(read_vtr_array(text, "eps_s").unwrap(), vec![1.0, 2.5, 0.3]);
+        assert_eq!(read_vtr_array(text, "u_s").unwrap(), vec![4.0]);
+        assert!(read_vtr_array(text, "theta").is_none());
+        assert!(read_vtr_array("<DataArray Name=\"x\">1 a</DataArray>", "x").is_none());
+    }
+}

@@ -107,7 +107,7 @@ pub fn cv_width(widths: &[f64], i: usize) -> f64 {
 }
 
 /// Harmonic mean with MFIX's guard against a zero denominator (model-spec §4.1, AVG_X_H).
-fn harmonic(a: f64, b: f64, weight_a: f64) -> f64 {
+pub(crate) fn harmonic(a: f64, b: f64, weight_a: f64) -> f64 {
     a * b / (weight_a * a + (1.0 - weight_a) * b).max(1e-15)
 }
 

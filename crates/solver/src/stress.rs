@@ -19,12 +19,7 @@
 
 use runout_mesh::Grid;
 
-use crate::momentum::cv_width;
-
-/// Harmonic mean with MFIX's guard (model-spec §4.1).
-fn harmonic(a: f64, b: f64, weight_a: f64) -> f64 {
-    a * b / (weight_a * a + (1.0 - weight_a) * b).max(1e-15)
-}
+use crate::momentum::{cv_width, harmonic};
 
 /// μ at the corner (x-face i, y-face j) from the (up to four) cells around it.
 fn corner_viscosity(grid: &Grid, mu: &[f64], i: usize, j: usize) -> f64 {

@@ -1750,18 +1750,25 @@ fn dilute_row(
         south && !fixed[k - mx],
         north && !fixed[k + mx],
     );
+    // the node's own current value counts once as well: two dilute nodes that would only
+    // average each other otherwise form a singular pair (MFIX's plain mean has no self term)
+    mean_row(a, k, [west, east, south, north], Some(current));
+}
+
+/// Makes row k the plain mean of the neighbours flagged (west, east, south, north), plus
+/// the node's `own` value once if given; leaves the row as it is if no neighbour is flagged.
+fn mean_row(a: &mut Stencil5, k: usize, [west, east, south, north]: [bool; 4], own: Option<f64>) {
     let count = [west, east, south, north].iter().filter(|&&x| x).count();
     if count == 0 {
         return;
     }
-    // the node's own current value counts once as well: two dilute nodes that would only
-    // average each other otherwise form a singular pair (MFIX's plain mean has no self term)
-    a.a_w[k] = if west { 1.0 } else { 0.0 };
-    a.a_e[k] = if east { 1.0 } else { 0.0 };
-    a.a_s[k] = if south { 1.0 } else { 0.0 };
-    a.a_n[k] = if north { 1.0 } else { 0.0 };
-    a.a_p[k] = count as f64 + 1.0;
-    a.b[k] = current;
+    let one = |flag: bool| if flag { 1.0 } else { 0.0 };
+    a.a_w[k] = one(west);
+    a.a_e[k] = one(east);
+    a.a_s[k] = one(south);
+    a.a_n[k] = one(north);
+    a.a_p[k] = count as f64 + one(own.is_some());
+    a.b[k] = own.unwrap_or(0.0);
 }
 
 /// The θ row of a dilute cell k (εs ≤ DIL_EP_S): the plain mean of its neighbour cells with
@@ -1775,16 +1782,7 @@ fn dilute_cell_row(a: &mut Stencil5, k: usize, current: f64, eps: &[f64], nx: us
     let east = i + 1 < nx && dense(k + 1);
     let south = j > 0 && dense(k - nx);
     let north = k + nx < n && dense(k + nx);
-    let count = [west, east, south, north].iter().filter(|&&x| x).count();
-    if count == 0 {
-        return;
-    }
-    a.a_w[k] = if west { 1.0 } else { 0.0 };
-    a.a_e[k] = if east { 1.0 } else { 0.0 };
-    a.a_s[k] = if south { 1.0 } else { 0.0 };
-    a.a_n[k] = if north { 1.0 } else { 0.0 };
-    a.a_p[k] = count as f64;
-    a.b[k] = 0.0;
+    mean_row(a, k, [west, east, south, north], None);
 }
 
 /// Whether cells `a` < `b`, `stride` apart, lie on one grid line (x lines: stride 1 within

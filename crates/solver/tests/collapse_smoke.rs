@@ -12,15 +12,7 @@ use runout_output::{RunStatus, RunSummary};
 
 /// The values of the DataArray `name` in a .vtr file written by runout-output.
 fn vtr_array(xml: &str, name: &str) -> Vec<f64> {
-    let start = xml
-        .find(&format!("Name=\"{name}\""))
-        .expect("array present");
-    let open = start + xml[start..].find('>').unwrap() + 1;
-    let close = open + xml[open..].find("</DataArray>").unwrap();
-    xml[open..close]
-        .split_whitespace()
-        .map(|t| t.parse().unwrap())
-        .collect()
+    runout_output::read_vtr_array(xml, name).expect("array present")
 }
 
 /// (t, solids mass, front x, εs-weighted mean u_s) rows of bulk.csv.
