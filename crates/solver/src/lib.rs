@@ -17,6 +17,7 @@
 #![allow(clippy::needless_range_loop)]
 
 pub mod chute1d;
+pub mod chute_check;
 pub mod energy;
 pub mod kinematics;
 pub mod momentum;

@@ -91,6 +91,10 @@ pub struct Context<'a> {
     pub gas_pressure: &'a [f64],
     /// per-node wall closures overriding `bcs` on the sides they cover
     pub wall_faces: Option<&'a WallFaces>,
+    /// a periodic column of one cell (nx = 1, [`crate::two_fluid::TwoFluidSettings`]): the
+    /// u-node 0 spans the whole cell, both its neighbours are itself (every x term cancels),
+    /// and node nx is fixed (the caller copies node 0 into it)
+    pub periodic_x: bool,
 }
 
 /// Width of the u control volume at x-face i: centre to centre inside, half a cell at the
@@ -219,6 +223,31 @@ pub fn assemble_u(
         };
         re * vel * dy[j]
     };
+    // the cells west and east of u-node i: one at an end, unless the column is periodic,
+    // where node 0 lies between cell nx − 1 (= 0) and cell 0
+    let cells_beside = |i: usize| -> (Option<usize>, Option<usize>) {
+        if ctx.periodic_x && i == 0 {
+            (Some(nx - 1), Some(0))
+        } else {
+            (i.checked_sub(1), (i < nx).then_some(i))
+        }
+    };
+    // distance weight of cell w at the face between cells w and e (½ across the wrap)
+    let x_weight = |w: usize, e: usize| {
+        if w < e {
+            grid.x.interpolation_weight(w)
+        } else {
+            0.5
+        }
+    };
+    // width of the u control volume: the whole cell for a periodic column's node 0
+    let width = |i: usize| -> f64 {
+        if ctx.periodic_x && i == 0 {
+            0.5 * (dx[nx - 1] + dx[0])
+        } else {
+            cv_width(dx, i)
+        }
+    };
     // scalar-cell y-face mass flux at v-node (i, j), 1 ≤ j < ny
     let y_face_flux = |i: usize, j: usize| -> f64 {
         let vel = v[i + nx * j];
@@ -237,7 +266,9 @@ pub fn assemble_u(
         for i in 1..=nx {
             // u-CV x-face at cell centre i−1, between u-nodes i−1 and i
             let k = faces.xf(i, j);
-            if both_skipped(phase.skip, i - 1 + mx * j, i + mx * j) {
+            // periodic column: the face couples node 0 to its own copy, and its flux and
+            // diffusion cancel those of the wrapped face on the other side
+            if ctx.periodic_x || both_skipped(phase.skip, i - 1 + mx * j, i + mx * j) {
                 (faces.flux_x[k], faces.cond_x[k]) = (0.0, 0.0);
                 continue;
             }
@@ -253,7 +284,7 @@ pub fn assemble_u(
                 (faces.flux_y[k], faces.cond_y[k]) = (0.0, 0.0);
                 continue;
             }
-            let (west, east) = (i.checked_sub(1), (i < nx).then_some(i));
+            let (west, east) = cells_beside(i);
             let flux: f64 = [west, east]
                 .into_iter()
                 .flatten()
@@ -268,15 +299,13 @@ pub fn assemble_u(
                 )
             };
             let mu_corner = match (west, east) {
-                (Some(w), Some(e)) => {
-                    harmonic(column(w), column(e), grid.x.interpolation_weight(w))
-                }
+                (Some(w), Some(e)) => harmonic(column(w), column(e), x_weight(w, e)),
                 (Some(c), None) | (None, Some(c)) => column(c),
                 (None, None) => 0.0,
             };
             let k = faces.yf(i, j);
             faces.flux_y[k] = flux;
-            faces.cond_y[k] = mu_corner * cv_width(dx, i) / dyc[j];
+            faces.cond_y[k] = mu_corner * width(i) / dyc[j];
         }
     }
     assemble_masked(faces, u, ctx.scheme, phase.skip, a);
@@ -302,20 +331,18 @@ pub fn assemble_u(
             if phase.skip.is_some_and(|s| s[k]) {
                 continue;
             }
-            let width = cv_width(dx, i);
+            let width = width(i);
             // cells on either side (the inside cell only at an outlet end)
-            let (west, east) = (i.checked_sub(1), (i < nx).then_some(i));
+            let (west, east) = cells_beside(i);
             let half_volume = |c: Option<usize>, field: &[f64]| {
                 c.map_or(0.0, |c| 0.5 * dx[c] * dy[j] * field[c + nx * j])
             };
             // walls below and above: the fluid cells' viscosity (model-spec §3.1)
             let mu_wall = |row: usize| -> f64 {
                 match (west, east) {
-                    (Some(w), Some(e)) => harmonic(
-                        mu[w + nx * row],
-                        mu[e + nx * row],
-                        grid.x.interpolation_weight(w),
-                    ),
+                    (Some(w), Some(e)) => {
+                        harmonic(mu[w + nx * row], mu[e + nx * row], x_weight(w, e))
+                    }
                     (Some(c), None) | (None, Some(c)) => mu[c + nx * row],
                     (None, None) => 0.0,
                 }
@@ -339,6 +366,10 @@ pub fn assemble_u(
             a.b[k] += (half_volume(west, rho_eps) + half_volume(east, rho_eps)) * ctx.gravity.0;
             // gas pressure, −ε̄ ΔP A; solids pressure, −ΔP_s A
             let eps_face = match (west, east) {
+                (Some(w), Some(e)) if w >= e => {
+                    let f = phase.volume_fraction;
+                    0.5 * (f[w + nx * j] + f[e + nx * j])
+                }
                 (Some(_), Some(_)) => interp_x(grid, phase.volume_fraction, i, j),
                 (Some(c), None) | (None, Some(c)) => phase.volume_fraction[c + nx * j],
                 (None, None) => 0.0,

@@ -746,6 +746,7 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
         relax_pressure: r.pressure,
         relax_eps: r.eps_s,
         relax_theta: r.theta,
+        periodic_x: false,
     };
     let fluid = Fluid {
         density: gas.density,

@@ -375,6 +375,7 @@ impl SinglePhase {
             scheme: self.settings.scheme,
             gas_pressure: &self.p,
             wall_faces: None,
+            periodic_x: false,
         };
         let phase = PhaseFields {
             bulk_density: &self.density_cells,
@@ -428,6 +429,7 @@ impl SinglePhase {
             scheme: self.settings.scheme,
             gas_pressure: &self.p,
             wall_faces: None,
+            periodic_x: false,
         };
         let phase = PhaseFields {
             bulk_density: &self.density_cells,

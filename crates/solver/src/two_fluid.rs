@@ -92,6 +92,13 @@ pub struct TwoFluidSettings {
     pub relax_eps: f64,
     /// θ relaxation (`UR_FAC(8)`)
     pub relax_theta: f64,
+    /// A fully developed column: periodic in x with a single column of cells (nx = 1), as
+    /// MFIX's `CYCLIC_X` on one cell. Every ∂/∂x vanishes: the x-face fluxes of a cell cancel,
+    /// u has one unknown per row (node 0, with the whole cell as its control volume; node nx
+    /// is its copy) and no x pressure gradient. The west and east sides must be free-slip
+    /// walls (they then add nothing to v or θ). Used by the steady chute check (issue 7,
+    /// docs/chute1d.md).
+    pub periodic_x: bool,
 }
 
 impl Default for TwoFluidSettings {
@@ -102,6 +109,7 @@ impl Default for TwoFluidSettings {
             relax_pressure: 0.8,
             relax_eps: 0.5,
             relax_theta: 0.5,
+            periodic_x: false,
         }
     }
 }
@@ -214,6 +222,14 @@ pub struct SolidsFields {
     pub floor_h_u: Vec<f64>,
 }
 
+impl SolidsFields {
+    /// The gas–solids drag coefficient F_gs per cell of the last closure evaluation
+    /// [kg m⁻³ s⁻¹].
+    pub fn drag(&self) -> &[f64] {
+        &self.f_gs
+    }
+}
+
 /// Normalised residuals of one outer iteration (model-spec §4.11).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct TwoFluidResiduals {
@@ -305,6 +321,9 @@ pub enum TwoFluidError {
     /// More solids phases than [`MAX_SOLIDS_PHASES`].
     #[error("{0} solids phases: at most {MAX_SOLIDS_PHASES} are supported")]
     TooManyPhases(usize),
+    /// A periodic-x column with more than one cell across or with an outlet on its x sides.
+    #[error("periodic x needs one column of cells (nx = 1, got {0}) and walls on the west and east sides")]
+    PeriodicColumn(usize),
     /// A linear solve failed.
     #[error("{equation}: {source}")]
     Linear {
@@ -397,10 +416,15 @@ impl TwoFluid {
         let (nx, ny) = (grid.nx(), grid.ny());
         let n = nx * ny;
         let outlet = |b: &SideBc| !matches!(b, SideBc::Wall(_));
+        let periodic = settings.periodic_x;
+        if periodic && (nx != 1 || outlet(&gas_walls.west) || outlet(&gas_walls.east)) {
+            return Err(TwoFluidError::PeriodicColumn(nx));
+        }
         let mut pu = Pattern::new(nx + 1, ny).map_err(lin("u pattern"))?;
         let mut pv = Pattern::new(nx, ny + 1).map_err(lin("v pattern"))?;
         for j in 0..ny {
-            if !outlet(&gas_walls.west) {
+            // periodic column: node 0 is the row's unknown, node nx its copy
+            if !outlet(&gas_walls.west) && !periodic {
                 pu.fix(0, j).map_err(lin("u pattern"))?;
             }
             if !outlet(&gas_walls.east) {
@@ -901,6 +925,7 @@ impl TwoFluid {
             scheme,
             gas_pressure: &self.p_g,
             wall_faces: None,
+            periodic_x: self.settings.periodic_x,
         };
         let gas_fields = PhaseFields {
             bulk_density: &self.rho_eps_g,
@@ -956,6 +981,7 @@ impl TwoFluid {
                 scheme,
                 gas_pressure: &self.p_g,
                 wall_faces: Some(&s.wall_velocity),
+                periodic_x: self.settings.periodic_x,
             };
             let fields = PhaseFields {
                 bulk_density: &s.rho_eps,
@@ -990,6 +1016,7 @@ impl TwoFluid {
             );
         }
         let relax = self.settings.relax_velocity;
+        let periodic = self.settings.periodic_x;
         let m = self.solids.len();
         let mut residual = 0.0;
         // u: nodes at x-faces; drag averaged to the face by volume (VF_GS_X)
@@ -1005,7 +1032,13 @@ impl TwoFluid {
                     }
                     // the cells beside the node and their half volumes
                     let (c0, c1, h0, h1) = if dir == 0 {
-                        let w = i.checked_sub(1).map(|c| (c + nx * j, 0.5 * dx[c] * dy[j]));
+                        // a periodic column's node 0 lies between cell nx − 1 and cell 0
+                        let west = if periodic && i == 0 {
+                            Some(nx - 1)
+                        } else {
+                            i.checked_sub(1)
+                        };
+                        let w = west.map(|c| (c + nx * j, 0.5 * dx[c] * dy[j]));
                         let e = (i < nx).then(|| (i + nx * j, 0.5 * dx[i] * dy[j]));
                         (
                             w.map(|x| x.0),
@@ -1138,6 +1171,11 @@ impl TwoFluid {
                     gas_a.b[k] += (r_out[0] - r_in[0]) + (1.0 - relax) * gas_ap * gas_phi[k];
                     gas_a.a_p[k] = gas_ap;
                     d[k] = area * numerator / denominator;
+                    if periodic && dir == 0 {
+                        // a periodic column has no x gradient of P'_g or of K_cp ε'
+                        d[k] = 0.0;
+                        self.solids.iter_mut().for_each(|s| s.e_u[k] = 0.0);
+                    }
                 }
             }
             residual += if den > 0.0 { num / den } else { num };
@@ -1183,6 +1221,14 @@ impl TwoFluid {
                 .setup_and_solve(&s.a_v, &mut s.v)
                 .map_err(lin("solids v momentum"))?;
         }
+        if periodic {
+            // node nx of a periodic column is node 0 (fixed in the solves)
+            let mx = nx + 1;
+            for u in std::iter::once(&mut self.u_g).chain(self.solids.iter_mut().map(|s| &mut s.u))
+            {
+                (0..ny).for_each(|j| u[nx + mx * j] = u[mx * j]);
+            }
+        }
         // solves are reported apart from the assembly that encloses them
         let solve = since(t);
         self.profile.momentum_solve += solve;
@@ -1206,6 +1252,7 @@ impl TwoFluid {
                 k_cp: &s.k_cp,
                 dt,
                 scheme: self.settings.scheme,
+                periodic_x: self.settings.periodic_x,
             };
             assemble_correction(&self.grid, &inputs, &mut s.imbalance, &mut s.a_eps);
             total += s.imbalance.iter().map(|x| x.abs()).sum::<f64>() / n;

@@ -41,6 +41,9 @@ pub struct CorrectionInputs<'a> {
     pub dt: f64,
     /// scheme of the face volume fractions in the mass imbalance (MFIX `DISCRETIZE(2)`)
     pub scheme: Scheme,
+    /// a periodic column of one cell (nx = 1): the fluxes through its west and east faces
+    /// are the same flux and cancel, so both are left out
+    pub periodic_x: bool,
 }
 
 /// Net solids mass imbalance of every cell with the given velocities, ρs [(εs − εs⁰) V/Δt +
@@ -59,7 +62,7 @@ pub fn mass_imbalance(grid: &Grid, x: &CorrectionInputs<'_>, out: &mut [f64]) {
         let row = nx * j;
         for i in 0..=nx {
             let vel = x.u[i + (nx + 1) * j];
-            if vel == 0.0 {
+            if vel == 0.0 || (x.periodic_x && (i == 0 || i == nx)) {
                 continue;
             }
             let eps_face = if i == 0 || i == nx {
@@ -195,6 +198,9 @@ pub fn assemble_correction(
                 .enumerate()
             {
                 let flux = sign * vel * area;
+                if x.periodic_x && slot < 2 {
+                    continue;
+                }
                 let Some(n) = nb else {
                     // domain boundary: a wall (no flux, no correction) or an outlet face
                     // whose outflow carries ε'_P

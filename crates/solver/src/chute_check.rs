@@ -1,0 +1,320 @@
+//! Issue 7's inclined-plane check: steady, fully developed flow down a slope with a
+//! Johnson–Jackson floor, computed by the 2-D two-fluid solver on a periodic column
+//! ([`TwoFluidSettings::periodic_x`]) marched in time to a steady state, against the 1-D
+//! steady boundary-value solve of the same equations and closures ([`crate::chute1d`]),
+//! on the same y grid. Shared by `crates/solver/tests/chute_column.rs` (fast) and
+//! `cargo xtask verify chute` (docs/chute.md).
+//!
+//! The reference is dry (ρ_g = 0, docs/chute1d.md §1) and the two-fluid solver always carries
+//! a gas, so the column's gas is made negligible rather than absent: ρ_g and μ_g are tiny
+//! (defaults 1e-3 kg m⁻³ and 1e-8 Pa s). The check measures what that leaves: the largest
+//! drag force on the solids relative to their weight along the slope, and the buoyancy
+//! ρ_g/ρ_s, both reported in [`ChuteCheck`].
+//!
+//! The setup is the confined strip of docs/chute1d.md §3: H = 8.7 mm, holdup 5 mm (mean
+//! εs 0.575), 25°, the paper's material (d = 0.5 mm, ρs = 2000 kg m⁻³, e = 0.9, Princeton
+//! friction φ = 35°, εs,max = 0.65, εs,min = 0.5), JJ floor φ' = 0.1, e_w = 0.7, δ_w = 11°,
+//! free-slip lid with zero θ flux.
+
+use std::time::Instant;
+
+use runout_closures::{ClosureParams, Gas};
+use runout_mesh::{Axis, Grid, Sides};
+use runout_walls::{RobinFace, SolidsWallModel};
+
+use crate::chute1d::{self, ChuteParams, ChuteProfile, SolverSettings, WallTreatment};
+use crate::single_phase::{Fluid, SideBc};
+use crate::transport::Scheme;
+use crate::two_fluid::{SolidsSpec, TwoFluid, TwoFluidSettings};
+
+/// What to run.
+#[derive(Clone, Debug)]
+pub struct ChuteCheckSetup {
+    /// cells across the layer (uniform)
+    pub cells: usize,
+    /// layer height H between floor and lid \[m\]
+    pub height: f64,
+    /// holdup ∫ εs dy \[m\]
+    pub holdup: f64,
+    /// slope α \[deg\]
+    pub slope_deg: f64,
+    /// floor condition
+    pub floor: SolidsWallModel,
+    /// ρ_g of the negligible gas [kg m⁻³]
+    pub gas_density: f64,
+    /// μ_g of the negligible gas [Pa s]
+    pub gas_viscosity: f64,
+    /// simulated time allowed to reach the steady state \[s\]
+    pub end_time: f64,
+    /// steady when the largest relative rate of change of εs, u_s and θ (each relative to
+    /// its largest magnitude) is below this [s⁻¹]
+    pub steady_rate: f64,
+    /// largest time step \[s\]
+    pub dt_max: f64,
+    /// print progress to stderr
+    pub verbose: bool,
+}
+
+impl Default for ChuteCheckSetup {
+    /// The reference case of docs/chute1d.md §3 on 80 cells.
+    fn default() -> Self {
+        Self {
+            cells: 80,
+            height: 0.0087,
+            holdup: 0.005,
+            slope_deg: 25.0,
+            floor: SolidsWallModel::johnson_jackson(0.1, 0.7, 11.0, 0.0)
+                .expect("valid JJ parameters"),
+            gas_density: 1e-3,
+            gas_viscosity: 1e-8,
+            end_time: 4.0,
+            steady_rate: 1e-4,
+            dt_max: 5e-3,
+            verbose: false,
+        }
+    }
+}
+
+/// The comparison.
+#[derive(Clone, Debug)]
+pub struct ChuteCheck {
+    /// the 1-D steady solution
+    pub reference: ChuteProfile,
+    /// cell-centre heights \[m\]
+    pub y: Vec<f64>,
+    /// εs, u_s, θ of the 2-D column at the end
+    pub eps_s: Vec<f64>,
+    /// u_s at the cell centres' height (the row's u-node) [m/s]
+    pub u_s: Vec<f64>,
+    /// θ [m²/s²]
+    pub theta: Vec<f64>,
+    /// max |εs − εs,ref| / max εs,ref
+    pub eps_error: f64,
+    /// max |u_s − u_s,ref| / max u_s,ref
+    pub velocity_error: f64,
+    /// max |θ − θ_ref| / max θ_ref
+    pub theta_error: f64,
+    /// max |θ − θ_ref| / θ_ref, pointwise (θ spans three decades)
+    pub theta_pointwise_error: f64,
+    /// simulated time reached \[s\]
+    pub time: f64,
+    /// accepted steps
+    pub steps: usize,
+    /// steps retried with half the time step
+    pub rejected: usize,
+    /// the largest relative rate of change at the end [s⁻¹]
+    pub final_rate: f64,
+    /// whether `final_rate` fell below the setup's `steady_rate`
+    pub steady: bool,
+    /// relative change of the solids mass over the run
+    pub mass_change: f64,
+    /// largest |F_gs (u_g − u_s)| relative to εs ρs g sin α over the cells
+    pub drag_to_weight: f64,
+    /// ρ_g/ρ_s: the buoyancy left by the negligible gas
+    pub buoyancy: f64,
+    /// wall time of the 2-D run \[s\]
+    pub wall_time: f64,
+}
+
+/// Why the check could not run.
+#[derive(Debug, thiserror::Error)]
+pub enum ChuteCheckError {
+    /// the 1-D reference failed
+    #[error("1-D reference: {0}")]
+    Reference(#[from] chute1d::Chute1dError),
+    /// the 2-D solver could not be set up or failed
+    #[error("2-D column: {0}")]
+    Column(String),
+}
+
+fn max_abs(values: &[f64]) -> f64 {
+    values.iter().fold(0.0, |m: f64, v| m.max(v.abs()))
+}
+
+fn relative_error(values: &[f64], reference: &[f64]) -> f64 {
+    values
+        .iter()
+        .zip(reference)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max)
+        / max_abs(reference)
+}
+
+/// Runs the 1-D reference and the 2-D column and compares them.
+pub fn run(setup: &ChuteCheckSetup) -> Result<ChuteCheck, ChuteCheckError> {
+    let axis = Axis::uniform(0.0, setup.height, setup.cells)
+        .map_err(|e| ChuteCheckError::Column(e.to_string()))?;
+    let dry = ClosureParams {
+        gas: Gas {
+            density: 0.0,
+            ..Gas::default()
+        },
+        ..ClosureParams::default()
+    };
+    let g = 9.81;
+    let reference = chute1d::solve(
+        &ChuteParams {
+            closures: dry,
+            slope_deg: setup.slope_deg,
+            gravity: g,
+            holdup: setup.holdup,
+            floor: setup.floor,
+            grid: axis.clone(),
+            wall_treatment: WallTreatment::FluidCell,
+        },
+        &SolverSettings::default(),
+    )?;
+
+    // the 2-D column: one cell across (its width drops out), the same y grid
+    let grid = Grid::new(
+        Axis::uniform(0.0, setup.height, 1).map_err(|e| ChuteCheckError::Column(e.to_string()))?,
+        axis,
+    );
+    let ny = setup.cells;
+    let params = ClosureParams {
+        gas: Gas {
+            density: setup.gas_density,
+            viscosity: setup.gas_viscosity,
+        },
+        ..dry
+    };
+    let rho_s = params.particles.density;
+    let free_slip = SideBc::Wall(RobinFace::ZERO_GRADIENT);
+    let zero_flux = Some(RobinFace::ZERO_GRADIENT);
+    let spec = SolidsSpec {
+        eps_max: params.friction.eps_s_max,
+        params,
+        // x sides: free slip (periodic column); floor: the wall model; lid: MFIX's FSW
+        walls: Sides {
+            west: free_slip,
+            east: free_slip,
+            south: free_slip,
+            north: free_slip,
+        },
+        theta_walls: Sides {
+            west: zero_flux,
+            east: zero_flux,
+            south: zero_flux,
+            north: zero_flux,
+        },
+        wall_models: Sides {
+            west: None,
+            east: None,
+            south: Some(setup.floor),
+            north: None,
+        },
+    };
+    let gas_walls = Sides {
+        west: free_slip,
+        east: free_slip,
+        south: SideBc::Wall(RobinFace::dirichlet(0.0)),
+        north: free_slip,
+    };
+    let alpha = setup.slope_deg.to_radians();
+    let gravity = (g * alpha.sin(), -g * alpha.cos());
+    let settings = TwoFluidSettings {
+        scheme: Scheme::Upwind,
+        periodic_x: true,
+        ..TwoFluidSettings::default()
+    };
+    let gas = Fluid {
+        density: setup.gas_density,
+        viscosity: setup.gas_viscosity,
+    };
+    let mut tf = TwoFluid::new(grid, gas, gas_walls, vec![spec], gravity, settings)
+        .map_err(|e| ChuteCheckError::Column(e.to_string()))?;
+    // start: uniform εs = holdup/H, gas and solids sliding at 0.3 m/s, θ = 1e-3 m²/s²
+    let eps0 = setup.holdup / setup.height;
+    {
+        let s = &mut tf.solids[0];
+        s.eps.iter_mut().for_each(|e| *e = eps0);
+        s.theta.iter_mut().for_each(|t| *t = 1e-3);
+        s.u.iter_mut().for_each(|u| *u = 0.3);
+    }
+    tf.u_g.iter_mut().for_each(|u| *u = 0.3);
+    tf.sync_volume_fractions();
+    let mass0 = tf.solids_mass(0);
+
+    let start = Instant::now();
+    let (mut time, mut dt) = (0.0, 1e-4);
+    let (mut steps, mut rejected) = (0, 0);
+    let mut rate = f64::INFINITY;
+    // u of row j sits at node 0 of the periodic column
+    let u_rows = |tf: &TwoFluid| -> Vec<f64> { (0..ny).map(|j| tf.solids[0].u[2 * j]).collect() };
+    while time < setup.end_time {
+        let before = (
+            tf.solids[0].eps.clone(),
+            u_rows(&tf),
+            tf.solids[0].theta.clone(),
+        );
+        let out = tf
+            .step(dt, 1e-3, 1e-4, 1e4, 50)
+            .map_err(|e| ChuteCheckError::Column(e.to_string()))?;
+        if !out.converged {
+            rejected += 1;
+            dt *= 0.5;
+            if dt < 1e-8 {
+                return Err(ChuteCheckError::Column(format!(
+                    "time step below 1e-8 s at t = {time:.4} s: {}",
+                    tf.residual_locations()
+                )));
+            }
+            continue;
+        }
+        time += dt;
+        steps += 1;
+        let change = |a: &[f64], b: &[f64]| relative_error(b, a) / dt;
+        rate = change(&before.0, &tf.solids[0].eps)
+            .max(change(&before.1, &u_rows(&tf)))
+            .max(change(&before.2, &tf.solids[0].theta));
+        if setup.verbose && steps % 200 == 0 {
+            eprintln!(
+                "t = {time:.3} s, dt = {dt:.2e}, {} its, rate {rate:.2e}/s, slip row 0 {:.4}",
+                out.iterations, tf.solids[0].u[0]
+            );
+        }
+        if rate < setup.steady_rate {
+            break;
+        }
+        if out.iterations <= 8 {
+            dt = (dt * 1.2).min(setup.dt_max);
+        }
+    }
+    let wall_time = start.elapsed().as_secs_f64();
+    let s = &tf.solids[0];
+    let u_s = u_rows(&tf);
+    let mut drag_to_weight: f64 = 0.0;
+    for j in 0..ny {
+        let weight = s.eps[j] * rho_s * g * alpha.sin();
+        if weight > 0.0 {
+            drag_to_weight =
+                drag_to_weight.max((s.drag()[j] * (tf.u_g[2 * j] - u_s[j])).abs() / weight);
+        }
+    }
+    let theta_pointwise_error = s
+        .theta
+        .iter()
+        .zip(&reference.theta)
+        .map(|(a, b)| (a / b - 1.0).abs())
+        .fold(0.0, f64::max);
+    Ok(ChuteCheck {
+        eps_error: relative_error(&s.eps, &reference.eps_s),
+        velocity_error: relative_error(&u_s, &reference.u_s),
+        theta_error: relative_error(&s.theta, &reference.theta),
+        theta_pointwise_error,
+        y: reference.y.clone(),
+        eps_s: s.eps.clone(),
+        theta: s.theta.clone(),
+        u_s,
+        time,
+        steps,
+        rejected,
+        final_rate: rate,
+        steady: rate < setup.steady_rate,
+        mass_change: tf.solids_mass(0) / mass0 - 1.0,
+        drag_to_weight,
+        buoyancy: setup.gas_density / rho_s,
+        wall_time,
+        reference,
+    })
+}
