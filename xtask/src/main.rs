@@ -20,6 +20,7 @@
 //!   with the table of docs/stability.md; fails if a run writes NaN.
 
 mod analytic;
+mod chute;
 mod collapse;
 mod error_time;
 mod metrics;
@@ -102,11 +103,12 @@ enum Task {
         end_time: Option<f64>,
     },
     /// Verification: the single-phase core (issue 6: cavity, cavity-re1000, poiseuille,
-    /// taylor-green, all), the granular column collapse (issue 7: collapse) and family M
+    /// taylor-green, all), the steady chute and the granular column collapse (issue 7:
+    /// chute, collapse) and family M
     /// against MFIX (issue 9: mfix-slope).
     Verify {
-        /// cavity, cavity-re1000, poiseuille, taylor-green, all, two-fluid, collapse or
-        /// mfix-slope
+        /// cavity, cavity-re1000, poiseuille, taylor-green, all, two-fluid, chute, collapse
+        /// or mfix-slope
         name: String,
         /// also write error against run time (CSV/SVG/Markdown) into docs/verification/
         #[arg(long)]
@@ -285,6 +287,8 @@ fn main() -> Result<()> {
                     bail!("two-fluid verification failed: {status}");
                 }
                 Ok(())
+            } else if name == "chute" {
+                chute::verify(&root())
             } else if name == "collapse" {
                 collapse::verify(
                     &root(),

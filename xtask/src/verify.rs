@@ -66,7 +66,7 @@ pub fn verify(name: &str, report: bool, root: &Path) -> Result<()> {
         }
         other => bail!(
             "unknown verification `{other}` (known: cavity, cavity-re1000, poiseuille, \
-             taylor-green, all, collapse)"
+             taylor-green, all, two-fluid, chute, collapse, mfix-slope)"
         ),
     }
     if report {

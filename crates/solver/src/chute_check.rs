@@ -67,9 +67,9 @@ impl Default for ChuteCheckSetup {
                 .expect("valid JJ parameters"),
             gas_density: 1e-3,
             gas_viscosity: 1e-8,
-            end_time: 4.0,
+            end_time: 20.0,
             steady_rate: 1e-4,
-            dt_max: 5e-3,
+            dt_max: 2e-2,
             verbose: false,
         }
     }
@@ -276,7 +276,8 @@ pub fn run(setup: &ChuteCheckSetup) -> Result<ChuteCheck, ChuteCheckError> {
         if rate < setup.steady_rate {
             break;
         }
-        if out.iterations <= 8 {
+        // a steady state is sought: grow the step while the outer iteration copes
+        if out.iterations <= 20 {
             dt = (dt * 1.2).min(setup.dt_max);
         }
     }
