@@ -382,6 +382,7 @@ impl SinglePhase {
             volume_fraction: &self.ones,
             viscosity: &self.viscosity_cells,
             solids_pressure: None,
+            plastic_pressure: None,
             explicit_source: None,
             skip: None,
         };
@@ -435,6 +436,7 @@ impl SinglePhase {
             volume_fraction: &self.ones,
             viscosity: &self.viscosity_cells,
             solids_pressure: None,
+            plastic_pressure: None,
             explicit_source: None,
             skip: None,
         };
