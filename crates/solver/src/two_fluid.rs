@@ -23,8 +23,8 @@
 //! per cell apart from P_s ([`SolidsFields::p_star`]) and enters only the solids momentum, as
 //! its own gradient −∇P* (§4.4); K_cp = dP*/dεs (§2.5); P* is recomputed from the corrected εs
 //! (§4.9 step 5); θ is forced to θ_small where εg < εg* (§1.3; as MFIX, by a fixed row of the
-//! θ equation, not relaxed). With the Princeton model P* is
-//! never computed (≡ 0) and the momentum has no P* term.
+//! θ equation, not relaxed). With the Princeton model P* is never computed (≡ 0) and the
+//! momentum has no P* term.
 //!
 //! Not yet: dry (gas-free) cases, the gas's own explicit stress terms (μ_g ∇(∇·u_g),
 //! negligible for air), Schaeffer with more than one solids phase (MFIX's P* from the
