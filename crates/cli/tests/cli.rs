@@ -134,13 +134,18 @@ fn run_solves_the_mfix_slide_with_its_johnson_jackson_floor_at_smoke_fidelity() 
 
 #[test]
 fn run_refuses_what_the_two_fluid_solver_lacks_before_any_step() {
-    let dir = std::env::temp_dir().join(format!("runout-run-schaeffer-{}", std::process::id()));
+    let dir = std::env::temp_dir().join(format!("runout-run-algebraic-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let text0 = std::fs::read_to_string(root().join("cases/mfix-slope/jj.ron")).unwrap();
-    let schaeffer = text0.replacen("friction: Princeton,", "friction: Schaeffer,", 1);
-    assert_ne!(schaeffer, text0);
-    let case = dir.join("schaeffer.ron");
-    std::fs::write(&case, schaeffer).unwrap();
+    // the algebraic kinetic theory (no θ PDE) is not implemented in the two-fluid solver
+    let algebraic = text0.replacen(
+        "kinetic_theory: Lun1984(alpha: 1.6),",
+        "kinetic_theory: Algebraic,",
+        1,
+    );
+    assert_ne!(algebraic, text0);
+    let case = dir.join("algebraic.ron");
+    std::fs::write(&case, algebraic).unwrap();
     let out = dir.join("out");
     let o = runout(&[
         "run",
@@ -154,7 +159,7 @@ fn run_refuses_what_the_two_fluid_solver_lacks_before_any_step() {
     assert_eq!(o.status.code(), Some(1));
     let t = text(&o);
     assert!(
-        t.contains("Schaeffer friction needs the plastic pressure"),
+        t.contains("only the Lun 1984 kinetic theory with the θ PDE is implemented"),
         "{t}"
     );
     assert!(!out.join("summary.json").exists());

@@ -13,7 +13,8 @@
 //! - transient: a_P⁰ = ½ (V_W ρε_W⁰ + V_E ρε_E⁰)/Δt (old bulk density averaged by cell
 //!   volumes to the momentum cell, §4.4); body force likewise with the current ρε;
 //! - pressure: −ε̄ (P_E − P_W) A with ε̄ distance-interpolated (AVG_X), plus −(P_s,E − P_s,W) A
-//!   for a solids phase (§1.2, §4.4);
+//!   for a solids phase and −(P*_E − P*_W) A where the Schaeffer plastic pressure is given
+//!   (§1.2, §4.4);
 //! - walls: the eliminated Robin closure of the tangential component (§3.2) with the fluid
 //!   cells' viscosity (§3.1).
 //!
@@ -41,6 +42,9 @@ pub struct PhaseFields<'a> {
     pub viscosity: &'a [f64],
     /// the solids pressure P_s of a solids phase [Pa]; `None` for the gas
     pub solids_pressure: Option<&'a [f64]>,
+    /// the Schaeffer plastic pressure P* of a solids phase [Pa], its own gradient −∇P*
+    /// (model-spec §2.4.1, §4.4); `None` for the gas and without Schaeffer friction (P* ≡ 0)
+    pub plastic_pressure: Option<&'a [f64]>,
     /// explicit stress source per node of the component being assembled, already integrated
     /// over the control volume [N per m depth] (model-spec §4.4, [`crate::stress`]); `None`
     /// where the viscosity is uniform and the flow incompressible (it vanishes)
@@ -380,6 +384,10 @@ pub fn assemble_u(
             if let (Some(ps), Some(w), Some(e)) = (phase.solids_pressure, west, east) {
                 a.b[k] += (ps[w + nx * j] - ps[e + nx * j]) * dy[j];
             }
+            // −(P*_E − P*_W) A, MFIX's SDPS (model-spec §4.4, §2.4.1)
+            if let (Some(pp), Some(w), Some(e)) = (phase.plastic_pressure, west, east) {
+                a.b[k] += (pp[w + nx * j] - pp[e + nx * j]) * dy[j];
+            }
             if let Some(tau) = phase.explicit_source {
                 a.b[k] += tau[k];
             }
@@ -544,6 +552,10 @@ pub fn assemble_v(
             a.b[k] += eps_face * (p_s - p_n) * dx[i];
             if let (Some(ps), Some(s), Some(n)) = (phase.solids_pressure, south, north) {
                 a.b[k] += (ps[i + nx * s] - ps[i + nx * n]) * dx[i];
+            }
+            // −(P*_N − P*_S) A, MFIX's SDPS (model-spec §4.4, §2.4.1)
+            if let (Some(pp), Some(s), Some(n)) = (phase.plastic_pressure, south, north) {
+                a.b[k] += (pp[i + nx * s] - pp[i + nx * n]) * dx[i];
             }
             if let Some(tau) = phase.explicit_source {
                 a.b[k] += tau[k];

@@ -596,9 +596,11 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
             "only the Lun 1984 kinetic theory with the θ PDE is implemented".into(),
         ));
     }
-    if case.models.friction == FrictionModel::Schaeffer {
+    // one phase only: MFIX's P* of several phases uses the mixture εg and εs/Σε_cp weights
+    // (model-spec §2.4.1, §4.4), not implemented
+    if case.models.friction == FrictionModel::Schaeffer && case.solids.len() > 1 {
         return Err(unsupported(
-            "Schaeffer friction needs the plastic pressure P*, not implemented yet".into(),
+            "Schaeffer friction with more than one solids phase is not implemented".into(),
         ));
     }
     let grid = case.grid().map_err(|source| RunError::Mesh {

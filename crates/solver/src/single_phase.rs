@@ -383,6 +383,7 @@ impl SinglePhase {
             volume_fraction: &self.ones,
             viscosity: &self.viscosity_cells,
             solids_pressure: None,
+            plastic_pressure: None,
             explicit_source: None,
             skip: None,
         };
@@ -437,6 +438,7 @@ impl SinglePhase {
             volume_fraction: &self.ones,
             viscosity: &self.viscosity_cells,
             solids_pressure: None,
+            plastic_pressure: None,
             explicit_source: None,
             skip: None,
         };

@@ -9,7 +9,8 @@
 //!    εg = 1 − Σεs;
 //! 4. gas pressure correction from gas continuity with d_g of the partial elimination
 //!    (model-spec §4.6); the solids velocities are not corrected with P'_g;
-//! 5. granular energy of each phase ([`crate::energy`]), θ ≥ 10⁻¹² m²/s²;
+//! 5. granular energy of each phase ([`crate::energy`]), θ ≥ 10⁻¹² m²/s² (with Schaeffer
+//!    friction a fixed row θ = 10⁻¹² m²/s² where εg < εg*, model-spec §1.3);
 //! 6. residuals (model-spec §4.11).
 //!
 //! Also: the explicit stress terms of model-spec §4.4 once per step ([`crate::stress`]);
@@ -18,15 +19,23 @@
 //! wall cells (§4.4); the continuity face values of the convection scheme (§4.2); the
 //! DIL_EP_S treatment of dilute faces and cells (§2.7, §4.8).
 //!
-//! Not yet: the Schaeffer plastic pressure P* (cases with Schaeffer friction are refused
-//! before any step), dry (gas-free) cases, the gas's own explicit stress terms (μ_g ∇(∇·u_g),
-//! negligible for air).
+//! Schaeffer friction (model-spec §2.4.1): the plastic pressure P* = A (εg* − εg)^10 is kept
+//! per cell apart from P_s ([`SolidsFields::p_star`]) and enters only the solids momentum, as
+//! its own gradient −∇P* (§4.4); K_cp = dP*/dεs (§2.5); P* is recomputed from the corrected εs
+//! (§4.9 step 5); θ is forced to θ_small where εg < εg* (§1.3; as MFIX, by a fixed row of the
+//! θ equation, not relaxed). With the Princeton model P* is never computed (≡ 0) and the
+//! momentum has no P* term.
+//!
+//! Not yet: dry (gas-free) cases, the gas's own explicit stress terms (μ_g ∇(∇·u_g),
+//! negligible for air), Schaeffer with more than one solids phase (MFIX's P* from the
+//! mixture εg and its εs/Σε_cp weights).
 
 use std::time::Instant;
 
 use rayon::prelude::*;
 
-use runout_closures::{evaluate, CellState, ClosureParams};
+use runout_closures::friction::p_star;
+use runout_closures::{evaluate, CellState, ClosureParams, FrictionModel};
 use runout_linsolve::{
     build, LinSolveError, LinearSolver, LinearSolverKind, MultigridParams, Pattern, Stencil5,
 };
@@ -120,6 +129,8 @@ impl Default for TwoFluidSettings {
 pub struct CellClosures {
     /// P_s = P_kin + P_fric [Pa]
     pub p_s: f64,
+    /// Schaeffer plastic pressure P* [Pa], 0 with other friction models (model-spec §2.4.1)
+    pub p_star: f64,
     /// μ_s = μ_kin + μ_fric [Pa s]
     pub mu: f64,
     /// λ_s = λ_kin + λ_fric [Pa s]
@@ -148,6 +159,7 @@ impl CellClosures {
         let c = evaluate(state, params);
         CellClosures {
             p_s: c.stress.p_s,
+            p_star: c.stress.p_star,
             mu: c.stress.mu_s,
             lambda: c.stress.lambda_s,
             kappa: c.kinetic.kappa_kin,
@@ -181,6 +193,9 @@ pub struct SolidsFields {
     rho_eps_old: Vec<f64>,
     /// solids pressure P_s = P_kin + P_fric per cell [Pa]
     pub p_s: Vec<f64>,
+    /// Schaeffer plastic pressure P* per cell [Pa] (model-spec §2.4.1), all 0 with other
+    /// friction models; in the solids momentum only, as −∇P* (§4.4)
+    pub p_star: Vec<f64>,
     mu: Vec<f64>,
     lambda: Vec<f64>,
     kappa: Vec<f64>,
@@ -482,6 +497,7 @@ impl TwoFluid {
                 rho_eps: vec![0.0; n],
                 rho_eps_old: vec![0.0; n],
                 p_s: vec![0.0; n],
+                p_star: vec![0.0; n],
                 mu: vec![0.0; n],
                 lambda: vec![0.0; n],
                 kappa: vec![0.0; n],
@@ -672,6 +688,7 @@ impl TwoFluid {
             for k in 0..nx * ny {
                 let c = s.cells[k];
                 s.p_s[k] = c.p_s;
+                s.p_star[k] = c.p_star; // P* from the current εs (model-spec §2.4.1)
                 s.mu[k] = c.mu;
                 s.lambda[k] = c.lambda;
                 s.kappa[k] = c.kappa;
@@ -933,6 +950,7 @@ impl TwoFluid {
             volume_fraction: &self.eps_g,
             viscosity: &self.mu_g,
             solids_pressure: None,
+            plastic_pressure: None,
             // the gas's own cross terms are left out: with uniform μ_g they reduce to
             // μ_g ∇(∇·u_g), negligible here (μ_g = 1.8e-5 Pa s)
             explicit_source: None,
@@ -989,6 +1007,10 @@ impl TwoFluid {
                 volume_fraction: &s.eps,
                 viscosity: &s.mu,
                 solids_pressure: Some(&s.p_s),
+                // −∇P* only with Schaeffer (model-spec §4.4); none with Princeton, where MFIX
+                // never computes P* (§2.4.2)
+                plastic_pressure: (spec.params.friction_model == FrictionModel::Schaeffer)
+                    .then_some(&s.p_star[..]),
                 explicit_source: Some(&s.tau_u),
                 skip: Some(&s.dilute_u),
             };
@@ -1276,6 +1298,12 @@ impl TwoFluid {
                 &s.e_v,
                 &s.k_cp,
             );
+            // (Schaeffer only) P* from the corrected εs (model-spec §4.9 step 5)
+            if spec.params.friction_model == FrictionModel::Schaeffer {
+                for (p, &e) in s.p_star.iter_mut().zip(&s.eps) {
+                    *p = p_star(e, &spec.params.friction);
+                }
+            }
         }
         self.sync_volume_fractions();
         Ok(total)
@@ -1416,6 +1444,10 @@ impl TwoFluid {
             );
             let a = &mut s.a_theta;
             let (mut num, mut den) = (0.0, 0.0);
+            // Schaeffer: θ = θ_small where εg < εg* (model-spec §1.3), as a fixed row before
+            // the residual and not relaxed (MFIX `solve_granular_energy.f`, `under_relax.f`)
+            let eps_g_star = (spec.params.friction_model == FrictionModel::Schaeffer)
+                .then_some(1.0 - spec.params.friction.eps_s_max);
             for k in 0..s.theta.len() {
                 if s.eps[k] <= DIL_EP_S {
                     // the mean θ of the neighbours with εs > DIL_EP_S, or kept if none
@@ -1423,12 +1455,19 @@ impl TwoFluid {
                     dilute_cell_row(a, k, s.theta[k], &s.eps, nx);
                     continue;
                 }
+                let forced = eps_g_star.is_some_and(|star| self.eps_g[k] < star);
+                if forced {
+                    fixed_row(a, k, THETA_SMALL); // model-spec §1.3 (Schaeffer)
+                }
                 let nb = neighbour_sum(a, &s.theta, k) - a.a_p[k] * s.theta[k];
                 num += nb.abs();
                 if nb.abs() > worst_theta.0 {
                     worst_theta = (nb.abs(), k);
                 }
                 den += (a.a_p[k] * s.theta[k]).abs();
+                if forced {
+                    continue; // fixed rows are not relaxed (MFIX `under_relax.f`, §1.3)
+                }
                 let ap = a.a_p[k] / relax;
                 a.b[k] += (1.0 - relax) * ap * s.theta[k];
                 a.a_p[k] = ap;

@@ -67,6 +67,7 @@ fn two_layer_couette_is_exact() {
         volume_fraction: &ones,
         viscosity: &viscosity,
         solids_pressure: None,
+        plastic_pressure: None,
         explicit_source: None,
         skip: None,
     };
