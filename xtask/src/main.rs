@@ -260,8 +260,8 @@ fn main() -> Result<()> {
                 mfix_slope::check(&root(), &opts)
             } else if name == "two-fluid" {
                 // issue 7's two-fluid checks at full size: homogeneous cooling, the settling
-                // column and S-JJ-phi φ = 0.1 at smoke and coarse fidelity to 1.25 s (the
-                // test suite runs all but the coarse one)
+                // column, the fluidized bed's gas pressure drop and S-JJ-phi φ = 0.1 at smoke
+                // and coarse fidelity to 1.25 s (the test suite runs all but the coarse one)
                 let status =
                     Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
                         .current_dir(root())
@@ -274,6 +274,8 @@ fn main() -> Result<()> {
                             "tfm_cooling",
                             "--test",
                             "settling",
+                            "--test",
+                            "fluidized_bed",
                             "--test",
                             "s_jj_phi",
                             "--",

@@ -336,6 +336,9 @@ pub enum TwoFluidError {
     /// More solids phases than [`MAX_SOLIDS_PHASES`].
     #[error("{0} solids phases: at most {MAX_SOLIDS_PHASES} are supported")]
     TooManyPhases(usize),
+    /// Gas inflow asked for on a side that is not a wall.
+    #[error("gas inflow on the {0} side, which is an outlet")]
+    InflowOnOutlet(String),
     /// A periodic-x column with more than one cell across or with an outlet on its x sides.
     #[error("periodic x needs one column of cells (nx = 1, got {0}) and walls on the west and east sides")]
     PeriodicColumn(usize),
@@ -354,6 +357,10 @@ pub struct TwoFluid {
     grid: Grid,
     gas: Fluid,
     gas_walls: Sides<SideBc>,
+    /// gas velocity into the domain through each wall side [m s⁻¹] (a distributor: gas
+    /// enters with εg = 1, solids see the wall; MFIX's mass inlet with BC_EP_G = 1), 0 on
+    /// impermeable walls
+    gas_inflow: Sides<f64>,
     solids_specs: Vec<SolidsSpec>,
     gravity: (f64, f64),
     settings: TwoFluidSettings,
@@ -569,6 +576,12 @@ impl TwoFluid {
             grid,
             gas,
             gas_walls,
+            gas_inflow: Sides {
+                west: 0.0,
+                east: 0.0,
+                south: 0.0,
+                north: 0.0,
+            },
             solids_specs,
             gravity,
             settings,
@@ -1201,7 +1214,10 @@ impl TwoFluid {
                 }
             }
             residual += if den > 0.0 { num / den } else { num };
-            // fixed nodes: walls, zero velocity, no d or e
+            // fixed nodes: walls, zero velocity (the gas's inflow through a distributor),
+            // no d or e
+            let inflow = self.gas_inflow.clone();
+            let gas_fixed = |k: usize| gas_fixed_velocity(&inflow, (nx, ny), dir, k);
             let gas_a = if dir == 0 {
                 &mut self.a_ug
             } else {
@@ -1214,7 +1230,7 @@ impl TwoFluid {
             };
             for k in 0..d.len() {
                 if gas_a.pattern().fixed_mask()[k] {
-                    fixed_row(gas_a, k, 0.0);
+                    fixed_row(gas_a, k, gas_fixed(k));
                     d[k] = 0.0;
                     for s in self.solids.iter_mut() {
                         let (a, e) = if dir == 0 {
@@ -1346,10 +1362,19 @@ impl TwoFluid {
                 let east = (i + 1 < nx).then_some(k + 1);
                 let south = (j > 0).then(|| k - nx);
                 let north = (j + 1 < ny).then_some(k + nx);
-                let ew = face(self.u_g[kw], west, Some(k), 1);
-                let ee = face(self.u_g[ke], Some(k), east, 1);
-                let es = face(self.v_g[ks], south, Some(k), nx);
-                let en = face(self.v_g[kn], Some(k), north, nx);
+                // gas entering through a distributor is pure gas (MFIX BC_EP_G = 1)
+                let inlet = |at_side: bool, inflow: f64, value: f64| {
+                    if at_side && inflow != 0.0 {
+                        1.0
+                    } else {
+                        value
+                    }
+                };
+                let f = &self.gas_inflow;
+                let ew = inlet(i == 0, f.west, face(self.u_g[kw], west, Some(k), 1));
+                let ee = inlet(i + 1 == nx, f.east, face(self.u_g[ke], Some(k), east, 1));
+                let es = inlet(j == 0, f.south, face(self.v_g[ks], south, Some(k), nx));
+                let en = inlet(j + 1 == ny, f.north, face(self.v_g[kn], Some(k), north, nx));
                 let volume = dx[i] * dy[j];
                 let b = rho
                     * (-(eps[k] - self.eps_g_old[k]) * volume / dt + ew * self.u_g[kw] * dy[j]
@@ -1686,6 +1711,20 @@ impl TwoFluid {
         self.profile
     }
 
+    /// Gas enters through the wall sides given, at this velocity normal to the side into
+    /// the domain [m s⁻¹] (a distributor plate or porous wall: the gas's normal velocity on
+    /// the side's faces is fixed at it and its face εg is 1, as MFIX's mass inlet with
+    /// BC_EP_G = 1; the solids still see the wall). Outlet sides must get 0.
+    pub fn set_gas_inflow(&mut self, inflow: Sides<f64>) -> Result<(), TwoFluidError> {
+        for (side, &v) in inflow.iter() {
+            if v != 0.0 && !matches!(self.gas_walls.get(side), SideBc::Wall(_)) {
+                return Err(TwoFluidError::InflowOnOutlet(format!("{side:?}")));
+            }
+        }
+        self.gas_inflow = inflow;
+        Ok(())
+    }
+
     /// Sets gravity (a schedule may tilt it during a run).
     pub fn set_gravity(&mut self, gravity: (f64, f64)) {
         self.gravity = gravity;
@@ -1700,6 +1739,24 @@ impl TwoFluid {
     /// Gravity (g_x, g_y) [m s⁻²].
     pub fn gravity(&self) -> (f64, f64) {
         self.gravity
+    }
+}
+
+/// The gas normal velocity (in +x or +y) that fixed gas node k of component `dir` (0: u,
+/// 1: v) holds: the inflow of its side, 0 on impermeable walls.
+fn gas_fixed_velocity(inflow: &Sides<f64>, (nx, ny): (usize, usize), dir: usize, k: usize) -> f64 {
+    if dir == 0 {
+        match k % (nx + 1) {
+            0 => inflow.west,
+            i if i == nx => -inflow.east,
+            _ => 0.0,
+        }
+    } else {
+        match k / nx {
+            0 => inflow.south,
+            j if j == ny => -inflow.north,
+            _ => 0.0,
+        }
     }
 }
 
