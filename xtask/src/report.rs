@@ -329,7 +329,9 @@ fn draw_flume_figure(
          distance from the channel inlet (gates.csv of each run); black squares: the speeds the \
          paper *describes* for the experiment (cases/flume/gates.csv: no measured values are in \
          the paper's text); dotted: the gates L1–L7. Panel (b), not in the paper: the front \
-         position against time (front.csv), from which the gate speeds are taken.{} Panel (b):{}",
+         position against time (front.csv: where the floor row's εs falls through 0.01, \
+         interpolated between cell centres), from which the gate speeds are taken by central \
+         differences.{} Panel (b):{}",
         cov.caption(),
         front_cov.caption()
     );

@@ -288,7 +288,8 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(2000))]
 
     /// The K_cp of the closure set (from the Princeton P_f/P_c already computed) equals the
-    /// stand-alone MFIX CALC_K_CP form, including its cap with N_Pf.
+    /// stand-alone MFIX CALC_K_CP form, including its cap with N_Pf, to 1e-13 relative (the
+    /// two paths round differently: a 1-ulp difference was seen at εs = 0.5525).
     #[test]
     fn k_cp_shortcut_equals_calc_k_cp(state in cell_state(0.7), phi in 25.0..45.0f64) {
         let params = ClosureParams {
@@ -300,7 +301,11 @@ proptest! {
             state.eps_s, state.theta, params.particles.diameter, state.tr_d, state.s_ddot_s,
             &params.friction,
         );
-        prop_assert_eq!(set.k_cp, direct);
+        // the same formula along two code paths: equal up to the last bits of rounding
+        prop_assert!(
+            (set.k_cp - direct).abs() <= 1e-13 * direct.abs().max(f64::MIN_POSITIVE),
+            "{} vs {}", set.k_cp, direct
+        );
     }
 }
 

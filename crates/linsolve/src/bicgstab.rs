@@ -93,6 +93,25 @@ impl LinearSolver for BiCgStab {
         Ok(())
     }
 
+    /// With a multigrid preconditioner, keeps its hierarchy from the last `setup` and takes
+    /// the new coefficients as the operator; the other preconditioners are rebuilt (they
+    /// cost one pass over the matrix).
+    fn refresh(&mut self, a: &Stencil5) -> Result<(), LinSolveError> {
+        if !self.ready || !matches!(self.kind, Precond::MultigridV | Precond::MultigridK) {
+            return self.setup(a);
+        }
+        let w = self
+            .work
+            .as_mut()
+            .ok_or(LinSolveError::NotReady("set_pattern"))?;
+        if a.pattern() != &w.pattern {
+            return Err(LinSolveError::PatternMismatch);
+        }
+        a.validate_coefficients()?;
+        w.op.reduce_from(a);
+        Ok(())
+    }
+
     fn solve(&mut self, a: &Stencil5, x: &mut [f64]) -> Result<SolveStats, LinSolveError> {
         let t0 = Instant::now();
         let w = self

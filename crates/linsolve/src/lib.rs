@@ -168,6 +168,14 @@ pub trait LinearSolver: Send {
     /// Solves `A x = b` with the coefficients given to the last `setup` and `a.b`; `x` holds
     /// the initial guess on entry (ignored by direct solvers) and the solution on exit.
     fn solve(&mut self, a: &Stencil5, x: &mut [f64]) -> Result<SolveStats, LinSolveError>;
+    /// Reads new coefficients of the same pattern like `setup`, but a solver may keep the
+    /// preconditioner built by the last `setup` (an approximate inverse of a nearby
+    /// matrix, e.g. within one time step): `solve` then iterates with the new coefficients
+    /// and confirms convergence on their true residual, so only the iteration count can
+    /// change. The default is a full `setup`; the multigrid solvers keep their hierarchy.
+    fn refresh(&mut self, a: &Stencil5) -> Result<(), LinSolveError> {
+        self.setup(a)
+    }
     /// `setup` followed by `solve`.
     fn setup_and_solve(
         &mut self,

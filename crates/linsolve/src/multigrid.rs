@@ -642,6 +642,24 @@ impl LinearSolver for MultigridCg {
         Ok(())
     }
 
+    /// Keeps the hierarchy of the last `setup` as the preconditioner and takes the new
+    /// coefficients as the operator of the flexible CG.
+    fn refresh(&mut self, a: &Stencil5) -> Result<(), LinSolveError> {
+        if !self.ready {
+            return self.setup(a);
+        }
+        let w = self
+            .work
+            .as_mut()
+            .ok_or(LinSolveError::NotReady("set_pattern"))?;
+        if a.pattern() != &w.pattern {
+            return Err(LinSolveError::PatternMismatch);
+        }
+        a.validate_coefficients()?;
+        w.op.reduce_from(a);
+        Ok(())
+    }
+
     fn solve(&mut self, a: &Stencil5, x: &mut [f64]) -> Result<SolveStats, LinSolveError> {
         let t0 = Instant::now();
         let w = self

@@ -323,12 +323,16 @@ trait CaseSolver {
     fn bulk(&self, _threshold: f64) -> Option<(f64, f64)> {
         None
     }
-    /// h_w^u of the floor's velocity node nearest to `x` (the wall probe of paper Fig. 9),
-    /// `None` where the floor has no state-dependent wall model.
-    /// wall time per part of the iteration, if the solver keeps it
+    /// The front interpolated within its cell, for the front tracker; `None` without solids.
+    fn interpolated_front(&self, _threshold: f64) -> Option<f64> {
+        None
+    }
+    /// Wall time per part of the iteration, if the solver keeps it.
     fn time_profile(&self) -> Vec<(String, f64)> {
         Vec::new()
     }
+    /// h_w^u of the floor's velocity node nearest to `x` (the wall probe of paper Fig. 9),
+    /// `None` where the floor has no state-dependent wall model.
     fn floor_h_u(&self, _x: f64) -> Option<f64> {
         None
     }
@@ -558,6 +562,29 @@ impl CaseSolver for TwoFluidCase {
         self.solver
             .has_floor_model(0)
             .then(|| self.solver.solids[0].floor_h_u[k])
+    }
+
+    /// The front for the gate speeds: where εs of the floor row falls through `threshold`
+    /// beyond its last cell i at or above it, interpolated linearly between the centres of
+    /// cells i and i + 1 (the east face at the last cell). Unlike the whole-cell front of
+    /// the bulk monitor it moves continuously, so speeds from it are not quantised in steps
+    /// of Δx per sampling interval.
+    fn interpolated_front(&self, threshold: f64) -> Option<f64> {
+        let g = self.solver.grid();
+        let nx = g.nx();
+        let (xc, eps) = (g.x.centres(), &self.solver.solids[0].eps);
+        let front = (0..nx)
+            .rev()
+            .find(|&i| eps[i] >= threshold)
+            .map_or(g.x.start(), |i| {
+                if i + 1 == nx {
+                    g.x.faces()[nx]
+                } else {
+                    let (e0, e1) = (eps[i], eps[i + 1]);
+                    xc[i] + (e0 - threshold) / (e0 - e1) * (xc[i + 1] - xc[i])
+                }
+            });
+        Some(front)
     }
 
     fn bulk(&self, threshold: f64) -> Option<(f64, f64)> {
@@ -1012,7 +1039,7 @@ pub fn run_case(
         }
         if let Some((csv, tracker, next, series)) = front.as_mut() {
             if time >= *next * (1.0 - 1e-9) {
-                if let Some((x, _)) = solver.bulk(tracker.threshold) {
+                if let Some(x) = solver.interpolated_front(tracker.threshold) {
                     csv.push(&[time, x]).map_err(out_err)?;
                     series.push((time, x));
                 }

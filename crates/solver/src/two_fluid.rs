@@ -398,6 +398,9 @@ pub struct TwoFluid {
     solver_eps: Box<dyn LinearSolver>,
     solver_theta: Box<dyn LinearSolver>,
     pressure_pinned: bool,
+    /// the multigrid preconditioners of the P' and ε' solves are built on the first outer
+    /// iteration of a step and kept for the others ([`LinearSolver::refresh`])
+    rebuild_preconditioners: bool,
     /// the closures were evaluated at the current iterate (the start of a step) and need
     /// not be evaluated again by the next outer iteration
     closures_fresh: bool,
@@ -572,6 +575,7 @@ impl TwoFluid {
             solver_eps,
             solver_theta,
             pressure_pinned,
+            rebuild_preconditioners: true,
             closures_fresh: false,
             profile: Profile::default(),
             worst: Worst::default(),
@@ -597,6 +601,7 @@ impl TwoFluid {
 
     /// Stores the current fields as the old time level and refreshes the bulk densities.
     pub fn begin_step(&mut self) {
+        self.rebuild_preconditioners = true;
         self.sync_volume_fractions();
         self.eps_g_old.copy_from_slice(&self.eps_g);
         self.u_g_old.copy_from_slice(&self.u_g);
@@ -1298,9 +1303,13 @@ impl TwoFluid {
             total += s.imbalance.iter().map(|x| x.abs()).sum::<f64>() / n;
             s.eps_prime.iter_mut().for_each(|x| *x = 0.0);
             let t = Instant::now();
-            self.solver_eps
-                .setup_and_solve(&s.a_eps, &mut s.eps_prime)
-                .map_err(lin("solids volume fraction"))?;
+            solve_keeping_preconditioner(
+                self.solver_eps.as_mut(),
+                &s.a_eps,
+                &mut s.eps_prime,
+                self.rebuild_preconditioners,
+            )
+            .map_err(lin("solids volume fraction"))?;
             let solve = since(t);
             self.profile.eps_solve += solve;
             self.profile.eps_assembly -= solve;
@@ -1403,9 +1412,15 @@ impl TwoFluid {
         }
         self.p_corr.iter_mut().for_each(|x| *x = 0.0);
         let t = Instant::now();
-        self.solver_p
-            .setup_and_solve(&self.a_p, &mut self.p_corr)
-            .map_err(lin("gas pressure correction"))?;
+        solve_keeping_preconditioner(
+            self.solver_p.as_mut(),
+            &self.a_p,
+            &mut self.p_corr,
+            self.rebuild_preconditioners,
+        )
+        .map_err(lin("gas pressure correction"))?;
+        // both multigrid hierarchies of this step are built (ε' is solved first)
+        self.rebuild_preconditioners = false;
         let solve = since(t);
         self.profile.pressure_solve += solve;
         self.profile.pressure_assembly -= solve;
@@ -1808,6 +1823,28 @@ fn gas_fixed_velocity(inflow: &Sides<f64>, (nx, ny): (usize, usize), dir: usize,
             _ => 0.0,
         }
     }
+}
+
+/// Solves `a x = b` from x = 0 with the preconditioner of the step's first outer iteration
+/// (`rebuild` on that one): the P' and ε' matrices change little within a step, and the
+/// multigrid set-up costs as much as a few iterations. A solve that misses its tolerance
+/// with the kept preconditioner is repeated with a fresh one.
+fn solve_keeping_preconditioner(
+    solver: &mut dyn LinearSolver,
+    a: &Stencil5,
+    x: &mut [f64],
+    rebuild: bool,
+) -> Result<(), LinSolveError> {
+    if rebuild {
+        solver.setup_and_solve(a, x)?;
+        return Ok(());
+    }
+    solver.refresh(a)?;
+    if !solver.solve(a, x)?.converged {
+        x.iter_mut().for_each(|v| *v = 0.0);
+        solver.setup_and_solve(a, x)?;
+    }
+    Ok(())
 }
 
 /// Fills `s.wall_face_velocity` with the tangential solids velocity on each wall face (the
