@@ -5,6 +5,12 @@
 //! `runs/<case>/<fidelity>/` when it ends, so a finished folder is always complete; a run
 //! whose folder exists with a summary is skipped, so a killed sweep resumes where it
 //! stopped. `results/summary.csv` gets one row per case of the matrix.
+//!
+//! Runs go longest first (cells × simulated time) to the first free worker. A case that
+//! repeats another at this fidelity in everything but its name and description (the base
+//! point shared by several one-factor families) is run once; its folder is copied, with the
+//! name changed in `summary.json` and `resolved.ron`, and the summary's wall time is the
+//! one run's.
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -13,7 +19,6 @@ use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
 use indicatif::{MultiProgress, ProgressBar, ProgressStyle};
-use rayon::prelude::*;
 use runout_case::{case_files, load, Fidelity, Loaded, SourcedCase};
 use runout_output::RunSummary;
 use runout_solver::{run_case, RunError};
@@ -96,6 +101,8 @@ enum Outcome {
     Done(RunSummary),
     /// finished in an earlier sweep
     Skipped(RunSummary),
+    /// the same case as another run of the matrix (named), whose folder was copied
+    Copied(RunSummary, String),
     /// the solver cannot run this case yet
     Unsupported(String),
     /// the run failed before producing a summary
@@ -143,6 +150,60 @@ fn run_one(case: &SourcedCase, fidelity: Fidelity, runs: &Path, bar: &ProgressBa
     }
 }
 
+/// For each selected case, the index of an earlier one it repeats at this fidelity (equal
+/// in everything but its name and description), if any.
+fn duplicates(selected: &[&SourcedCase], fidelity: Fidelity) -> Vec<Option<usize>> {
+    let anonymous: Vec<_> = selected
+        .iter()
+        .map(|r| {
+            let mut c = r.case.at_fidelity(fidelity);
+            c.name.clear();
+            c.description.clear();
+            c
+        })
+        .collect();
+    (0..selected.len())
+        .map(|k| (0..k).find(|&e| anonymous[e] == anonymous[k]))
+        .collect()
+}
+
+/// Copies the finished run of `from` to the folder of `to` (a repeat of the same case),
+/// with the case name in its summary and resolved case changed to `to`; skipped if `to` is
+/// finished already.
+fn copy_run(runs: &Path, from: &str, to: &str, fidelity: Fidelity) -> Outcome {
+    let done = runs.join(to).join(fidelity.name());
+    if let Some(summary) = read_summary(&done) {
+        return Outcome::Skipped(summary);
+    }
+    let source = runs.join(from).join(fidelity.name());
+    let partial = runs.join(to).join(format!("{}.partial", fidelity.name()));
+    let copy = || -> Result<RunSummary> {
+        let _ = std::fs::remove_dir_all(&partial);
+        std::fs::create_dir_all(&partial)?;
+        for entry in std::fs::read_dir(&source)? {
+            let entry = entry?;
+            std::fs::copy(entry.path(), partial.join(entry.file_name()))?;
+        }
+        let mut summary = read_summary(&partial)
+            .with_context(|| format!("no summary in {}", source.display()))?;
+        summary.case = to.to_string();
+        summary.write_json(&partial.join("summary.json"))?;
+        let resolved = partial.join("resolved.ron");
+        if let Ok(text) = std::fs::read_to_string(&resolved) {
+            let renamed =
+                text.replacen(&format!("name: \"{from}\""), &format!("name: \"{to}\""), 1);
+            std::fs::write(&resolved, renamed)?;
+        }
+        let _ = std::fs::remove_dir_all(&done);
+        std::fs::rename(&partial, &done)?;
+        Ok(summary)
+    };
+    match copy() {
+        Ok(summary) => Outcome::Copied(summary, from.to_string()),
+        Err(e) => Outcome::Failed(format!("copying the run of {from}: {e:#}")),
+    }
+}
+
 /// CSV field quoting (RFC 4180).
 pub fn csv_field(s: &str) -> String {
     if s.contains([',', '"', '\n']) {
@@ -162,7 +223,7 @@ fn csv_row(name: &str, fidelity: Fidelity, outcome: &Outcome, flow: &FlowMetrics
     // the eight flow columns after mean_dt_s
     let empty_flow = ",".repeat(8);
     match outcome {
-        Outcome::Done(s) | Outcome::Skipped(s) => format!(
+        Outcome::Done(s) | Outcome::Skipped(s) | Outcome::Copied(s, _) => format!(
             "{},{fidelity},{},{:.3},{},{},{:e},{}",
             csv_field(name),
             csv_field(&format!("{:?}", s.status)),
@@ -237,33 +298,58 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
     let started = Instant::now();
     let progress = MultiProgress::new();
     let style = progress_style();
+    // Runs the matrix repeats (the base point of several one-factor families: same case
+    // apart from its name and description) are computed once and copied.
+    let same_as = duplicates(&selected, fidelity);
+    // Longest first (cells × simulated time), each worker taking the next: the sweep's
+    // duration then is not set by a long run started last.
+    let mut order: Vec<usize> = (0..selected.len())
+        .filter(|&k| same_as[k].is_none())
+        .collect();
+    let work = |k: usize| -> f64 {
+        let c = selected[k].case.at_fidelity(fidelity);
+        c.grid().map_or(0.0, |g| g.cell_count() as f64) * c.run.end_time
+    };
+    order.sort_by(|&a, &b| work(b).total_cmp(&work(a)));
+    let queue = Mutex::new(order.into_iter());
     let outcomes: Mutex<Vec<(usize, Outcome)>> = Mutex::new(Vec::new());
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(opts.jobs.max(1))
-        .build()?;
-    pool.install(|| {
-        selected.par_iter().enumerate().for_each(|(k, r)| {
-            let bar = progress.add(ProgressBar::new(1000));
-            bar.set_style(style.clone());
-            bar.set_prefix(r.case.name.clone());
-            let outcome = run_one(r, fidelity, &runs_dir, &bar);
-            outcomes
-                .lock()
-                .expect("no poisoned lock")
-                .push((k, outcome));
-        });
+    std::thread::scope(|scope| {
+        for _ in 0..opts.jobs.max(1) {
+            scope.spawn(|| loop {
+                let Some(k) = queue.lock().expect("no poisoned lock").next() else {
+                    break;
+                };
+                let r = selected[k];
+                let bar = progress.add(ProgressBar::new(1000));
+                bar.set_style(style.clone());
+                bar.set_prefix(r.case.name.clone());
+                let outcome = run_one(r, fidelity, &runs_dir, &bar);
+                outcomes
+                    .lock()
+                    .expect("no poisoned lock")
+                    .push((k, outcome));
+            });
+        }
     });
     let mut outcomes = outcomes.into_inner().expect("no poisoned lock");
+    for (k, original) in same_as.iter().enumerate() {
+        let Some(original) = *original else {
+            continue;
+        };
+        let from = &selected[original].case.name;
+        let outcome = copy_run(&runs_dir, from, &selected[k].case.name, fidelity);
+        outcomes.push((k, outcome));
+    }
     outcomes.sort_by_key(|(k, _)| *k);
 
     let described = described_speeds(&root.join("cases").join("flume").join("gates.csv"));
     let mut csv = String::from(HEADER);
     csv.push('\n');
-    let (mut ran, mut skipped, mut unsupported, mut failed) = (0, 0, 0, 0);
+    let (mut ran, mut skipped, mut copied, mut unsupported, mut failed) = (0, 0, 0, 0, 0);
     for (k, outcome) in &outcomes {
         let name = &selected[*k].case.name;
         let flow = match outcome {
-            Outcome::Done(_) | Outcome::Skipped(_) => {
+            Outcome::Done(_) | Outcome::Skipped(_) | Outcome::Copied(..) => {
                 flow_metrics(&runs_dir.join(name).join(fidelity.name()), &described)
             }
             _ => FlowMetrics::default(),
@@ -279,6 +365,10 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
                 );
             }
             Outcome::Skipped(_) => skipped += 1,
+            Outcome::Copied(_, from) => {
+                copied += 1;
+                println!("  {name:<34} the same case as {from}: copied");
+            }
             Outcome::Unsupported(_) => unsupported += 1,
             Outcome::Failed(why) => {
                 failed += 1;
@@ -289,8 +379,8 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
     let results = root.join("results").join("summary.csv");
     runout_output::write_atomic(&results, csv.as_bytes()).context("writing results/summary.csv")?;
     println!(
-        "ran {ran}, skipped {skipped} (finished earlier), unsupported {unsupported}, failed {failed} \
-         in {:.1} s; rows in {}",
+        "ran {ran}, copied {copied} (repeats of a run), skipped {skipped} (finished earlier), \
+         unsupported {unsupported}, failed {failed} in {:.1} s; rows in {}",
         started.elapsed().as_secs_f64(),
         results.strip_prefix(root).unwrap_or(&results).display()
     );

@@ -563,6 +563,10 @@ pub struct Numerics {
     /// under-relaxation factors
     #[serde(default)]
     pub relaxation: Relaxation,
+    /// end every converged step with exact discrete solids continuity (not MFIX; default
+    /// false: MFIX lets the step tolerance's remainder accumulate where solids compact)
+    #[serde(default)]
+    pub exact_solids_mass: bool,
 }
 
 /// Convection scheme (MFIX `DISCRETIZE`).

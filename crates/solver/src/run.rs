@@ -776,6 +776,7 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
         relax_eps: r.eps_s,
         relax_theta: r.theta,
         periodic_x: false,
+        exact_solids_continuity: case.numerics.exact_solids_mass,
     };
     let fluid = Fluid {
         density: gas.density,
