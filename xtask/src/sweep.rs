@@ -6,7 +6,8 @@
 //! whose folder exists with a summary is skipped, so a killed sweep resumes where it
 //! stopped. `results/summary.csv` gets one row per case of the matrix.
 //!
-//! Runs go longest first (cells × simulated time) to the first free worker. A case that
+//! Runs go longest first to the first free worker (the length: the case's wall time in the
+//! last results/summary.csv at this fidelity, else its cells × simulated time). A case that
 //! repeats another at this fidelity in everything but its name and description (the base
 //! point shared by several one-factor families) is run once; its folder is copied, with the
 //! name changed in `summary.json` and `resolved.ron`, and the summary's wall time is the
@@ -148,6 +149,20 @@ fn run_one(case: &SourcedCase, fidelity: Fidelity, runs: &Path, bar: &ProgressBa
         }
         Err(e) => Outcome::Failed(e.to_string()),
     }
+}
+
+/// Wall time per case of the rows of an earlier `results/summary.csv` at `fidelity` that
+/// have one (empty if there is none).
+fn previous_wall_times(path: &Path, fidelity: Fidelity) -> std::collections::HashMap<String, f64> {
+    let Ok(mut reader) = csv::Reader::from_path(path) else {
+        return Default::default();
+    };
+    reader
+        .records()
+        .filter_map(|r| r.ok())
+        .filter(|r| r.get(1) == Some(fidelity.name()))
+        .filter_map(|r| Some((r.get(0)?.to_string(), r.get(3)?.parse().ok()?)))
+        .collect()
 }
 
 /// For each selected case, the index of an earlier one it repeats at this fidelity (equal
@@ -301,14 +316,28 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
     // Runs the matrix repeats (the base point of several one-factor families: same case
     // apart from its name and description) are computed once and copied.
     let same_as = duplicates(&selected, fidelity);
-    // Longest first (cells × simulated time), each worker taking the next: the sweep's
-    // duration then is not set by a long run started last.
+    // Longest first, each worker taking the next: the sweep's duration then is not set by a
+    // long run started last. The length is the wall time of the case's row in the last
+    // results/summary.csv at this fidelity, else cells × simulated time scaled by the
+    // rows that have both (stiff runs take 10× a normal one on the same grid).
     let mut order: Vec<usize> = (0..selected.len())
         .filter(|&k| same_as[k].is_none())
         .collect();
-    let work = |k: usize| -> f64 {
+    let measured = previous_wall_times(&root.join("results").join("summary.csv"), fidelity);
+    let size = |k: usize| -> f64 {
         let c = selected[k].case.at_fidelity(fidelity);
         c.grid().map_or(0.0, |g| g.cell_count() as f64) * c.run.end_time
+    };
+    // seconds per (cell × simulated second) over the cases that have a measured time
+    let (t_sum, s_sum) = (0..selected.len())
+        .filter_map(|k| measured.get(&selected[k].case.name).map(|t| (t, size(k))))
+        .fold((0.0, 0.0), |(a, b), (t, s)| (a + t, b + s));
+    let rate = if s_sum > 0.0 { t_sum / s_sum } else { 1.0 };
+    let work = |k: usize| -> f64 {
+        measured
+            .get(&selected[k].case.name)
+            .copied()
+            .unwrap_or_else(|| rate * size(k))
     };
     order.sort_by(|&a, &b| work(b).total_cmp(&work(a)));
     let queue = Mutex::new(order.into_iter());
@@ -411,6 +440,24 @@ mod tests {
             .expect("one record")
             .expect("valid CSV")
             .len()
+    }
+
+    #[test]
+    fn previous_wall_times_read_the_rows_of_one_fidelity() {
+        let dir = std::env::temp_dir().join(format!("runout-sweep-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("summary.csv");
+        let text = format!(
+            "{HEADER}\na,coarse,Completed,12.5,1,0,1e-3{empty}\nb,smoke,Completed,2.0,1,0,1e-3{empty}\n\
+             c,coarse,\"failed: x, y\",,,,{empty}\n",
+            empty = ",".repeat(8)
+        );
+        std::fs::write(&path, text).unwrap();
+        let t = previous_wall_times(&path, Fidelity::Coarse);
+        assert_eq!(t.len(), 1);
+        assert_eq!(t["a"], 12.5);
+        assert!(previous_wall_times(&dir.join("none.csv"), Fidelity::Coarse).is_empty());
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]
