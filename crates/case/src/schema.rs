@@ -524,6 +524,15 @@ pub struct Tolerances {
     /// outer iterations per step before it counts as failed (MFIX `MAX_NIT`)
     #[serde(default = "default_max_iterations")]
     pub max_iterations: u32,
+    /// end a step whose momentum and continuity residual sum stops falling (checked every 5
+    /// outer iterations after the 10th) and retry it with a smaller Δt (MFIX
+    /// `DETECT_STALL`, default true; model-spec §4.11)
+    #[serde(default = "default_detect_stall")]
+    pub detect_stall: bool,
+}
+
+fn default_detect_stall() -> bool {
+    true
 }
 
 fn default_tol_resid() -> f64 {
@@ -549,6 +558,7 @@ impl Default for Tolerances {
             theta_residual: default_tol_resid_theta(),
             diverge: default_tol_diverge(),
             max_iterations: default_max_iterations(),
+            detect_stall: default_detect_stall(),
         }
     }
 }

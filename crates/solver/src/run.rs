@@ -777,6 +777,7 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
         relax_theta: r.theta,
         periodic_x: false,
         exact_solids_continuity: case.numerics.exact_solids_mass,
+        detect_stall: case.run.tolerances.detect_stall,
     };
     let fluid = Fluid {
         density: gas.density,
@@ -984,6 +985,15 @@ pub fn run_case(
             },
             other => other,
         })?;
+        tracing::debug!(
+            time,
+            dt = step_dt,
+            iterations = outcome.iterations,
+            converged = outcome.converged,
+            residual = outcome.residual,
+            detail = outcome.detail.as_str(),
+            "step"
+        );
         if !outcome.converged {
             summary.rejected_steps += 1;
             if !dt.failed() {

@@ -118,6 +118,11 @@ pub struct TwoFluidSettings {
     /// cost 43 rejected steps and 57 % more steps; restricted to cells with εs > DIL_EP_S it
     /// no longer conserves (the dilute cells carry part of the remainder).
     pub exact_solids_continuity: bool,
+    /// MFIX's `DETECT_STALL` (default true, model-spec §4.11): at every 5th outer iteration
+    /// after the 10th, a hydrodynamic residual sum (momentum and continuity) that is not
+    /// below its value 5 iterations before ends the step as failed, so it is retried with a
+    /// smaller Δt instead of iterating to `max_iterations`.
+    pub detect_stall: bool,
 }
 
 impl Default for TwoFluidSettings {
@@ -130,6 +135,7 @@ impl Default for TwoFluidSettings {
             relax_theta: 0.5,
             periodic_x: false,
             exact_solids_continuity: false,
+            detect_stall: true,
         }
     }
 }
@@ -1612,8 +1618,8 @@ pub struct TwoFluidStep {
     pub residual: f64,
     /// the residuals of the last iteration
     pub last: TwoFluidResiduals,
-    /// a linear solver failure that ended the step (the step was undone and may be retried
-    /// with a smaller Δt)
+    /// a linear solver failure or a stall that ended the step (the step was undone and may
+    /// be retried with a smaller Δt)
     pub failure: Option<String>,
 }
 
@@ -1641,6 +1647,8 @@ impl TwoFluid {
         self.profile.stress += since(t);
         self.closures_fresh = true;
         let (mut gas0, mut solids0) = (None, None);
+        // the hydrodynamic sum at the last multiple of 5 iterations (MFIX SUM5_RESID)
+        let mut sum5 = f64::INFINITY;
         let mut out = TwoFluidStep {
             iterations: 0,
             converged: false,
@@ -1700,6 +1708,21 @@ impl TwoFluid {
             if !finite {
                 out.residual = f64::INFINITY;
                 break;
+            }
+            // stall detection before the convergence test, as MFIX's check_convergence.f
+            // (model-spec §4.11): the step is then retried with a smaller Δt (§4.12)
+            let nit = it + 1;
+            if self.settings.detect_stall && nit % 5 == 0 {
+                if nit > 10 && sum5 <= out.residual {
+                    out.failure = Some(format!(
+                        "stalled: the momentum and continuity residual sum {:.3e} at outer \
+                         iteration {nit} was not below its value {sum5:.3e} 5 iterations before \
+                         (granular energy residual {:.3e})",
+                        out.residual, r.theta
+                    ));
+                    break;
+                }
+                sum5 = out.residual;
             }
             if it >= 1 && out.residual <= tol && r.theta <= tol_theta {
                 out.converged = true;
