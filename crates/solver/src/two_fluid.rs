@@ -411,6 +411,9 @@ pub struct TwoFluid {
     solver_v: Box<dyn LinearSolver>,
     solver_p: Box<dyn LinearSolver>,
     solver_eps: Box<dyn LinearSolver>,
+    /// MFIX's own ε' solver (BiCGSTAB with line relaxation, `LEQ_IT` 20, model-spec §4.13),
+    /// used where the multigrid-preconditioned solve breaks down
+    solver_eps_fallback: Box<dyn LinearSolver>,
     solver_theta: Box<dyn LinearSolver>,
     pressure_pinned: bool,
     /// the multigrid preconditioners of the P' and ε' solves are built on the first outer
@@ -504,11 +507,15 @@ impl TwoFluid {
             ..MultigridParams::default()
         }));
         let mut solver_eps = build(&LinearSolverKind::volume_fraction_default());
+        let mut solver_eps_fallback = build(&LinearSolverKind::transport_default(1e-4, 20));
         let mut solver_theta = build(&transport);
         solver_u.set_pattern(&pu).map_err(lin("u"))?;
         solver_v.set_pattern(&pv).map_err(lin("v"))?;
         solver_p.set_pattern(&pp).map_err(lin("p'"))?;
         solver_eps.set_pattern(&pc).map_err(lin("eps'"))?;
+        solver_eps_fallback
+            .set_pattern(&pc)
+            .map_err(lin("eps' (fallback)"))?;
         solver_theta.set_pattern(&pc).map_err(lin("theta"))?;
         let solids = solids_specs
             .iter()
@@ -588,6 +595,7 @@ impl TwoFluid {
             solver_v,
             solver_p,
             solver_eps,
+            solver_eps_fallback,
             solver_theta,
             pressure_pinned,
             rebuild_preconditioners: true,
@@ -1318,14 +1326,29 @@ impl TwoFluid {
             total += s.imbalance.iter().map(|x| x.abs()).sum::<f64>() / n;
             s.eps_prime.iter_mut().for_each(|x| *x = 0.0);
             let t = Instant::now();
-            solve_keeping_preconditioner(
+            let solved = solve_keeping_preconditioner(
                 self.solver_eps.as_mut(),
                 &s.a_eps,
                 &mut s.eps_prime,
                 // ε' is rebuilt every iteration: its K_cp terms change too much within a
                 // step (kept, the solves took 17 % longer on family M)
                 true,
-            )
+            );
+            if let Err(LinSolveError::Breakdown { .. }) = solved {
+                // the multigrid-preconditioned BiCGSTAB broke down at its first iteration
+                // (the paper grid of the sensitivity slide, during the fall): solve with
+                // MFIX's own ε' method instead of failing the step
+                tracing::debug!("eps' solve: multigrid breakdown, line-relaxed BiCGSTAB instead");
+                s.eps_prime.iter_mut().for_each(|x| *x = 0.0);
+                solve_keeping_preconditioner(
+                    self.solver_eps_fallback.as_mut(),
+                    &s.a_eps,
+                    &mut s.eps_prime,
+                    true,
+                )
+            } else {
+                solved
+            }
             .map_err(lin("solids volume fraction"))?;
             let solve = since(t);
             self.profile.eps_solve += solve;
