@@ -1,0 +1,109 @@
+//! MFIX's stall detection (`DETECT_STALL`, model-spec §4.11): a step whose momentum and
+//! continuity residual sum stops falling fails at the first 5th outer iteration after the
+//! 10th where the sum is not below its value 5 iterations before, instead of iterating to
+//! the cap, and the fields are restored so that the step can be retried with a smaller Δt.
+
+use runout_closures::{
+    ClosureParams, Drag, FrictionModel, FrictionParams, Gas, Particles, RadialDistribution,
+};
+use runout_mesh::{Axis, Grid, Sides};
+use runout_solver::two_fluid::{SolidsSpec, TwoFluid, TwoFluidSettings};
+use runout_solver::{Fluid, SideBc};
+use runout_walls::RobinFace;
+
+/// A settling suspension in a closed 3 × 20 box (εs = 0.3 in the lower two thirds).
+fn suspension(detect_stall: bool) -> TwoFluid {
+    let (nx, ny) = (3, 20);
+    let grid = Grid::new(
+        Axis::uniform(0.0, 0.03, nx).unwrap(),
+        Axis::uniform(0.0, 0.2, ny).unwrap(),
+    );
+    let wall = SideBc::Wall(RobinFace::dirichlet(0.0));
+    let walls = Sides {
+        west: wall,
+        east: wall,
+        south: wall,
+        north: wall,
+    };
+    let zero_flux = Some(RobinFace::ZERO_GRADIENT);
+    let spec = SolidsSpec {
+        params: ClosureParams {
+            particles: Particles {
+                diameter: 5e-4,
+                density: 2000.0,
+                restitution: 0.9,
+            },
+            gas: Gas {
+                density: 1.2,
+                viscosity: 1.8e-5,
+            },
+            friction: FrictionParams::new(0.65, 0.5, 35.0),
+            radial: RadialDistribution::CarnahanStarling,
+            friction_model: FrictionModel::Princeton,
+            drag: Drag::Gidaspow,
+        },
+        eps_max: 0.65,
+        walls: walls.clone(),
+        theta_walls: Sides {
+            west: zero_flux,
+            east: zero_flux,
+            south: zero_flux,
+            north: zero_flux,
+        },
+        wall_models: Sides {
+            west: None,
+            east: None,
+            south: None,
+            north: None,
+        },
+    };
+    let gas = Fluid {
+        density: 1.2,
+        viscosity: 1.8e-5,
+    };
+    let settings = TwoFluidSettings {
+        detect_stall,
+        ..TwoFluidSettings::default()
+    };
+    let mut tf =
+        TwoFluid::new(grid.clone(), gas, walls, vec![spec], (0.0, -9.81), settings).unwrap();
+    let solids = &mut tf.solids[0];
+    for (k, (e, t)) in solids
+        .eps
+        .iter_mut()
+        .zip(solids.theta.iter_mut())
+        .enumerate()
+    {
+        if grid.y.centres()[k / nx] < 0.13 {
+            *e = 0.3;
+        }
+        *t = 1e-4;
+    }
+    tf.sync_volume_fractions();
+    tf
+}
+
+#[test]
+fn a_step_that_cannot_meet_its_tolerance_stops_as_stalled_and_is_undone() {
+    // tolerances below round-off: the residual sum falls to its floor and then stops falling
+    let (tol, cap) = (1e-300, 500);
+    let mut tf = suspension(true);
+    let eps0 = tf.solids[0].eps.clone();
+    let out = tf.step(1e-3, tol, tol, 1e30, cap).unwrap();
+    assert!(!out.converged);
+    let failure = out.failure.as_deref().unwrap_or("");
+    assert!(failure.starts_with("stalled"), "failure: {failure:?}");
+    assert!(
+        out.iterations >= 15 && out.iterations % 5 == 0 && out.iterations < cap,
+        "stopped at outer iteration {}",
+        out.iterations
+    );
+    assert_eq!(tf.solids[0].eps, eps0, "a failed step restores the fields");
+
+    // without the detection the same step runs to the cap
+    let mut tf = suspension(false);
+    let out = tf.step(1e-3, tol, tol, 1e30, 60).unwrap();
+    assert!(!out.converged);
+    assert_eq!(out.iterations, 60);
+    assert!(out.failure.is_none(), "{:?}", out.failure);
+}
