@@ -636,8 +636,9 @@ fn run_level(
     }
     let grid = resolved.grid()?;
     let cells = (grid.nx(), grid.ny());
-    // gates.csv takes a central difference of the front over four samples, and the front
-    // moves by whole cells: speeds come in steps of Δx/(4 × interval) at the gates
+    // gates.csv takes a central difference of the front over four samples; a whole-cell
+    // front would give speeds in steps of Δx/(4 × interval) at the gates (the interpolated
+    // front of front.csv does not: the value is printed for scale)
     let speed_quantum = resolved.monitors.front.as_ref().and_then(|f| {
         let x = f.gate_origin + f.gates.first()?;
         let k = grid.x.locate(x)?;
@@ -1065,8 +1066,10 @@ fn case_section(
         let _ = writeln!(
             md,
             "Gates at {} m from x = {} m. The gate speeds of `gates.csv` are a central \
-             difference of the front position over four samples {} s apart, and the front moves \
-             by whole cells: a speed is resolved only to Δx/(4 × {} s), the column \"speed step\".",
+             difference of the front position over four samples {} s apart; that front is \
+             interpolated within the floor row (`front.csv`), so the speeds are not quantised. \
+             The column \"speed step\", Δx/(4 × {} s), is the quantisation a whole-cell front \
+             would have, for scale.",
             gates.join(", "),
             f.gate_origin,
             f.interval,
