@@ -524,9 +524,9 @@ pub struct Tolerances {
     /// outer iterations per step before it counts as failed (MFIX `MAX_NIT`)
     #[serde(default = "default_max_iterations")]
     pub max_iterations: u32,
-    /// end a step whose momentum and continuity residual sum stops falling (checked every 5
-    /// outer iterations after the 10th) and retry it with a smaller Δt (MFIX
-    /// `DETECT_STALL`, default true; model-spec §4.11)
+    /// two-fluid cases: end a step whose momentum and continuity residual sum stops falling
+    /// (checked every 5 outer iterations after the 10th) and retry it with a smaller Δt
+    /// (MFIX `DETECT_STALL`, default true; model-spec §4.11; the single-phase core ignores it)
     #[serde(default = "default_detect_stall")]
     pub detect_stall: bool,
 }
