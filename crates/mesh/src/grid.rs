@@ -64,6 +64,18 @@ pub struct Sides<T> {
     pub north: T,
 }
 
+impl<T: Clone> Sides<T> {
+    /// The same value on every side.
+    pub fn all(value: T) -> Self {
+        Sides {
+            west: value.clone(),
+            east: value.clone(),
+            south: value.clone(),
+            north: value,
+        }
+    }
+}
+
 impl<T> Sides<T> {
     /// The value on `side`.
     pub fn get(&self, side: Side) -> &T {

@@ -1335,9 +1335,9 @@ impl TwoFluid {
                 true,
             );
             if let Err(LinSolveError::Breakdown { .. }) = solved {
-                // the multigrid-preconditioned BiCGSTAB broke down at its first iteration
-                // (the paper grid of the sensitivity slide, during the fall): solve with
-                // MFIX's own ε' method instead of failing the step
+                // the multigrid-preconditioned BiCGSTAB broke down (seen at its first
+                // iteration on the paper grid of the sensitivity slide, during the fall):
+                // solve with MFIX's own ε' method (§4.13) instead of failing the step
                 tracing::debug!("eps' solve: multigrid breakdown, line-relaxed BiCGSTAB instead");
                 s.eps_prime.iter_mut().for_each(|x| *x = 0.0);
                 solve_keeping_preconditioner(

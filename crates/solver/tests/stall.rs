@@ -18,14 +18,7 @@ fn suspension(detect_stall: bool) -> TwoFluid {
         Axis::uniform(0.0, 0.03, nx).unwrap(),
         Axis::uniform(0.0, 0.2, ny).unwrap(),
     );
-    let wall = SideBc::Wall(RobinFace::dirichlet(0.0));
-    let walls = Sides {
-        west: wall,
-        east: wall,
-        south: wall,
-        north: wall,
-    };
-    let zero_flux = Some(RobinFace::ZERO_GRADIENT);
+    let walls = Sides::all(SideBc::Wall(RobinFace::dirichlet(0.0)));
     let spec = SolidsSpec {
         params: ClosureParams {
             particles: Particles {
@@ -44,18 +37,8 @@ fn suspension(detect_stall: bool) -> TwoFluid {
         },
         eps_max: 0.65,
         walls: walls.clone(),
-        theta_walls: Sides {
-            west: zero_flux,
-            east: zero_flux,
-            south: zero_flux,
-            north: zero_flux,
-        },
-        wall_models: Sides {
-            west: None,
-            east: None,
-            south: None,
-            north: None,
-        },
+        theta_walls: Sides::all(Some(RobinFace::ZERO_GRADIENT)),
+        wall_models: Sides::all(None),
     };
     let gas = Fluid {
         density: 1.2,
