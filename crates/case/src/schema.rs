@@ -605,6 +605,12 @@ pub struct Relaxation {
     /// granular energy, `UR_FAC(8)`
     #[serde(default = "ur_half")]
     pub theta: f64,
+    /// the solids momentum wall closures of the state-dependent walls (Johnson–Jackson,
+    /// Li–Benyahia, Jenkins) between outer iterations; not in MFIX, which uses each
+    /// iteration's closures as computed (= 1): with 1 the floor's slip and strain can cycle
+    /// with period 2 between outer iterations, a stalled step (docs/performance.md)
+    #[serde(default = "ur_half")]
+    pub wall_closures: f64,
 }
 
 fn ur_pressure() -> f64 {
@@ -622,6 +628,7 @@ impl Default for Relaxation {
             eps_s: ur_half(),
             velocity: ur_half(),
             theta: ur_half(),
+            wall_closures: ur_half(),
         }
     }
 }

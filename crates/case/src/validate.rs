@@ -298,6 +298,7 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
         ("eps_s", r.eps_s),
         ("velocity", r.velocity),
         ("theta", r.theta),
+        ("wall_closures", r.wall_closures),
     ] {
         c.range(
             format!("numerics.relaxation.{name}"),

@@ -775,6 +775,7 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
         relax_pressure: r.pressure,
         relax_eps: r.eps_s,
         relax_theta: r.theta,
+        relax_wall_closures: r.wall_closures,
         periodic_x: false,
         exact_solids_continuity: case.numerics.exact_solids_mass,
         detect_stall: case.run.tolerances.detect_stall,

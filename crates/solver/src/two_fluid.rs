@@ -103,6 +103,13 @@ pub struct TwoFluidSettings {
     pub relax_eps: f64,
     /// θ relaxation (`UR_FAC(8)`)
     pub relax_theta: f64,
+    /// Relaxation of the solids momentum wall closures (the Robin coefficients g, h, c of
+    /// each wall node) of the state-dependent walls between outer iterations: new =
+    /// ω·computed + (1 − ω)·previous. Not in MFIX (ω = 1), where the lagged closures of a
+    /// high-friction wall (Johnson–Jackson φ = 1) made the floor's slip and strain cycle with
+    /// period 2 between outer iterations, so steps stalled (docs/performance.md). Changes the
+    /// path of the outer iterations, not the converged step.
+    pub relax_wall_closures: f64,
     /// A fully developed column: periodic in x with a single column of cells (nx = 1), as
     /// MFIX's `CYCLIC_X` on one cell. Every ∂/∂x vanishes: the x-face fluxes of a cell cancel,
     /// u has one unknown per row (node 0, with the whole cell as its control volume; node nx
@@ -133,6 +140,7 @@ impl Default for TwoFluidSettings {
             relax_pressure: 0.8,
             relax_eps: 0.5,
             relax_theta: 0.5,
+            relax_wall_closures: 0.5,
             periodic_x: false,
             exact_solids_continuity: false,
             detect_stall: true,
@@ -769,6 +777,7 @@ impl TwoFluid {
         let (nx, ny) = (grid.nx(), grid.ny());
         let (dx, dy) = (grid.x.widths(), grid.y.widths());
         let (dxc, dyc) = (grid.x.face_spacing(), grid.y.face_spacing());
+        let wall_relax = self.settings.relax_wall_closures;
         for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
             for side in [Side::West, Side::East, Side::South, Side::North] {
                 let Some(model) = spec.wall_models.get(side) else {
@@ -899,7 +908,7 @@ impl TwoFluid {
                     if side == Side::South {
                         s.floor_h_u[k] = wall.diagnostics.h_u;
                     }
-                    faces[k] = wall.face;
+                    faces[k] = relax_face(wall.face, closure, wall_relax);
                 }
                 for along in 0..n_cells {
                     let c = cell(along);
@@ -2067,6 +2076,19 @@ fn mean_row(a: &mut Stencil5, k: usize, [west, east, south, north]: [bool; 4], o
 
 /// The θ row of a dilute cell k (εs ≤ DIL_EP_S): the plain mean of its neighbour cells with
 /// εs > DIL_EP_S, or `current` if there are none (model-spec §4.8).
+/// Under-relaxed wall closure: ω·`new` + (1 − ω)·`old` in each coefficient
+/// ([`TwoFluidSettings::relax_wall_closures`]).
+fn relax_face(new: RobinFace, old: RobinFace, w: f64) -> RobinFace {
+    if w >= 1.0 {
+        return new;
+    }
+    RobinFace {
+        g: w * new.g + (1.0 - w) * old.g,
+        h: w * new.h + (1.0 - w) * old.h,
+        c: w * new.c + (1.0 - w) * old.c,
+    }
+}
+
 fn dilute_cell_row(a: &mut Stencil5, k: usize, current: f64, eps: &[f64], nx: usize) {
     let n = eps.len();
     let (i, j) = (k % nx, k / nx);

@@ -1,0 +1,75 @@
+//! Under-relaxation of the solids momentum wall closures between outer iterations
+//! (`numerics.relaxation.wall_closures`, not in MFIX; docs/performance.md, session 5).
+//!
+//! With a Johnson–Jackson floor of specularity 1 and the closures used as computed (ω = 1,
+//! MFIX), the floor's slip and strain cycle with period 2 between outer iterations, the
+//! hydrodynamic residuals stop falling and steps are rejected as stalled. The smoke S-JJ-phi
+//! φ = 1 slide to 0.4 s shows it: with ω = 1 steps are rejected, with the default ω = 0.5 none
+//! are, and both runs give the same front and a mean solids velocity within 3 % (their Δt
+//! histories differ, so they differ by the time-discretisation error).
+
+use std::path::Path;
+
+use runout_case::{load, Case, Fidelity, Loaded};
+use runout_output::{RunStatus, RunSummary};
+
+fn case() -> Case {
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../cases/sensitivity/S-JJ-phi.ron");
+    let Loaded::Cases(cases) = load(&file).unwrap() else {
+        panic!("a sweep")
+    };
+    cases
+        .into_iter()
+        .find(|c| c.case.name == "S-JJ-phi_phi=1")
+        .unwrap()
+        .case
+}
+
+/// The run's summary and its last bulk-monitor row (t, solids mass, front x, mean u_s).
+fn run(wall_closures: f64) -> (RunSummary, Vec<f64>) {
+    let mut case = case();
+    case.numerics.relaxation.wall_closures = wall_closures;
+    let out = std::env::temp_dir().join(format!(
+        "runout-wall-relax-{wall_closures}-{}",
+        std::process::id()
+    ));
+    let summary = runout_solver::run_case(&case, Fidelity::Smoke, &out, |_| {}).unwrap();
+    let bulk = std::fs::read_to_string(out.join("bulk.csv")).unwrap();
+    let last: Vec<f64> = bulk
+        .lines()
+        .last()
+        .unwrap()
+        .split(',')
+        .map(|v| v.parse().unwrap())
+        .collect();
+    eprintln!(
+        "ω = {wall_closures}: {:?} at t = {} s, {} steps ({} rejected), front {} m, mean u_s {} m/s",
+        summary.status,
+        summary.simulated_time,
+        summary.steps,
+        summary.rejected_steps,
+        last[2],
+        last[3]
+    );
+    let _ = std::fs::remove_dir_all(&out);
+    (summary, last)
+}
+
+#[test]
+fn relaxed_wall_closures_remove_the_stalls_of_a_specularity_1_floor() {
+    let (mfix, mfix_last) = run(1.0);
+    let (relaxed, relaxed_last) = run(0.5);
+    for s in [&mfix, &relaxed] {
+        assert_eq!(s.status, RunStatus::Completed);
+    }
+    assert!(
+        mfix.rejected_steps >= 5,
+        "ω = 1 rejected {} steps: the period-2 cycle this relaxation is for no longer occurs",
+        mfix.rejected_steps
+    );
+    assert_eq!(relaxed.rejected_steps, 0);
+    assert!(relaxed.outer_iterations < mfix.outer_iterations);
+    assert_eq!(relaxed_last[2], mfix_last[2], "front x");
+    let du = (relaxed_last[3] - mfix_last[3]).abs() / mfix_last[3].abs();
+    assert!(du < 0.03, "mean u_s differs by {du:.3}");
+}
