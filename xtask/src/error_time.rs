@@ -53,6 +53,8 @@ use crate::sweep::matrix;
 
 /// The cases of issue 8's error-against-time study.
 pub const DEFAULT_CASES: &str = "S-JJ-phi_phi=0.1,F-JJ_phi=0.1";
+/// What `--no-run` reports for a level without a finished run.
+const NOT_RUN: &str = "not run (--no-run)";
 /// Run folders, relative to the workspace root.
 const RUNS_DIR: &str = "runs/error-time";
 /// The page, relative to the workspace root.
@@ -187,6 +189,8 @@ pub struct Options {
     pub schemes: Vec<Convection>,
     /// read finished runs of an unchanged case instead of rerunning them
     pub reuse: bool,
+    /// run nothing: reuse finished runs and report the levels without one as not run
+    pub no_run: bool,
     /// stop every run at this time and compare the profiles there (default: the case's end
     /// time and profile time)
     pub end_time: Option<f64>,
@@ -203,7 +207,13 @@ impl Options {
             join(self.schemes.iter().map(scheme_name).collect()),
             self.end_time
                 .map_or(String::new(), |t| format!(" --end-time {t}")),
-            if self.reuse { " --reuse" } else { "" }
+            if self.no_run {
+                " --no-run"
+            } else if self.reuse {
+                " --reuse"
+            } else {
+                ""
+            }
         )
     }
 }
@@ -622,7 +632,7 @@ fn run_level(
     scheme: &Convection,
     level: Level,
     paper_cells: usize,
-    reuse: bool,
+    opts: &Options,
 ) -> Result<Run> {
     let mut resolved = level.case(case);
     resolved.numerics.convection = scheme.clone();
@@ -648,7 +658,7 @@ fn run_level(
     let tag = format!("{level}-{}", scheme_name(scheme));
     let done = folder.join(&tag);
     let partial = folder.join(format!("{tag}.partial"));
-    let previous = if reuse {
+    let previous = if opts.reuse || opts.no_run {
         finished_run(&done, &resolved)
     } else {
         None
@@ -657,6 +667,11 @@ fn run_level(
     let summary = if let Some(s) = previous {
         println!("{} {tag}: reusing {}", case.name, done.display());
         Ok(s)
+    } else if opts.no_run {
+        println!("{} {tag}: no finished run, not run (--no-run)", case.name);
+        Err(format!(
+            "{NOT_RUN}: no finished run of this case at this level"
+        ))
     } else {
         let _ = std::fs::remove_dir_all(&partial);
         println!(
@@ -775,7 +790,7 @@ pub fn error_time(root: &Path, opts: &Options) -> Result<()> {
         for scheme in &opts.schemes {
             let runs = levels
                 .iter()
-                .map(|&level| run_level(root, case, scheme, level, paper_cells, opts.reuse))
+                .map(|&level| run_level(root, case, scheme, level, paper_cells, opts))
                 .collect::<Result<Vec<Run>>>()?;
             let data: Vec<LevelData> = runs.iter().map(|r| r.data.clone()).collect();
             let errors = quantities(case)
@@ -812,7 +827,11 @@ pub fn error_time(root: &Path, opts: &Options) -> Result<()> {
     let failed = ladders
         .iter()
         .flat_map(|l| &l.runs)
-        .filter(|r| r.summary.is_err())
+        .filter(|r| {
+            r.summary
+                .as_ref()
+                .is_err_and(|why| !why.starts_with(NOT_RUN))
+        })
         .count();
     if failed > 0 {
         bail!("{failed} run(s) failed (see {PAGE})");
@@ -969,6 +988,7 @@ fn markdown(
                 }
                 other => format!("**{other:?}** at t = {:.3} s", s.simulated_time),
             },
+            Err(why) if why.starts_with(NOT_RUN) => why.clone(),
             Err(why) => format!("**failed**: {why}"),
         };
         let _ = writeln!(md, "- `{}`: {status}", run.dir);

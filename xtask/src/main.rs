@@ -97,6 +97,10 @@ enum Task {
         /// reuse finished runs of unchanged cases instead of rerunning them
         #[arg(long)]
         reuse: bool,
+        /// run nothing: reuse finished runs and report levels without one as not run (the
+        /// reuse compares the case, not the solver version that ran it)
+        #[arg(long)]
+        no_run: bool,
         /// stop every run at this time [s] and compare the profiles there (default: the
         /// case's end time and profile time)
         #[arg(long)]
@@ -210,6 +214,7 @@ fn main() -> Result<()> {
             cases,
             schemes,
             reuse,
+            no_run,
             end_time,
         } => {
             let list = |s: &str| -> Vec<String> {
@@ -231,6 +236,7 @@ fn main() -> Result<()> {
                     .collect::<Result<_, _>>()
                     .map_err(anyhow::Error::msg)?,
                 reuse,
+                no_run,
                 end_time,
             };
             error_time::error_time(&root(), &opts)

@@ -1741,18 +1741,8 @@ impl TwoFluid {
                 out.residual = f64::INFINITY;
                 break;
             }
-            if it >= 1 && out.residual <= tol && r.theta <= tol_theta {
-                out.converged = true;
-                if self.settings.exact_solids_continuity {
-                    self.conservative_finish(dt);
-                }
-                return Ok(out);
-            }
-            // stall detection (model-spec §4.11): the step is then retried with a smaller Δt
-            // (§4.12). After the convergence test, unlike MFIX's check_convergence.f, which
-            // checks for a stall first and so rejects an iterate that has converged at a
-            // 5th iteration whose hydrodynamic sum did not fall (seen at the paper grid's
-            // first floor contact: θ residual 9.7e-5, sum 1.2e-8; docs/status.md).
+            // stall detection before the convergence test, as MFIX's check_convergence.f
+            // (model-spec §4.11): the step is then retried with a smaller Δt (§4.12)
             let nit = it + 1;
             if self.settings.detect_stall && nit % 5 == 0 {
                 if nit > 10 && sum5 <= out.residual {
@@ -1765,6 +1755,13 @@ impl TwoFluid {
                     break;
                 }
                 sum5 = out.residual;
+            }
+            if it >= 1 && out.residual <= tol && r.theta <= tol_theta {
+                out.converged = true;
+                if self.settings.exact_solids_continuity {
+                    self.conservative_finish(dt);
+                }
+                return Ok(out);
             }
             if it >= 1 && out.residual >= diverge {
                 break;
