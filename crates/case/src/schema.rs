@@ -606,10 +606,11 @@ pub struct Relaxation {
     #[serde(default = "ur_half")]
     pub theta: f64,
     /// the solids momentum wall closures of the state-dependent walls (Johnson–Jackson,
-    /// Li–Benyahia, Jenkins) between outer iterations; not in MFIX, which uses each
-    /// iteration's closures as computed (= 1): with 1 the floor's slip and strain can cycle
-    /// with period 2 between outer iterations, a stalled step (docs/performance.md)
-    #[serde(default = "ur_half")]
+    /// Li–Benyahia, Jenkins) between outer iterations; default 1 = MFIX, which uses each
+    /// iteration's closures as computed. 0.5 removes the period-2 cycles of a specularity-1
+    /// floor (S-JJ-phi φ = 1: 3.1× faster) but doubles the steps of the Jenkins flume
+    /// (docs/performance.md, session 5), so it is a per-case choice
+    #[serde(default = "ur_one")]
     pub wall_closures: f64,
 }
 
@@ -621,6 +622,10 @@ fn ur_half() -> f64 {
     0.5
 }
 
+fn ur_one() -> f64 {
+    1.0
+}
+
 impl Default for Relaxation {
     fn default() -> Self {
         Relaxation {
@@ -628,7 +633,7 @@ impl Default for Relaxation {
             eps_s: ur_half(),
             velocity: ur_half(),
             theta: ur_half(),
-            wall_closures: ur_half(),
+            wall_closures: ur_one(),
         }
     }
 }

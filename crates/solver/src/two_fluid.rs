@@ -105,10 +105,12 @@ pub struct TwoFluidSettings {
     pub relax_theta: f64,
     /// Relaxation of the solids momentum wall closures (the Robin coefficients g, h, c of
     /// each wall node) of the state-dependent walls between outer iterations: new =
-    /// ω·computed + (1 − ω)·previous. Not in MFIX (ω = 1), where the lagged closures of a
-    /// high-friction wall (Johnson–Jackson φ = 1) made the floor's slip and strain cycle with
-    /// period 2 between outer iterations, so steps stalled (docs/performance.md). Changes the
-    /// path of the outer iterations, not the converged step.
+    /// ω·computed + (1 − ω)·previous. Default 1, MFIX's iteration. With ω = 1 the lagged
+    /// closures of a high-friction wall (Johnson–Jackson φ = 1) make the floor's slip and
+    /// strain cycle with period 2 between outer iterations, so steps stall; ω = 0.5 removes
+    /// that but slows other floors (the Jenkins flume takes twice the steps;
+    /// docs/performance.md). Changes the path of the outer iterations, not the converged
+    /// step.
     pub relax_wall_closures: f64,
     /// A fully developed column: periodic in x with a single column of cells (nx = 1), as
     /// MFIX's `CYCLIC_X` on one cell. Every ∂/∂x vanishes: the x-face fluxes of a cell cancel,
@@ -140,7 +142,7 @@ impl Default for TwoFluidSettings {
             relax_pressure: 0.8,
             relax_eps: 0.5,
             relax_theta: 0.5,
-            relax_wall_closures: 0.5,
+            relax_wall_closures: 1.0,
             periodic_x: false,
             exact_solids_continuity: false,
             detect_stall: true,
