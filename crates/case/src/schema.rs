@@ -608,7 +608,7 @@ pub struct Relaxation {
     /// the solids momentum wall closures of the state-dependent walls (Johnson–Jackson,
     /// Li–Benyahia, Jenkins) between outer iterations; default 1 = MFIX, which uses each
     /// iteration's closures as computed. 0.5 removes the period-2 cycles of a specularity-1
-    /// floor (S-JJ-phi φ = 1: 3.1× faster) but doubles the steps of the Jenkins flume
+    /// floor (S-JJ-phi φ = 1: 3.3× fewer steps) but doubles the steps of the Jenkins flume
     /// (docs/performance.md, session 5), so it is a per-case choice
     #[serde(default = "ur_one")]
     pub wall_closures: f64,

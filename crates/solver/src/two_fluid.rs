@@ -2073,8 +2073,6 @@ fn mean_row(a: &mut Stencil5, k: usize, [west, east, south, north]: [bool; 4], o
     a.b[k] = own.unwrap_or(0.0);
 }
 
-/// The θ row of a dilute cell k (εs ≤ DIL_EP_S): the plain mean of its neighbour cells with
-/// εs > DIL_EP_S, or `current` if there are none (model-spec §4.8).
 /// Under-relaxed wall closure: ω·`new` + (1 − ω)·`old` in each coefficient
 /// ([`TwoFluidSettings::relax_wall_closures`]).
 fn relax_face(new: RobinFace, old: RobinFace, w: f64) -> RobinFace {
@@ -2088,6 +2086,8 @@ fn relax_face(new: RobinFace, old: RobinFace, w: f64) -> RobinFace {
     }
 }
 
+/// The θ row of a dilute cell k (εs ≤ DIL_EP_S): the plain mean of its neighbour cells with
+/// εs > DIL_EP_S, or `current` if there are none (model-spec §4.8).
 fn dilute_cell_row(a: &mut Stencil5, k: usize, current: f64, eps: &[f64], nx: usize) {
     let n = eps.len();
     let (i, j) = (k % nx, k / nx);
