@@ -10,6 +10,8 @@ use std::path::Path;
 use runout_case::{load, Fidelity, Loaded};
 use runout_output::RunStatus;
 
+mod common;
+
 /// The values of the DataArray `name` in a .vtr file written by runout-output.
 fn vtr_array(xml: &str, name: &str) -> Vec<f64> {
     runout_output::read_vtr_array(xml, name).expect("array present")
@@ -58,13 +60,6 @@ fn s_ps_d_smoke_runs_conserves_mass_and_slides() {
     let max_eps = eps.iter().cloned().fold(0.0, f64::max);
     assert!(max_eps <= 0.65 + 0.02, "max eps {max_eps}");
     // εs-weighted mean solids velocity downslope at the end (bulk monitor)
-    let bulk = std::fs::read_to_string(out.join("bulk.csv")).unwrap();
-    let last_row: Vec<f64> = bulk
-        .lines()
-        .last()
-        .unwrap()
-        .split(',')
-        .map(|v| v.parse().unwrap())
-        .collect();
+    let last_row = common::last_bulk_row(&out);
     assert!(last_row[3] > 0.1, "mean u_s {}", last_row[3]);
 }

@@ -12,13 +12,14 @@
 //! cells beyond εs,max the selective relaxation of §4.7 leaves an imbalance of one sign,
 //! i.e. a mass error of the order of the step tolerance.
 
-use runout_closures::{
-    ClosureParams, Drag, FrictionModel, FrictionParams, Gas, Particles, RadialDistribution,
-};
+use runout_closures::FrictionModel;
 use runout_mesh::{Axis, Grid, Sides};
 use runout_solver::two_fluid::{SolidsSpec, TwoFluid, TwoFluidSettings};
 use runout_solver::{Fluid, SideBc};
 use runout_walls::RobinFace;
+
+mod common;
+use common::paper_particles_in_air;
 
 const EPS_MAX: f64 = 0.65;
 
@@ -35,21 +36,7 @@ fn bed(steps: usize, dt: f64, verbose: bool) -> (TwoFluid, f64) {
     let no_slip = SideBc::Wall(RobinFace::dirichlet(0.0));
     let free_slip = SideBc::Wall(RobinFace::ZERO_GRADIENT);
     let zero_flux = Some(RobinFace::ZERO_GRADIENT);
-    let params = ClosureParams {
-        particles: Particles {
-            diameter: 5e-4,
-            density: 2000.0,
-            restitution: 0.9,
-        },
-        gas: Gas {
-            density: 1.2,
-            viscosity: 1.8e-5,
-        },
-        friction: FrictionParams::new(EPS_MAX, 0.5, 35.0),
-        radial: RadialDistribution::CarnahanStarling,
-        friction_model: FrictionModel::Schaeffer,
-        drag: Drag::Gidaspow,
-    };
+    let params = paper_particles_in_air(FrictionModel::Schaeffer, EPS_MAX);
     let spec = SolidsSpec {
         params,
         eps_max: EPS_MAX,

@@ -5,13 +5,14 @@
 //! carries only its own column, a few Pa here; issue 7 words this check as a gas pressure
 //! drop, which holds for a bed the gas flows through, not for this closed box).
 
-use runout_closures::{
-    ClosureParams, Drag, FrictionModel, FrictionParams, Gas, Particles, RadialDistribution,
-};
+use runout_closures::FrictionModel;
 use runout_mesh::{Axis, Grid, Sides};
 use runout_solver::two_fluid::{SolidsSpec, TwoFluid, TwoFluidSettings};
 use runout_solver::{Fluid, SideBc};
 use runout_walls::RobinFace;
+
+mod common;
+use common::paper_particles_in_air;
 
 fn column(steps: usize, dt: f64, verbose: bool) -> (TwoFluid, f64) {
     let (nx, ny, height) = (3, 30, 0.3);
@@ -26,21 +27,7 @@ fn column(steps: usize, dt: f64, verbose: bool) -> (TwoFluid, f64) {
     let no_slip = SideBc::Wall(RobinFace::dirichlet(0.0));
     let free_slip = SideBc::Wall(RobinFace::ZERO_GRADIENT);
     let zero_flux = Some(RobinFace::ZERO_GRADIENT);
-    let params = ClosureParams {
-        particles: Particles {
-            diameter: 5e-4,
-            density: 2000.0,
-            restitution: 0.9,
-        },
-        gas: Gas {
-            density: 1.2,
-            viscosity: 1.8e-5,
-        },
-        friction: FrictionParams::new(0.65, 0.5, 35.0),
-        radial: RadialDistribution::CarnahanStarling,
-        friction_model: FrictionModel::Princeton,
-        drag: Drag::Gidaspow,
-    };
+    let params = paper_particles_in_air(FrictionModel::Princeton, 0.65);
     let spec = SolidsSpec {
         params,
         eps_max: 0.65,

@@ -3,13 +3,14 @@
 //! 10th where the sum is not below its value 5 iterations before, instead of iterating to
 //! the cap, and the fields are restored so that the step can be retried with a smaller Δt.
 
-use runout_closures::{
-    ClosureParams, Drag, FrictionModel, FrictionParams, Gas, Particles, RadialDistribution,
-};
+use runout_closures::FrictionModel;
 use runout_mesh::{Axis, Grid, Sides};
 use runout_solver::two_fluid::{SolidsSpec, TwoFluid, TwoFluidSettings};
 use runout_solver::{Fluid, SideBc};
 use runout_walls::RobinFace;
+
+mod common;
+use common::paper_particles_in_air;
 
 /// A settling suspension in a closed 3 × 20 box (εs = 0.3 in the lower two thirds).
 fn suspension(detect_stall: bool) -> TwoFluid {
@@ -20,21 +21,7 @@ fn suspension(detect_stall: bool) -> TwoFluid {
     );
     let walls = Sides::all(SideBc::Wall(RobinFace::dirichlet(0.0)));
     let spec = SolidsSpec {
-        params: ClosureParams {
-            particles: Particles {
-                diameter: 5e-4,
-                density: 2000.0,
-                restitution: 0.9,
-            },
-            gas: Gas {
-                density: 1.2,
-                viscosity: 1.8e-5,
-            },
-            friction: FrictionParams::new(0.65, 0.5, 35.0),
-            radial: RadialDistribution::CarnahanStarling,
-            friction_model: FrictionModel::Princeton,
-            drag: Drag::Gidaspow,
-        },
+        params: paper_particles_in_air(FrictionModel::Princeton, 0.65),
         eps_max: 0.65,
         walls: walls.clone(),
         theta_walls: Sides::all(Some(RobinFace::ZERO_GRADIENT)),

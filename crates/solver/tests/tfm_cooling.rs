@@ -9,34 +9,20 @@
 //! θ(t) = [(1/√θ0 + a/b) e^{bt/2} − a/b]⁻², which is Haff's law θ = [1/√θ0 + a t/2]⁻² when
 //! F_gs = 0.
 
-use runout_closures::{
-    kinetic, CellState, ClosureParams, Drag, FrictionModel, FrictionParams, Gas, Particles,
-    RadialDistribution,
-};
+use runout_closures::{kinetic, CellState, ClosureParams, FrictionModel};
 use runout_mesh::{Axis, Grid, Segment, Sides};
 use runout_solver::two_fluid::{CellClosures, SolidsSpec, TwoFluid, TwoFluidSettings};
 use runout_solver::{Fluid, SideBc};
 use runout_walls::RobinFace;
 
+mod common;
+use common::paper_particles_in_air;
+
 const EPS_S: f64 = 0.3;
 const THETA0: f64 = 0.5;
 
 fn params() -> ClosureParams {
-    ClosureParams {
-        particles: Particles {
-            diameter: 5e-4,
-            density: 2000.0,
-            restitution: 0.9,
-        },
-        gas: Gas {
-            density: 1.2,
-            viscosity: 1.8e-5,
-        },
-        friction: FrictionParams::new(0.65, 0.5, 35.0),
-        radial: RadialDistribution::CarnahanStarling,
-        friction_model: FrictionModel::Princeton,
-        drag: Drag::Gidaspow,
-    }
+    paper_particles_in_air(FrictionModel::Princeton, 0.65)
 }
 
 /// The exact θ(t) of the cooling law above.

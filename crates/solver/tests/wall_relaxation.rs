@@ -13,6 +13,8 @@ use std::path::Path;
 use runout_case::{load, Case, Fidelity, Loaded};
 use runout_output::{RunStatus, RunSummary};
 
+mod common;
+
 fn case() -> Case {
     let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../cases/sensitivity/S-JJ-phi.ron");
     let Loaded::Cases(cases) = load(&file).unwrap() else {
@@ -34,14 +36,7 @@ fn run(wall_closures: f64) -> (RunSummary, Vec<f64>) {
         std::process::id()
     ));
     let summary = runout_solver::run_case(&case, Fidelity::Smoke, &out, |_| {}).unwrap();
-    let bulk = std::fs::read_to_string(out.join("bulk.csv")).unwrap();
-    let last: Vec<f64> = bulk
-        .lines()
-        .last()
-        .unwrap()
-        .split(',')
-        .map(|v| v.parse().unwrap())
-        .collect();
+    let last = common::last_bulk_row(&out);
     eprintln!(
         "ω = {wall_closures}: {:?} at t = {} s, {} steps ({} rejected), front {} m, mean u_s {} m/s",
         summary.status,

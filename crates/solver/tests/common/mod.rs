@@ -1,0 +1,41 @@
+//! Shared set-up of the solver's integration tests (each test file that needs it says
+//! `mod common;`, so not every item is used by every file).
+#![allow(dead_code)]
+
+use std::path::Path;
+
+use runout_closures::{
+    ClosureParams, Drag, FrictionModel, FrictionParams, Gas, Particles, RadialDistribution,
+};
+
+/// The paper's particles in air (paper Table 3: d = 0.5 mm, ρs = 2000 kg/m³, e = 0.9;
+/// ρg = 1.2 kg/m³, μg = 1.8e-5 Pa s; δ_int = 35°, εs,min = 0.5), Carnahan–Starling and
+/// Gidaspow drag, with the given friction model and packing limit εs,max.
+pub fn paper_particles_in_air(friction_model: FrictionModel, eps_max: f64) -> ClosureParams {
+    ClosureParams {
+        particles: Particles {
+            diameter: 5e-4,
+            density: 2000.0,
+            restitution: 0.9,
+        },
+        gas: Gas {
+            density: 1.2,
+            viscosity: 1.8e-5,
+        },
+        friction: FrictionParams::new(eps_max, 0.5, 35.0),
+        radial: RadialDistribution::CarnahanStarling,
+        friction_model,
+        drag: Drag::Gidaspow,
+    }
+}
+
+/// The last row of a run's `bulk.csv`: t, solids mass, front x, mean u_s.
+pub fn last_bulk_row(run_dir: &Path) -> Vec<f64> {
+    let bulk = std::fs::read_to_string(run_dir.join("bulk.csv")).unwrap();
+    bulk.lines()
+        .last()
+        .unwrap()
+        .split(',')
+        .map(|v| v.parse().unwrap())
+        .collect()
+}
