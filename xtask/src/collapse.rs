@@ -21,6 +21,8 @@ use runout_case::{load, Case, Fidelity, Gravity, Loaded};
 use runout_output::{RunStatus, RunSummary};
 use runout_solver::run_case;
 
+use crate::sweep::finished_run;
+
 /// The four columns, smallest aspect ratio first.
 const CASE_FILES: [&str; 4] = [
     "cases/collapse/C-a0.5.ron",
@@ -335,15 +337,6 @@ impl Outcome {
     fn completed(&self) -> bool {
         self.summary.status == RunStatus::Completed
     }
-}
-
-/// The finished run in `dir` if it ran exactly `resolved` (the case at its fidelity).
-fn finished_run(dir: &Path, resolved: &Case) -> Option<RunSummary> {
-    let text = ron::ser::to_string_pretty(resolved, ron::ser::PrettyConfig::default()).ok()?;
-    if std::fs::read_to_string(dir.join("resolved.ron")).ok()? != text {
-        return None;
-    }
-    serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).ok()?).ok()
 }
 
 /// Runs `case` at `fidelity` into runs/<case>/<fidelity>/ (written as `.partial`, renamed

@@ -19,7 +19,13 @@
 //!   threshold); L1 = Σ w |q − q_ref| / Σ w with w the reference cell heights, and the
 //!   largest |q − q_ref|, both divided by the range (max − min) of q_ref over the band;
 //! - **gate speeds** (front monitor): RMS and largest |v − v_ref| in m/s over the gates every
-//!   run of the ladder reached.
+//!   run of the ladder reached;
+//! - **front position and mean solids speed against time** (bulk monitor, `bulk.csv`): every
+//!   run's history is interpolated linearly onto the reference run's sample times; RMS and
+//!   largest difference in m and m/s over the times every run covers (for the front, the
+//!   times at which every run has one). Unlike the station profile these exist at every level
+//!   whether or not the front reaches the station; the bulk front is whole-cell (the east face
+//!   of the last floor cell with εs ≥ the bulk threshold), so it moves in steps of Δx.
 //!
 //! The reference is the finest level with the quantity. With three levels or more the three
 //! finest also give the observed order p, from the norms of the differences of successive
@@ -49,7 +55,7 @@ use runout_solver::run_case;
 use crate::metrics::FLOW_THRESHOLD;
 use crate::report::data::{Profile, Table};
 use crate::stability::today;
-use crate::sweep::matrix;
+use crate::sweep::{finished_run, matrix};
 
 /// The cases of issue 8's error-against-time study.
 pub const DEFAULT_CASES: &str = "S-JJ-phi_phi=0.1,F-JJ_phi=0.1";
@@ -243,15 +249,32 @@ pub enum Quantity {
     Theta,
     /// front speed at the gates
     GateSpeed,
+    /// whole-cell front position against time (bulk monitor)
+    FrontPosition,
+    /// εs-weighted mean solids speed against time (bulk monitor)
+    MeanSpeed,
+}
+
+/// Where a quantity comes from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Source {
+    /// the station profile
+    Profile,
+    /// gates.csv
+    Gates,
+    /// bulk.csv
+    History,
 }
 
 impl Quantity {
     /// Every quantity.
-    pub const ALL: [Quantity; 4] = [
+    pub const ALL: [Quantity; 6] = [
         Quantity::EpsS,
         Quantity::UsS,
         Quantity::Theta,
         Quantity::GateSpeed,
+        Quantity::FrontPosition,
+        Quantity::MeanSpeed,
     ];
 
     /// Name in files and the CSV.
@@ -261,6 +284,8 @@ impl Quantity {
             Quantity::UsS => "u_s",
             Quantity::Theta => "theta",
             Quantity::GateSpeed => "gate_speed",
+            Quantity::FrontPosition => "front_x",
+            Quantity::MeanSpeed => "mean_u_s",
         }
     }
 
@@ -271,19 +296,39 @@ impl Quantity {
             Quantity::UsS => "u_s profile L1/range",
             Quantity::Theta => "θ profile L1/range",
             Quantity::GateSpeed => "gate speeds RMS [m/s]",
+            Quantity::FrontPosition => "front x(t) RMS [m]",
+            Quantity::MeanSpeed => "mean u_s(t) RMS [m/s]",
         }
     }
 
     /// The primary norm's name in the CSV.
     fn norm(self) -> &'static str {
         match self {
-            Quantity::GateSpeed => "rms_m_per_s",
+            Quantity::GateSpeed | Quantity::MeanSpeed => "rms_m_per_s",
+            Quantity::FrontPosition => "rms_m",
             _ => "l1_over_range",
         }
     }
 
+    fn source(self) -> Source {
+        match self {
+            Quantity::EpsS | Quantity::UsS | Quantity::Theta => Source::Profile,
+            Quantity::GateSpeed => Source::Gates,
+            Quantity::FrontPosition | Quantity::MeanSpeed => Source::History,
+        }
+    }
+
     fn is_profile(self) -> bool {
-        self != Quantity::GateSpeed
+        self.source() == Source::Profile
+    }
+
+    /// The values of a history quantity (front positions: NaN where the run has no front).
+    fn of_history(self, h: &History) -> &[f64] {
+        match self {
+            Quantity::FrontPosition => &h.front_x,
+            Quantity::MeanSpeed => &h.mean_u_s,
+            _ => unreachable!("{self:?} is not a history"),
+        }
     }
 
     fn of_profile(self, p: &Profile) -> &[f64] {
@@ -291,7 +336,7 @@ impl Quantity {
             Quantity::EpsS => &p.eps_s,
             Quantity::UsS => &p.u_s,
             Quantity::Theta => &p.theta,
-            Quantity::GateSpeed => unreachable!("gate speeds are not a profile"),
+            _ => unreachable!("{self:?} is not a profile"),
         }
     }
 }
@@ -305,6 +350,19 @@ pub struct LevelData {
     pub profile: Option<Profile>,
     /// front speed per gate number, or none
     pub gates: Option<Vec<(usize, f64)>>,
+    /// the bulk monitor's history, or none
+    pub history: Option<History>,
+}
+
+/// A run's bulk monitor (`bulk.csv`), times increasing.
+#[derive(Clone, Debug, Default)]
+pub struct History {
+    /// sample times [s]
+    pub t: Vec<f64>,
+    /// whole-cell front position [m]; NaN before the run has a front
+    pub front_x: Vec<f64>,
+    /// εs-weighted mean solids velocity along x [m/s]
+    pub mean_u_s: Vec<f64>,
 }
 
 /// The observed order of a quantity from the three finest levels.
@@ -495,15 +553,68 @@ fn gate_samples(ladder: &[LevelData]) -> Samples {
     }
 }
 
+/// Samples of a history on the reference run's times that every level covers (for the front,
+/// where every level has one). Each level is interpolated linearly in time; a front sample
+/// beside a time without a front is left out rather than interpolated towards NaN.
+fn history_samples(quantity: Quantity, ladder: &[LevelData], reference: usize) -> Samples {
+    let r = ladder[reference]
+        .history
+        .as_ref()
+        .expect("the reference has a history");
+    let with: Vec<&History> = ladder.iter().filter_map(|l| l.history.as_ref()).collect();
+    let start = with
+        .iter()
+        .map(|h| h.t[0])
+        .fold(f64::NEG_INFINITY, f64::max);
+    let end = with
+        .iter()
+        .map(|h| h.t[h.t.len() - 1])
+        .fold(f64::INFINITY, f64::min);
+    let at = |h: &History, t: f64| -> f64 {
+        let v = quantity.of_history(h);
+        let k =
+            h.t.partition_point(|&s| s <= t)
+                .clamp(1, h.t.len().max(2) - 1);
+        if h.t.len() == 1 {
+            return v[0];
+        }
+        let (t0, t1) = (h.t[k - 1], h.t[k]);
+        let w = if t1 > t0 { (t - t0) / (t1 - t0) } else { 0.0 };
+        // on a sample time, its value alone (its neighbour may be NaN)
+        if w <= 0.0 {
+            v[k - 1]
+        } else if w >= 1.0 {
+            v[k]
+        } else {
+            (1.0 - w) * v[k - 1] + w * v[k]
+        }
+    };
+    let times: Vec<f64> =
+        r.t.iter()
+            .copied()
+            .filter(|&t| (start..=end).contains(&t))
+            .filter(|&t| with.iter().all(|h| at(h, t).is_finite()))
+            .collect();
+    Samples {
+        weights: vec![1.0; times.len()],
+        values: ladder
+            .iter()
+            .map(|l| {
+                l.history
+                    .as_ref()
+                    .map(|h| times.iter().map(|&t| at(h, t)).collect())
+            })
+            .collect(),
+    }
+}
+
 /// The errors of `quantity` over `ladder` (levels in any order).
 pub fn quantity_errors(quantity: Quantity, ladder: &[LevelData]) -> QuantityErrors {
     let n = ladder.len();
-    let has = |l: &LevelData| {
-        if quantity.is_profile() {
-            l.profile.is_some()
-        } else {
-            l.gates.is_some()
-        }
+    let has = |l: &LevelData| match quantity.source() {
+        Source::Profile => l.profile.is_some(),
+        Source::Gates => l.gates.is_some(),
+        Source::History => l.history.as_ref().is_some_and(|h| !h.t.is_empty()),
     };
     // levels with data, finest first
     let mut with: Vec<usize> = (0..n).filter(|&k| has(&ladder[k])).collect();
@@ -519,17 +630,17 @@ pub fn quantity_errors(quantity: Quantity, ladder: &[LevelData]) -> QuantityErro
         return out;
     };
     out.reference = Some(reference);
-    let samples = if quantity.is_profile() {
-        profile_samples(quantity, ladder, reference)
-    } else {
-        gate_samples(ladder)
+    let samples = match quantity.source() {
+        Source::Profile => profile_samples(quantity, ladder, reference),
+        Source::Gates => gate_samples(ladder),
+        Source::History => history_samples(quantity, ladder, reference),
     };
     out.samples = samples.weights.len();
     if samples.weights.is_empty() {
-        out.note = Some(if quantity.is_profile() {
-            format!("no run has εs ≥ {FLOW_THRESHOLD} at the station")
-        } else {
-            "no gate reached by every run".into()
+        out.note = Some(match quantity.source() {
+            Source::Profile => format!("no run has εs ≥ {FLOW_THRESHOLD} at the station"),
+            Source::Gates => "no gate reached by every run".into(),
+            Source::History => "no sample time common to every run".into(),
         });
         return out;
     }
@@ -586,15 +697,6 @@ struct Run {
     dir: String,
 }
 
-/// The finished run in `dir` if it ran exactly `resolved`.
-fn finished_run(dir: &Path, resolved: &Case) -> Option<RunSummary> {
-    let text = ron::ser::to_string_pretty(resolved, ron::ser::PrettyConfig::default()).ok()?;
-    if std::fs::read_to_string(dir.join("resolved.ron")).ok()? != text {
-        return None;
-    }
-    serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).ok()?).ok()
-}
-
 /// The station profile of a finished run: the case's first profile monitor at its last time.
 fn read_profile(dir: &Path, case: &Case) -> Option<Profile> {
     let monitor = case.monitors.profiles.first()?;
@@ -623,6 +725,26 @@ fn read_gates(dir: &Path, case: &Case) -> Option<Vec<(usize, f64)>> {
         .map(|(g, v)| (g as usize, v))
         .collect();
     (!speeds.is_empty()).then_some(speeds)
+}
+
+/// The bulk monitor history of a finished run, front positions at the domain's west end (no
+/// floor cell reaches the threshold yet) replaced by NaN.
+fn read_history(dir: &Path, case: &Case, x_start: f64) -> Option<History> {
+    case.monitors.bulk.as_ref()?;
+    let table = Table::read(&dir.join("bulk.csv")).ok()?;
+    let t = table.column("t").ok()?;
+    let front_x = table
+        .column("front_x")
+        .ok()?
+        .into_iter()
+        .map(|x| if x > x_start { x } else { f64::NAN })
+        .collect();
+    let mean_u_s = table.column("mean_u_s").ok()?;
+    (!t.is_empty()).then_some(History {
+        t,
+        front_x,
+        mean_u_s,
+    })
 }
 
 /// Runs (or with `reuse` reads) one level of one case with one scheme.
@@ -711,6 +833,10 @@ fn run_level(
         h: (paper_cells as f64 / (cells.0 * cells.1) as f64).sqrt(),
         profile: summary.as_ref().ok().and(read_profile(&done, &resolved)),
         gates: summary.as_ref().ok().and(read_gates(&done, &resolved)),
+        history: summary
+            .as_ref()
+            .ok()
+            .and(read_history(&done, &resolved, grid.x.start())),
     };
     Ok(Run {
         case: case.name.clone(),
@@ -736,12 +862,10 @@ struct Ladder {
 fn quantities(case: &Case) -> Vec<Quantity> {
     Quantity::ALL
         .into_iter()
-        .filter(|q| {
-            if q.is_profile() {
-                !case.monitors.profiles.is_empty()
-            } else {
-                case.monitors.front.is_some()
-            }
+        .filter(|q| match q.source() {
+            Source::Profile => !case.monitors.profiles.is_empty(),
+            Source::Gates => case.monitors.front.is_some(),
+            Source::History => case.monitors.bulk.is_some(),
         })
         .collect()
 }
@@ -1048,6 +1172,13 @@ fn definitions_section(md: &mut String) {
          range).\n\
          - **Gate speeds** (front monitor): RMS of v − v_ref over the gates every run of the \
          ladder reached [m/s] (the CSV also has the largest difference).\n\
+         - **Front position and mean solids speed against time** (bulk monitor, `bulk.csv`, \
+         every 0.01 s or the case's bulk interval): each run's history is interpolated \
+         linearly onto the reference run's sample times; RMS of the difference over the times \
+         every run covers (for the front: where every run has one) [m, m/s]. They exist at \
+         every level, also where the front never reaches the station. The bulk front is \
+         whole-cell (the east face of the last floor cell with εs ≥ the bulk threshold), so it \
+         moves in steps of one Δx of its grid.\n\
          - **Reference**: the finest level run with the quantity (named below each table).\n\
          - **Richardson**: with three levels or more, the three finest give the observed order \
          p (D₃₂/D₂₁ = (h₃ᵖ − h₂ᵖ)/(h₂ᵖ − h₁ᵖ), D the same norm of the difference of successive \
@@ -1207,10 +1338,10 @@ fn order_line(ladder: &Ladder, q: Quantity, e: &QuantityErrors) -> String {
     let mut line = format!("- {}, {}: ", scheme_name(&ladder.scheme), q.name());
     match e.reference {
         Some(r) => {
-            let what = if q.is_profile() {
-                "heights in the flow band"
-            } else {
-                "gates"
+            let what = match q.source() {
+                Source::Profile => "heights in the flow band",
+                Source::Gates => "gates",
+                Source::History => "sample times",
             };
             let _ = write!(line, "reference `{}` ({} {what})", level(r), e.samples);
         }
@@ -1404,6 +1535,29 @@ mod tests {
                     .map(|g| (g, 2.0 + 0.5 * g as f64 + c * h.powf(p) * g as f64))
                     .collect(),
             ),
+            history: Some(synthetic_history(h, c, p, 0.0)),
+        }
+    }
+
+    /// A bulk history sampled every 0.01 s from `offset` (levels sample at different times):
+    /// no front before t = 0.1 s, then front x = 5 + 2t + C hᵖ t; mean speed 3t + C hᵖ (1 + t).
+    /// Both are linear in t, so interpolation onto the reference times is exact.
+    fn synthetic_history(h: f64, c: f64, p: f64, offset: f64) -> History {
+        let t: Vec<f64> = (0..=100).map(|k| offset + 0.01 * k as f64).collect();
+        let e = c * h.powf(p);
+        History {
+            front_x: t
+                .iter()
+                .map(|&t| {
+                    if t < 0.1 {
+                        f64::NAN
+                    } else {
+                        5.0 + 2.0 * t + e * t
+                    }
+                })
+                .collect(),
+            mean_u_s: t.iter().map(|&t| 3.0 * t + e * (1.0 + t)).collect(),
+            t,
         }
     }
 
@@ -1464,6 +1618,55 @@ mod tests {
         assert!((got / expected - 1.0).abs() < 1e-9, "{got} vs {expected}");
         assert!((e.order.unwrap().p.unwrap() - p).abs() < 1e-9);
         assert!((e.richardson[1].unwrap() / (c * 0.5f64.powf(p) * rms_g) - 1.0).abs() < 1e-7);
+    }
+
+    #[test]
+    fn history_errors_use_the_common_times_with_a_front() {
+        let (c, p) = (0.01, 1.0);
+        let mut ladder = vec![
+            synthetic(4.0, 23, c, p),
+            synthetic(2.0, 45, c, p),
+            synthetic(1.0, 90, c, p),
+        ];
+        // the coarsest run samples 3 ms later and stops 0.2 s earlier
+        let mut late = synthetic_history(4.0, c, p, 0.003);
+        for v in [&mut late.t, &mut late.front_x, &mut late.mean_u_s] {
+            v.truncate(81);
+        }
+        ladder[0].history = Some(late);
+        // reference times 0.00 … 1.00: in [0.003, 0.803] and with a front in every run
+        // (the late run's first front sample is at 0.103, so 0.10 interpolates towards NaN)
+        // → 0.11 … 0.80 for the front; the mean speed exists from the start: 0.01 … 0.80
+        let front_times: Vec<f64> = (11..=80).map(|k| 0.01 * k as f64).collect();
+        let speed_times: Vec<f64> = (1..=80).map(|k| 0.01 * k as f64).collect();
+        let rms = |times: &[f64], g: &dyn Fn(f64) -> f64| {
+            (times.iter().map(|&t| g(t) * g(t)).sum::<f64>() / times.len() as f64).sqrt()
+        };
+        let front = quantity_errors(Quantity::FrontPosition, &ladder);
+        assert_eq!(front.reference, Some(2));
+        assert_eq!(front.samples, front_times.len());
+        let speed = quantity_errors(Quantity::MeanSpeed, &ladder);
+        assert_eq!(speed.samples, speed_times.len());
+        for (k, h) in [(0, 4.0_f64), (1, 2.0)] {
+            let d = c * (h.powf(p) - 1.0);
+            let got = front.vs_reference[k].unwrap();
+            let expected = rms(&front_times, &|t| d * t);
+            assert!(
+                (got / expected - 1.0).abs() < 1e-9,
+                "front {k}: {got} vs {expected}"
+            );
+            let got = speed.vs_reference[k].unwrap();
+            let expected = rms(&speed_times, &|t| d * (1.0 + t));
+            assert!(
+                (got / expected - 1.0).abs() < 1e-9,
+                "speed {k}: {got} vs {expected}"
+            );
+        }
+        assert!((front.order.unwrap().p.unwrap() - p).abs() < 1e-9);
+        assert!((speed.order.unwrap().p.unwrap() - p).abs() < 1e-9);
+        // a run without bulk.csv is left out
+        ladder[1].history = None;
+        assert_eq!(quantity_errors(Quantity::MeanSpeed, &ladder).order, None);
     }
 
     #[test]

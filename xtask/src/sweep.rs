@@ -20,7 +20,7 @@ use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
 use indicatif::{MultiProgress, ProgressBar, ProgressStyle};
-use runout_case::{case_files, load, Fidelity, Loaded, SourcedCase};
+use runout_case::{case_files, load, Case, Fidelity, Loaded, SourcedCase};
 use runout_output::RunSummary;
 use runout_solver::{run_case, RunError};
 
@@ -217,6 +217,19 @@ fn copy_run(runs: &Path, from: &str, to: &str, fidelity: Fidelity) -> Outcome {
         Ok(summary) => Outcome::Copied(summary, from.to_string()),
         Err(e) => Outcome::Failed(format!("copying the run of {from}: {e:#}")),
     }
+}
+
+/// The finished run in `dir` if it ran exactly `resolved`: its `resolved.ron` is read back
+/// as a case and compared field by field, so a run made before a schema field was added
+/// (whose file lacks it, read with the field's default) still counts when the default is
+/// what `resolved` has. The solver version that made the run is not compared.
+pub fn finished_run(dir: &Path, resolved: &Case) -> Option<RunSummary> {
+    let stored: Case =
+        ron::from_str(&std::fs::read_to_string(dir.join("resolved.ron")).ok()?).ok()?;
+    if &stored != resolved {
+        return None;
+    }
+    serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).ok()?).ok()
 }
 
 /// CSV field quoting (RFC 4180).
