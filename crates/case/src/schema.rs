@@ -612,6 +612,22 @@ pub struct Relaxation {
     /// (docs/performance.md, session 5), so it is a per-case choice
     #[serde(default = "ur_one")]
     pub wall_closures: f64,
+    /// where `wall_closures` applies: at every wall node (default), or only at the nodes
+    /// whose closure changed direction between the last two outer iterations (a cycle), so
+    /// that floors whose iteration converges monotonically keep MFIX's iteration
+    #[serde(default)]
+    pub wall_closures_at: WallRelaxationScope,
+}
+
+/// Where the wall-closure relaxation applies ([`Relaxation::wall_closures_at`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum WallRelaxationScope {
+    /// every wall node, every outer iteration
+    #[default]
+    Everywhere,
+    /// a wall node whose slip coefficient moved the other way in the previous outer
+    /// iteration
+    Oscillating,
 }
 
 fn ur_pressure() -> f64 {
@@ -634,6 +650,7 @@ impl Default for Relaxation {
             velocity: ur_half(),
             theta: ur_half(),
             wall_closures: ur_one(),
+            wall_closures_at: WallRelaxationScope::Everywhere,
         }
     }
 }

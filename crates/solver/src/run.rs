@@ -776,6 +776,8 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
         relax_eps: r.eps_s,
         relax_theta: r.theta,
         relax_wall_closures: r.wall_closures,
+        relax_wall_closures_oscillating_only: r.wall_closures_at
+            == runout_case::WallRelaxationScope::Oscillating,
         periodic_x: false,
         exact_solids_continuity: case.numerics.exact_solids_mass,
         detect_stall: case.run.tolerances.detect_stall,

@@ -112,6 +112,11 @@ pub struct TwoFluidSettings {
     /// docs/performance.md). Changes the path of the outer iterations, not the converged
     /// step.
     pub relax_wall_closures: f64,
+    /// Apply `relax_wall_closures` only at a wall node whose slip coefficient h (of the
+    /// Robin closure g ∂u/∂n + h u = c) moved the other way in the previous outer iteration
+    /// than in this one: the period-2 cycle is damped where it occurs and a floor whose
+    /// iteration converges monotonically keeps MFIX's iteration. Not in MFIX.
+    pub relax_wall_closures_oscillating_only: bool,
     /// A fully developed column: periodic in x with a single column of cells (nx = 1), as
     /// MFIX's `CYCLIC_X` on one cell. Every ∂/∂x vanishes: the x-face fluxes of a cell cancel,
     /// u has one unknown per row (node 0, with the whole cell as its control volume; node nx
@@ -143,6 +148,7 @@ impl Default for TwoFluidSettings {
             relax_eps: 0.5,
             relax_theta: 0.5,
             relax_wall_closures: 1.0,
+            relax_wall_closures_oscillating_only: false,
             periodic_x: false,
             exact_solids_continuity: false,
             detect_stall: true,
@@ -258,6 +264,13 @@ pub struct SolidsFields {
     a_theta: Stencil5,
     /// per-node momentum closures of the state-dependent walls
     wall_velocity: WallFaces,
+    /// per node of each side (west, east, south, north), the change of the momentum
+    /// closure's h applied at the last outer iteration (for
+    /// [`TwoFluidSettings::relax_wall_closures_oscillating_only`]; empty until used)
+    wall_velocity_step: [Vec<f64>; 4],
+    /// per node of each side, whether its closure has cycled in this time step (it then
+    /// stays relaxed until the step ends)
+    wall_velocity_cycling: [Vec<bool>; 4],
     /// per-cell θ closures of the state-dependent walls
     wall_theta: WallFaces,
     /// h_w^u of the last floor evaluation per u-node (the wall probe of paper Fig. 9)
@@ -575,6 +588,8 @@ impl TwoFluid {
                 a_eps: Stencil5::new(pc.clone()),
                 a_theta: Stencil5::new(pc.clone()),
                 wall_velocity: WallFaces::default(),
+                wall_velocity_step: Default::default(),
+                wall_velocity_cycling: Default::default(),
                 wall_theta: WallFaces::default(),
                 floor_h_u: vec![0.0; nx + 1],
             })
@@ -646,6 +661,9 @@ impl TwoFluid {
             s.v_old.copy_from_slice(&s.v);
             s.theta_old.copy_from_slice(&s.theta);
             s.rho_eps_old.copy_from_slice(&s.rho_eps);
+            for cycling in &mut s.wall_velocity_cycling {
+                cycling.fill(false);
+            }
         }
     }
 
@@ -780,6 +798,7 @@ impl TwoFluid {
         let (dx, dy) = (grid.x.widths(), grid.y.widths());
         let (dxc, dyc) = (grid.x.face_spacing(), grid.y.face_spacing());
         let wall_relax = self.settings.relax_wall_closures;
+        let oscillating_only = self.settings.relax_wall_closures_oscillating_only;
         for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
             for side in [Side::West, Side::East, Side::South, Side::North] {
                 let Some(model) = spec.wall_models.get(side) else {
@@ -852,6 +871,18 @@ impl TwoFluid {
                 let mut theta_faces = theta_slot
                     .take()
                     .unwrap_or_else(|| vec![RobinFace::ZERO_GRADIENT; n_cells]);
+                let side_index = match side {
+                    Side::West => 0,
+                    Side::East => 1,
+                    Side::South => 2,
+                    Side::North => 3,
+                };
+                let mut last_step = std::mem::take(&mut s.wall_velocity_step[side_index]);
+                let mut cycling = std::mem::take(&mut s.wall_velocity_cycling[side_index]);
+                if oscillating_only && wall_relax < 1.0 {
+                    last_step.resize(n_cells + 1, 0.0);
+                    cycling.resize(n_cells + 1, false);
+                }
                 let ghost_theta = |c_along: usize| {
                     let c = cell(c_along);
                     theta_faces[c_along].ghost(s.theta[c], delta)
@@ -910,8 +941,18 @@ impl TwoFluid {
                     if side == Side::South {
                         s.floor_h_u[k] = wall.diagnostics.h_u;
                     }
-                    faces[k] = relax_face(wall.face, closure, wall_relax);
+                    faces[k] = if oscillating_only && wall_relax < 1.0 {
+                        cycling[k] |= turns_back(wall.face.h - closure.h, last_step[k]);
+                        let w = if cycling[k] { wall_relax } else { 1.0 };
+                        let applied = relax_face(wall.face, closure, w);
+                        last_step[k] = applied.h - closure.h;
+                        applied
+                    } else {
+                        relax_face(wall.face, closure, wall_relax)
+                    };
                 }
+                s.wall_velocity_step[side_index] = last_step;
+                s.wall_velocity_cycling[side_index] = cycling;
                 for along in 0..n_cells {
                     let c = cell(along);
                     let (i, j) = (c % nx, c / nx);
@@ -2073,6 +2114,17 @@ fn mean_row(a: &mut Stencil5, k: usize, [west, east, south, north]: [bool; 4], o
     a.b[k] = own.unwrap_or(0.0);
 }
 
+/// A wall node's closure is cycling when its change turns back at more than this fraction of
+/// the previous change (an alternating iteration that contracts faster converges unaided).
+const CYCLE_CONTRACTION: f64 = 0.5;
+
+/// Whether a closure coefficient's `change` at this outer iteration turns back from the
+/// previous iteration's `last` without contracting below [`CYCLE_CONTRACTION`] of it: the
+/// mark of a period-2 cycle.
+fn turns_back(change: f64, last: f64) -> bool {
+    change * last < 0.0 && change.abs() > CYCLE_CONTRACTION * last.abs()
+}
+
 /// Under-relaxed wall closure: ω·`new` + (1 − ω)·`old` in each coefficient
 /// ([`TwoFluidSettings::relax_wall_closures`]).
 fn relax_face(new: RobinFace, old: RobinFace, w: f64) -> RobinFace {
@@ -2112,5 +2164,31 @@ fn face_mean(field: &[f64], c0: Option<usize>, c1: Option<usize>) -> f64 {
         (Some(a), Some(b)) => 0.5 * (field[a] + field[b]),
         (Some(c), None) | (None, Some(c)) => field[c],
         (None, None) => 0.0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_cycle_is_a_change_that_turns_back_without_contracting() {
+        // period 2: h alternates between two values
+        assert!(turns_back(-1.0, 1.0));
+        assert!(turns_back(0.6, -1.0));
+        // an alternating iteration contracting by more than half converges unaided
+        assert!(!turns_back(-0.4, 1.0));
+        // monotone, the first iteration, and no change
+        assert!(!turns_back(0.9, 1.0));
+        assert!(!turns_back(1.0, 0.0));
+        assert!(!turns_back(0.0, 1.0));
+        // the relaxation itself: ω = 0.5 averages the coefficients
+        let (a, b) = (
+            RobinFace::partial_slip(4.0, 0.0),
+            RobinFace::partial_slip(2.0, 0.0),
+        );
+        let r = relax_face(a, b, 0.5);
+        assert_eq!((r.g, r.h, r.c), (1.0, 3.0, 0.0));
+        assert_eq!(relax_face(a, b, 1.0), a);
     }
 }
