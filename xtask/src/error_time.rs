@@ -36,6 +36,9 @@
 //! fronts, 2 where smooth); otherwise, or when the differences do not shrink, the page says
 //! so and the Richardson numbers are to be read as indicative only.
 //!
+//! Every level runs with MFIX's outer iteration (wall closures not relaxed, see
+//! [`mfix_iteration`]), whatever the case file sets.
+//!
 //! Output: `docs/error-time.md` (date, command, levels not run and why, tables),
 //! `docs/error-time/error_time.csv` and one log–log SVG of error against wall time per case
 //! and quantity in `docs/error-time/`.
@@ -48,7 +51,7 @@ use std::str::FromStr;
 
 use anyhow::{bail, Context, Result};
 use plotters::prelude::*;
-use runout_case::{validate_case, Case, Convection, Fidelity};
+use runout_case::{validate_case, Case, Convection, Fidelity, WallRelaxationScope};
 use runout_output::{RunStatus, RunSummary};
 use runout_solver::run_case;
 
@@ -747,6 +750,17 @@ fn read_history(dir: &Path, case: &Case, x_start: f64) -> Option<History> {
     })
 }
 
+/// Every level iterates as MFIX does: the wall closures as computed, not relaxed where they
+/// cycle (`numerics.relaxation.wall_closures` = 1, which the sensitivity base sets to 0.5 at
+/// cycling nodes for the sweep's speed). The relaxation changes the path of the outer
+/// iterations, not the converged step (S-JJ-phi φ = 0.1 at coarse: mean u_s at 1.25 s
+/// 4.108170 against 4.108188 m/s with it, docs/performance.md session 6); fixing it keeps
+/// the study's runs, made before the sensitivity base relaxed, one solver configuration.
+fn mfix_iteration(case: &mut Case) {
+    case.numerics.relaxation.wall_closures = 1.0;
+    case.numerics.relaxation.wall_closures_at = WallRelaxationScope::Everywhere;
+}
+
 /// Runs (or with `reuse` reads) one level of one case with one scheme.
 fn run_level(
     root: &Path,
@@ -758,6 +772,7 @@ fn run_level(
 ) -> Result<Run> {
     let mut resolved = level.case(case);
     resolved.numerics.convection = scheme.clone();
+    mfix_iteration(&mut resolved);
     if let Err(errors) = validate_case(&resolved) {
         let list: Vec<String> = errors.iter().map(ToString::to_string).collect();
         bail!(
@@ -1131,7 +1146,10 @@ fn levels_section(md: &mut String, levels: &[Level], cases: &[Case]) -> Result<(
         md,
         "Every level runs a case to the same end time (given with the case below; the smoke \
          preset's shorter end time is not used: it would stop before the profile time and the \
-         gates); only the grid changes. `h` is √(paper cells / cells).\n"
+         gates); only the grid changes. Every level iterates as MFIX does (the wall closures \
+         as computed: `numerics.relaxation.wall_closures` = 1, which the sensitivity base \
+         relaxes where they cycle for the sweep's speed; it changes the outer iterations' path, \
+         not the converged step). `h` is √(paper cells / cells).\n"
     );
     let names: Vec<String> = cases.iter().map(|c| format!("{} cells", c.name)).collect();
     let _ = writeln!(md, "| level | grid | run here | {} |", names.join(" | "));
