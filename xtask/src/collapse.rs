@@ -23,6 +23,9 @@ use runout_solver::run_case;
 
 use crate::sweep::finished_run;
 
+/// The folder of the collapse cases under cases/ (left out of `cargo xtask sweep`).
+pub const COLLAPSE_DIR: &str = "collapse";
+
 /// The four columns, smallest aspect ratio first.
 const CASE_FILES: [&str; 4] = [
     "cases/collapse/C-a0.5.ron",

@@ -572,7 +572,7 @@ fn mfix_table(md: &mut String, cases: &Cases) {
 
 /// Writes results.md and its figures; returns the markdown.
 pub fn write_report(paths: &ReportPaths, requested: Option<Fidelity>) -> Result<String> {
-    let matrix = crate::sweep::matrix(&paths.cases)?;
+    let matrix = crate::sweep::paper_matrix(&paths.cases)?;
     let names: Vec<String> = matrix.runs.iter().map(|r| r.case.name.clone()).collect();
     let cases = Cases::load(&paths.runs, names.iter().map(String::as_str), requested);
     let gates_csv = paths.cases.join("flume").join("gates.csv");

@@ -1,5 +1,6 @@
 //! `cargo xtask sweep`: the paper's case matrix, expanded from cases/ (except the stiff
-//! cases of cases/stability/, which `cargo xtask stability` runs), run in parallel.
+//! cases of cases/stability/, which `cargo xtask stability` runs, and the column collapse
+//! of cases/collapse/, which `cargo xtask verify collapse` runs), run in parallel.
 //!
 //! Every run writes into `runs/<case>/<fidelity>.partial/` and is renamed to
 //! `runs/<case>/<fidelity>/` when it ends, so a finished folder is always complete; a run
@@ -24,6 +25,7 @@ use runout_case::{case_files, load, Case, Fidelity, Loaded, SourcedCase};
 use runout_output::RunSummary;
 use runout_solver::{run_case, RunError};
 
+use crate::collapse::COLLAPSE_DIR;
 use crate::metrics::{described_speeds, flow_metrics, FlowMetrics};
 use crate::stability::STABILITY_DIR;
 
@@ -274,12 +276,21 @@ fn csv_row(name: &str, fidelity: Fidelity, outcome: &Outcome, flow: &FlowMetrics
     }
 }
 
+/// The paper's matrix (cases.md families S, F, M and A): every case under `cases_dir` but
+/// the stiff cases of `cargo xtask stability` and the column collapse of `cargo xtask verify
+/// collapse` (issue 7's check, verification-notes §2f).
+pub fn paper_matrix(cases_dir: &Path) -> Result<Matrix> {
+    let mut m = matrix(cases_dir)?;
+    let stability = cases_dir.join(STABILITY_DIR);
+    let collapse = cases_dir.join(COLLAPSE_DIR);
+    m.runs
+        .retain(|r| !r.file.starts_with(&stability) && !r.file.starts_with(&collapse));
+    Ok(m)
+}
+
 /// Expands, lists and (unless `list`) runs the matrix; writes results/summary.csv.
 pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
-    let Matrix { mut runs, analytic } = matrix(cases_dir)?;
-    // the stiff cases of `cargo xtask stability` are not part of the paper's matrix
-    let stability = cases_dir.join(STABILITY_DIR);
-    runs.retain(|r| !r.file.starts_with(&stability));
+    let Matrix { runs, analytic } = paper_matrix(cases_dir)?;
     let selected: Vec<&SourcedCase> = runs
         .iter()
         .filter(|r| opts.only.as_deref().is_none_or(|p| r.case.name.contains(p)))
