@@ -633,6 +633,18 @@ pub fn quantity_errors(quantity: Quantity, ladder: &[LevelData]) -> QuantityErro
         return out;
     };
     out.reference = Some(reference);
+    // a station profile is compared only where the reference run has flow there: below the
+    // threshold the band is a few dilute cells and the range that scales the error is noise
+    if let Some(p) = ladder[reference].profile.as_ref() {
+        let peak = p.eps_s.iter().copied().fold(0.0, f64::max);
+        if quantity.is_profile() && peak < FLOW_THRESHOLD {
+            out.note = Some(format!(
+                "the reference run has no flow at the station (largest εs {peak:.1e} < \
+                 {FLOW_THRESHOLD}): no profile error"
+            ));
+            return out;
+        }
+    }
     let samples = match quantity.source() {
         Source::Profile => profile_samples(quantity, ladder, reference),
         Source::Gates => gate_samples(ladder),
@@ -1701,6 +1713,14 @@ mod tests {
         assert_eq!(e.reference, Some(1));
         assert!(e.order.is_none(), "two levels give no order");
         assert!(e.vs_reference[0].unwrap() > 0.0);
+        // a reference without flow at the station gives no profile error
+        let mut dry = ladder.clone();
+        for e in &mut dry[1].profile.as_mut().unwrap().eps_s {
+            *e = 1e-3;
+        }
+        let e = quantity_errors(Quantity::UsS, &dry);
+        assert!(e.note.unwrap().contains("no flow at the station"));
+        assert!(e.vs_reference.iter().all(Option::is_none));
         // a gate the coarsest run never reached is left out for every level
         ladder[0].gates.as_mut().unwrap().retain(|&(g, _)| g < 7);
         assert_eq!(quantity_errors(Quantity::GateSpeed, &ladder).samples, 6);

@@ -224,10 +224,13 @@ fn copy_run(runs: &Path, from: &str, to: &str, fidelity: Fidelity) -> Outcome {
 /// The finished run in `dir` if it ran exactly `resolved`: its `resolved.ron` is read back
 /// as a case and compared field by field, so a run made before a schema field was added
 /// (whose file lacks it, read with the field's default) still counts when the default is
-/// what `resolved` has. The solver version that made the run is not compared.
+/// what `resolved` has. The fidelity presets are not compared: a resolved case already
+/// carries its fidelity's grid and end time, and runs as it is. The solver version that
+/// made the run is not compared either.
 pub fn finished_run(dir: &Path, resolved: &Case) -> Option<RunSummary> {
-    let stored: Case =
+    let mut stored: Case =
         ron::from_str(&std::fs::read_to_string(dir.join("resolved.ron")).ok()?).ok()?;
+    stored.fidelity = resolved.fidelity.clone();
     if &stored != resolved {
         return None;
     }
