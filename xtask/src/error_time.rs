@@ -1302,6 +1302,9 @@ fn case_section(
                         other => format!("{other:?} at t = {:.3} s", s.simulated_time),
                     },
                 ),
+                Err(why) if why.starts_with(NOT_RUN) => {
+                    (String::new(), String::new(), "not run".to_string())
+                }
                 Err(_) => (String::new(), String::new(), "failed".to_string()),
             };
             let errors: Vec<String> = ladder
