@@ -113,9 +113,11 @@ pub struct TwoFluidSettings {
     /// step.
     pub relax_wall_closures: f64,
     /// Apply `relax_wall_closures` only at a wall node whose slip coefficient h (of the
-    /// Robin closure g ∂u/∂n + h u = c) moved the other way in the previous outer iteration
-    /// than in this one: the period-2 cycle is damped where it occurs and a floor whose
-    /// iteration converges monotonically keeps MFIX's iteration. Not in MFIX.
+    /// Robin closure g ∂u/∂n + h u = c) turned back between outer iterations by more than
+    /// half its previous change ([`turns_back`]); such a node stays relaxed until the time
+    /// step ends. The period-2 cycle is damped where it occurs, and a floor whose iteration
+    /// converges by itself keeps MFIX's iteration. Not in MFIX (docs/performance.md,
+    /// session 6).
     pub relax_wall_closures_oscillating_only: bool,
     /// A fully developed column: periodic in x with a single column of cells (nx = 1), as
     /// MFIX's `CYCLIC_X` on one cell. Every ∂/∂x vanishes: the x-face fluxes of a cell cancel,
