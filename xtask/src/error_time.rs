@@ -401,14 +401,21 @@ pub struct QuantityErrors {
 }
 
 /// Linear interpolation of (xs, ys) at `x`, extended linearly beyond the ends (xs
-/// increasing, at least one point).
+/// increasing, at least one point). On a sample point it is that sample's value alone, so a
+/// NaN neighbour (a history sample without a front) does not spread onto it.
 pub fn interpolate(xs: &[f64], ys: &[f64], x: f64) -> f64 {
     if xs.len() == 1 {
         return ys[0];
     }
     let k = xs.partition_point(|&v| v <= x).clamp(1, xs.len() - 1);
     let (x0, x1, y0, y1) = (xs[k - 1], xs[k], ys[k - 1], ys[k]);
-    y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+    if x == x0 {
+        y0
+    } else if x == x1 {
+        y1
+    } else {
+        y0 + (y1 - y0) * (x - x0) / (x1 - x0)
+    }
 }
 
 /// Cell heights from cell-centre heights above a floor at y = 0 (each centre is the midpoint
@@ -557,8 +564,8 @@ fn gate_samples(ladder: &[LevelData]) -> Samples {
 }
 
 /// Samples of a history on the reference run's times that every level covers (for the front,
-/// where every level has one). Each level is interpolated linearly in time; a front sample
-/// beside a time without a front is left out rather than interpolated towards NaN.
+/// where every level has one). Each level is interpolated linearly in time; a time between a
+/// sample with a front and one without is left out.
 fn history_samples(quantity: Quantity, ladder: &[LevelData], reference: usize) -> Samples {
     let r = ladder[reference]
         .history
@@ -573,25 +580,8 @@ fn history_samples(quantity: Quantity, ladder: &[LevelData], reference: usize) -
         .iter()
         .map(|h| h.t[h.t.len() - 1])
         .fold(f64::INFINITY, f64::min);
-    let at = |h: &History, t: f64| -> f64 {
-        let v = quantity.of_history(h);
-        let k =
-            h.t.partition_point(|&s| s <= t)
-                .clamp(1, h.t.len().max(2) - 1);
-        if h.t.len() == 1 {
-            return v[0];
-        }
-        let (t0, t1) = (h.t[k - 1], h.t[k]);
-        let w = if t1 > t0 { (t - t0) / (t1 - t0) } else { 0.0 };
-        // on a sample time, its value alone (its neighbour may be NaN)
-        if w <= 0.0 {
-            v[k - 1]
-        } else if w >= 1.0 {
-            v[k]
-        } else {
-            (1.0 - w) * v[k - 1] + w * v[k]
-        }
-    };
+    // interpolated in time; NaN between a sample with a front and one without
+    let at = |h: &History, t: f64| interpolate(&h.t, quantity.of_history(h), t);
     let times: Vec<f64> =
         r.t.iter()
             .copied()
@@ -1756,6 +1746,10 @@ mod tests {
         assert_eq!(interpolate(&x, &y, 0.0), 0.0);
         assert_eq!(interpolate(&x, &y, 3.0), 1.5);
         assert_eq!(interpolate(&[1.0], &[4.0], 7.0), 4.0);
+        // on a sample point its own value, whatever its neighbours hold
+        let nan = [f64::NAN, 3.0, f64::NAN];
+        assert_eq!(interpolate(&x, &nan, 1.5), 3.0);
+        assert!(interpolate(&x, &nan, 1.0).is_nan());
         assert_eq!(decades([3.0, 40.0].into_iter()), (1.0, 100.0));
         assert_eq!(decades([2.0].into_iter()), (1.0, 10.0));
         assert_eq!(decades([8.8].into_iter()), (1.0, 100.0));

@@ -87,6 +87,16 @@ impl<T> Sides<T> {
         }
     }
 
+    /// The value on `side`, mutable.
+    pub fn get_mut(&mut self, side: Side) -> &mut T {
+        match side {
+            Side::West => &mut self.west,
+            Side::East => &mut self.east,
+            Side::South => &mut self.south,
+            Side::North => &mut self.north,
+        }
+    }
+
     /// Iterates over (side, value) in the order of [`Side::ALL`].
     pub fn iter(&self) -> impl Iterator<Item = (Side, &T)> {
         Side::ALL.into_iter().map(move |s| (s, self.get(s)))

@@ -266,13 +266,9 @@ pub struct SolidsFields {
     a_theta: Stencil5,
     /// per-node momentum closures of the state-dependent walls
     wall_velocity: WallFaces,
-    /// per node of each side (west, east, south, north), the change of the momentum
-    /// closure's h applied at the last outer iteration (for
+    /// per node of each side, the cycle watch of its momentum closure (for
     /// [`TwoFluidSettings::relax_wall_closures_oscillating_only`]; empty until used)
-    wall_velocity_step: [Vec<f64>; 4],
-    /// per node of each side, whether its closure has cycled in this time step (it then
-    /// stays relaxed until the step ends)
-    wall_velocity_cycling: [Vec<bool>; 4],
+    wall_velocity_cycle: Sides<Vec<ClosureCycle>>,
     /// per-cell θ closures of the state-dependent walls
     wall_theta: WallFaces,
     /// h_w^u of the last floor evaluation per u-node (the wall probe of paper Fig. 9)
@@ -590,8 +586,7 @@ impl TwoFluid {
                 a_eps: Stencil5::new(pc.clone()),
                 a_theta: Stencil5::new(pc.clone()),
                 wall_velocity: WallFaces::default(),
-                wall_velocity_step: Default::default(),
-                wall_velocity_cycling: Default::default(),
+                wall_velocity_cycle: Sides::all(Vec::new()),
                 wall_theta: WallFaces::default(),
                 floor_h_u: vec![0.0; nx + 1],
             })
@@ -663,8 +658,10 @@ impl TwoFluid {
             s.v_old.copy_from_slice(&s.v);
             s.theta_old.copy_from_slice(&s.theta);
             s.rho_eps_old.copy_from_slice(&s.rho_eps);
-            for cycling in &mut s.wall_velocity_cycling {
-                cycling.fill(false);
+            for side in Side::ALL {
+                for node in s.wall_velocity_cycle.get_mut(side) {
+                    node.cycling = false;
+                }
             }
         }
     }
@@ -873,17 +870,9 @@ impl TwoFluid {
                 let mut theta_faces = theta_slot
                     .take()
                     .unwrap_or_else(|| vec![RobinFace::ZERO_GRADIENT; n_cells]);
-                let side_index = match side {
-                    Side::West => 0,
-                    Side::East => 1,
-                    Side::South => 2,
-                    Side::North => 3,
-                };
-                let mut last_step = std::mem::take(&mut s.wall_velocity_step[side_index]);
-                let mut cycling = std::mem::take(&mut s.wall_velocity_cycling[side_index]);
+                let mut cycle = std::mem::take(s.wall_velocity_cycle.get_mut(side));
                 if oscillating_only && wall_relax < 1.0 {
-                    last_step.resize(n_cells + 1, 0.0);
-                    cycling.resize(n_cells + 1, false);
+                    cycle.resize(n_cells + 1, ClosureCycle::default());
                 }
                 let ghost_theta = |c_along: usize| {
                     let c = cell(c_along);
@@ -944,17 +933,17 @@ impl TwoFluid {
                         s.floor_h_u[k] = wall.diagnostics.h_u;
                     }
                     faces[k] = if oscillating_only && wall_relax < 1.0 {
-                        cycling[k] |= turns_back(wall.face.h - closure.h, last_step[k]);
-                        let w = if cycling[k] { wall_relax } else { 1.0 };
+                        let node = &mut cycle[k];
+                        node.cycling |= turns_back(wall.face.h - closure.h, node.last_change);
+                        let w = if node.cycling { wall_relax } else { 1.0 };
                         let applied = relax_face(wall.face, closure, w);
-                        last_step[k] = applied.h - closure.h;
+                        node.last_change = applied.h - closure.h;
                         applied
                     } else {
                         relax_face(wall.face, closure, wall_relax)
                     };
                 }
-                s.wall_velocity_step[side_index] = last_step;
-                s.wall_velocity_cycling[side_index] = cycling;
+                *s.wall_velocity_cycle.get_mut(side) = cycle;
                 for along in 0..n_cells {
                     let c = cell(along);
                     let (i, j) = (c % nx, c / nx);
@@ -2114,6 +2103,16 @@ fn mean_row(a: &mut Stencil5, k: usize, [west, east, south, north]: [bool; 4], o
     a.a_n[k] = one(north);
     a.a_p[k] = count as f64 + one(own.is_some());
     a.b[k] = own.unwrap_or(0.0);
+}
+
+/// The cycle watch of one wall node's momentum closure
+/// ([`TwoFluidSettings::relax_wall_closures_oscillating_only`]).
+#[derive(Clone, Copy, Debug, Default)]
+struct ClosureCycle {
+    /// the change of the closure's h applied at the last outer iteration
+    last_change: f64,
+    /// whether it has cycled in this time step (it then stays relaxed until the step ends)
+    cycling: bool,
 }
 
 /// A wall node's closure is cycling when its change turns back at more than this fraction of
