@@ -51,7 +51,9 @@ use std::str::FromStr;
 
 use anyhow::{bail, Context, Result};
 use plotters::prelude::*;
-use runout_case::{validate_case, Case, Convection, Fidelity, WallRelaxationScope};
+use runout_case::{
+    validate_case, Case, Convection, DiluteCellClass, Fidelity, WallRelaxationScope,
+};
 use runout_output::{RunStatus, RunSummary};
 use runout_solver::run_case;
 
@@ -758,9 +760,12 @@ fn read_history(dir: &Path, case: &Case, x_start: f64) -> Option<History> {
 /// iterations, not the converged step (S-JJ-phi φ = 0.1 at coarse: mean u_s at 1.25 s
 /// 4.108170 against 4.108188 m/s with it, docs/performance.md session 6); fixing it keeps
 /// the study's runs, made before the sensitivity base relaxed, one solver configuration.
+/// Likewise every θ row is classified dilute or dense by the current εs at every outer
+/// iteration (`numerics.dilute_cells`), as MFIX does.
 fn mfix_iteration(case: &mut Case) {
     case.numerics.relaxation.wall_closures = 1.0;
     case.numerics.relaxation.wall_closures_at = WallRelaxationScope::Everywhere;
+    case.numerics.dilute_cells = DiluteCellClass::EveryIteration;
 }
 
 /// Runs (or with `reuse` reads) one level of one case with one scheme.

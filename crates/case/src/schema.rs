@@ -577,6 +577,24 @@ pub struct Numerics {
     /// false: MFIX lets the step tolerance's remainder accumulate where solids compact)
     #[serde(default)]
     pub exact_solids_mass: bool,
+    /// how the θ row of a cell is classified dilute (εs ≤ DIL_EP_S: the mean of its dense
+    /// neighbours) or dense (model-spec §4.8): at every outer iteration by the current εs
+    /// (default, MFIX), or so, but dilute for the rest of a step once a cell's class has
+    /// changed back (not MFIX; for cells whose εs straddles DIL_EP_S, where the step
+    /// otherwise stalls)
+    #[serde(default)]
+    pub dilute_cells: DiluteCellClass,
+}
+
+/// The classification of the θ rows into dilute and dense cells ([`Numerics::dilute_cells`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum DiluteCellClass {
+    /// by the current εs at every outer iteration (MFIX)
+    #[default]
+    EveryIteration,
+    /// by the current εs, until a cell's class has changed twice within the step
+    /// (dense → dilute → dense, or back); it is then dilute until the step ends
+    FrozenWhenCycling,
 }
 
 /// Convection scheme (MFIX `DISCRETIZE`).

@@ -64,6 +64,9 @@ enum Command {
         /// no progress bar
         #[arg(long)]
         quiet: bool,
+        /// stop at this simulated time [s] instead of the fidelity's end time
+        #[arg(long, value_parser = parse_end_time)]
+        end_time: Option<f64>,
     },
     /// Print every closure value (kinetic theory, friction, drag, K_cp, granular-energy
     /// sources) at one state as JSON.
@@ -75,6 +78,13 @@ enum Command {
 
 fn parse_fidelity(s: &str) -> Result<Fidelity, String> {
     s.parse()
+}
+
+fn parse_end_time(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(t) if t.is_finite() && t > 0.0 => Ok(t),
+        _ => Err(format!("{s}: allowed (0, inf) seconds")),
+    }
 }
 
 fn check(paths: &[PathBuf]) -> ExitCode {
@@ -176,10 +186,23 @@ fn mesh(file: &Path, fidelity: Fidelity) -> ExitCode {
     ExitCode::SUCCESS
 }
 
-fn run(file: &Path, fidelity: Fidelity, out: Option<&Path>, quiet: bool) -> ExitCode {
-    let Some(cases) = flow_cases(file) else {
+fn run(
+    file: &Path,
+    fidelity: Fidelity,
+    out: Option<&Path>,
+    quiet: bool,
+    end_time: Option<f64>,
+) -> ExitCode {
+    let Some(mut cases) = flow_cases(file) else {
         return ExitCode::FAILURE;
     };
+    if let Some(t) = end_time {
+        for sc in &mut cases {
+            sc.case.run.end_time = t;
+            sc.case.fidelity.smoke.end_time = t;
+            sc.case.fidelity.coarse.end_time = t;
+        }
+    }
     let mut status = ExitCode::SUCCESS;
     for sc in &cases {
         let dir = match out {
@@ -249,7 +272,8 @@ fn main() -> ExitCode {
             fidelity,
             out,
             quiet,
-        } => run(&file, fidelity, out.as_deref(), quiet),
+            end_time,
+        } => run(&file, fidelity, out.as_deref(), quiet, end_time),
         Command::Closures(args) => match cmd_closures::run(&args) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {

@@ -103,6 +103,28 @@ fn run_writes_fields_monitors_and_summary() {
 }
 
 #[test]
+fn run_end_time_overrides_the_fidelity_and_rejects_a_bad_value() {
+    let out = std::env::temp_dir().join(format!("runout-run-t-{}", std::process::id()));
+    let o = runout(&[
+        "run",
+        "examples/cavity-re100.ron",
+        "--fidelity",
+        "smoke",
+        "--quiet",
+        "--end-time",
+        "0.25",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", text(&o));
+    // the smoke preset ends at 1.0 s
+    assert!(text(&o).contains("at t = 0.25 s"), "{}", text(&o));
+    let o = runout(&["run", "examples/cavity-re100.ron", "--end-time=-1"]);
+    assert!(!o.status.success());
+    assert!(text(&o).contains("-1: allowed (0, inf) seconds"), "{}", text(&o));
+}
+
+#[test]
 fn run_solves_the_mfix_slide_with_its_johnson_jackson_floor_at_smoke_fidelity() {
     let out = std::env::temp_dir().join(format!("runout-run-m-{}", std::process::id()));
     let o = runout(&[

@@ -778,6 +778,8 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
         relax_wall_closures: r.wall_closures,
         relax_wall_closures_oscillating_only: r.wall_closures_at
             == runout_case::WallRelaxationScope::Oscillating,
+        freeze_cycling_dilute_class: case.numerics.dilute_cells
+            == runout_case::DiluteCellClass::FrozenWhenCycling,
         periodic_x: false,
         exact_solids_continuity: case.numerics.exact_solids_mass,
         detect_stall: case.run.tolerances.detect_stall,

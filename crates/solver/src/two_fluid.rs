@@ -119,6 +119,16 @@ pub struct TwoFluidSettings {
     /// converges by itself keeps MFIX's iteration. Not in MFIX (docs/performance.md,
     /// session 6).
     pub relax_wall_closures_oscillating_only: bool,
+    /// Freeze the class of a cell's θ row (dilute: εs ≤ DIL_EP_S, model-spec §4.8) to
+    /// dilute for the rest of the step once it has changed twice within the step
+    /// ([`next_dilute_class`]). MFIX reclassifies every outer iteration; a cell whose εs
+    /// straddles DIL_EP_S can then flip class every iteration: dense, its θ row heats it
+    /// and its dilute neighbours (whose rows take the mean of their dense neighbours), its
+    /// solids pressure pushes εs below DIL_EP_S; dilute, εs returns. Neither class is then
+    /// self-consistent and the step stalls (the coarse flume at t = 0.55 s, cell (55, 10):
+    /// εs 1.00078e-4 ↔ 0.99672e-4 for 30 iterations). Not in MFIX; where the class settles
+    /// within a step, the converged step is MFIX's (docs/performance.md, session 7).
+    pub freeze_cycling_dilute_class: bool,
     /// A fully developed column: periodic in x with a single column of cells (nx = 1), as
     /// MFIX's `CYCLIC_X` on one cell. Every ∂/∂x vanishes: the x-face fluxes of a cell cancel,
     /// u has one unknown per row (node 0, with the whole cell as its control volume; node nx
@@ -151,6 +161,7 @@ impl Default for TwoFluidSettings {
             relax_theta: 0.5,
             relax_wall_closures: 1.0,
             relax_wall_closures_oscillating_only: false,
+            freeze_cycling_dilute_class: false,
             periodic_x: false,
             exact_solids_continuity: false,
             detect_stall: true,
@@ -271,6 +282,11 @@ pub struct SolidsFields {
     wall_velocity_cycle: Sides<Vec<ClosureCycle>>,
     /// per-cell θ closures of the state-dependent walls
     wall_theta: WallFaces,
+    /// the class of each cell's θ row at the last outer iteration (true: dense, a θ
+    /// equation; false: dilute, the mean of its dense neighbours; model-spec §4.8), and how
+    /// often it changed within the step ([`TwoFluidSettings::freeze_cycling_dilute_class`])
+    theta_dense: Vec<bool>,
+    theta_class_changes: Vec<u8>,
     /// h_w^u of the last floor evaluation per u-node (the wall probe of paper Fig. 9)
     pub floor_h_u: Vec<f64>,
 }
@@ -443,6 +459,8 @@ pub struct TwoFluid {
     /// the closures were evaluated at the current iterate (the start of a step) and need
     /// not be evaluated again by the next outer iteration
     closures_fresh: bool,
+    /// the next θ solve is the step's first: it classifies every cell afresh
+    theta_class_fresh: bool,
     /// where the time went
     profile: Profile,
     /// where the residuals of the last outer iteration were largest
@@ -588,6 +606,8 @@ impl TwoFluid {
                 wall_velocity: WallFaces::default(),
                 wall_velocity_cycle: Sides::all(Vec::new()),
                 wall_theta: WallFaces::default(),
+                theta_dense: vec![false; n],
+                theta_class_changes: vec![0; n],
                 floor_h_u: vec![0.0; nx + 1],
             })
             .collect();
@@ -622,6 +642,7 @@ impl TwoFluid {
             pressure_pinned,
             rebuild_preconditioners: true,
             closures_fresh: false,
+            theta_class_fresh: true,
             profile: Profile::default(),
             worst: Worst::default(),
             grid,
@@ -647,6 +668,7 @@ impl TwoFluid {
     /// Stores the current fields as the old time level and refreshes the bulk densities.
     pub fn begin_step(&mut self) {
         self.rebuild_preconditioners = true;
+        self.theta_class_fresh = true;
         self.sync_volume_fractions();
         self.eps_g_old.copy_from_slice(&self.eps_g);
         self.u_g_old.copy_from_slice(&self.u_g);
@@ -1567,6 +1589,21 @@ impl TwoFluid {
                 &mut self.c_faces,
                 &mut s.a_theta,
             );
+            // the class of each θ row: MFIX's εs > DIL_EP_S, unless frozen (a cycling cell)
+            let freeze = self.settings.freeze_cycling_dilute_class && !self.theta_class_fresh;
+            for k in 0..s.theta.len() {
+                let dense_now = s.eps[k] > DIL_EP_S;
+                if freeze {
+                    next_dilute_class(
+                        dense_now,
+                        &mut s.theta_dense[k],
+                        &mut s.theta_class_changes[k],
+                    );
+                } else {
+                    s.theta_dense[k] = dense_now;
+                    s.theta_class_changes[k] = 0;
+                }
+            }
             let a = &mut s.a_theta;
             let (mut num, mut den) = (0.0, 0.0);
             // Schaeffer: θ = θ_small where εg < εg* (model-spec §1.3), as a fixed row before
@@ -1574,10 +1611,10 @@ impl TwoFluid {
             let eps_g_star = (spec.params.friction_model == FrictionModel::Schaeffer)
                 .then_some(1.0 - spec.params.friction.eps_s_max);
             for k in 0..s.theta.len() {
-                if s.eps[k] <= DIL_EP_S {
+                if !s.theta_dense[k] {
                     // the mean θ of the neighbours with εs > DIL_EP_S, or kept if none
                     // (model-spec §4.8, MFIX `source_phi.f`)
-                    dilute_cell_row(a, k, s.theta[k], &s.eps, nx);
+                    dilute_cell_row(a, k, s.theta[k], &s.theta_dense, nx);
                     continue;
                 }
                 let forced = eps_g_star.is_some_and(|star| self.eps_g[k] < star);
@@ -1607,6 +1644,7 @@ impl TwoFluid {
             self.profile.theta_assembly -= solve;
             s.theta.iter_mut().for_each(|t| *t = t.max(THETA_SMALL));
         }
+        self.theta_class_fresh = false;
         self.worst.theta = worst_theta;
         Ok(residual)
     }
@@ -2139,13 +2177,35 @@ fn relax_face(new: RobinFace, old: RobinFace, w: f64) -> RobinFace {
     }
 }
 
-/// The θ row of a dilute cell k (εs ≤ DIL_EP_S): the plain mean of its neighbour cells with
-/// εs > DIL_EP_S, or `current` if there are none (model-spec §4.8).
-fn dilute_cell_row(a: &mut Stencil5, k: usize, current: f64, eps: &[f64], nx: usize) {
-    let n = eps.len();
+/// How often a cell's θ-row class may change within a step before it is frozen dilute
+/// ([`TwoFluidSettings::freeze_cycling_dilute_class`]): the second change is a change back.
+const DILUTE_CLASS_CHANGES: u8 = 2;
+
+/// The θ-row class of a cell at this outer iteration, given its class by the current εs
+/// (`dense_now`), its class at the last iteration (`dense`, updated) and its class changes
+/// within the step (`changes`, updated): it follows εs until it has changed
+/// [`DILUTE_CLASS_CHANGES`] times (dense → dilute → dense, or dilute → dense → dilute: a
+/// cycle), then stays dilute.
+fn next_dilute_class(dense_now: bool, dense: &mut bool, changes: &mut u8) {
+    if *changes < DILUTE_CLASS_CHANGES && dense_now != *dense {
+        *dense = dense_now;
+        *changes += 1;
+        if *changes == DILUTE_CLASS_CHANGES {
+            // frozen dilute: the cell is at the threshold, and a dense θ row there keeps
+            // its face velocities and εs cycling (coarse flume to 0.55 s, rejected steps:
+            // MFIX's iteration 53, frozen in the class it returned to 42, frozen dilute 25)
+            *dense = false;
+        }
+    }
+}
+
+/// The θ row of a dilute cell k: the plain mean of its neighbour cells of the dense class
+/// (εs > DIL_EP_S), or `current` if there are none (model-spec §4.8).
+fn dilute_cell_row(a: &mut Stencil5, k: usize, current: f64, dense_class: &[bool], nx: usize) {
+    let n = dense_class.len();
     let (i, j) = (k % nx, k / nx);
     fixed_row(a, k, current);
-    let dense = |c: usize| eps[c] > DIL_EP_S;
+    let dense = |c: usize| dense_class[c];
     let west = i > 0 && dense(k - 1);
     let east = i + 1 < nx && dense(k + 1);
     let south = j > 0 && dense(k - nx);
@@ -2171,6 +2231,37 @@ fn face_mean(field: &[f64], c0: Option<usize>, c1: Option<usize>) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The classes a cell's θ row takes over a step's outer iterations, given its class by
+    /// εs at each (the first iteration classifies afresh, as the solver does).
+    fn classes(by_eps: &[bool]) -> Vec<bool> {
+        let (mut dense, mut changes) = (by_eps[0], 0);
+        let mut out = vec![dense];
+        for &now in &by_eps[1..] {
+            next_dilute_class(now, &mut dense, &mut changes);
+            out.push(dense);
+        }
+        out
+    }
+
+    #[test]
+    fn a_cycling_dilute_class_is_frozen_after_changing_back() {
+        // the flume's cell (55, 10): dense, dilute, dense, ... is frozen dilute at the 3rd
+        assert_eq!(
+            classes(&[true, false, true, false, true, false]),
+            [true, false, false, false, false, false]
+        );
+        assert_eq!(
+            classes(&[false, true, false, true, true]),
+            [false, true, false, false, false]
+        );
+        // a cell that becomes dense once follows εs, as MFIX's iteration
+        assert_eq!(
+            classes(&[false, false, true, true, true]),
+            [false, false, true, true, true]
+        );
+        assert_eq!(classes(&[true, false, false]), [true, false, false]);
+    }
 
     #[test]
     fn a_cycle_is_a_change_that_turns_back_without_contracting() {
