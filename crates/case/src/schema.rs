@@ -502,10 +502,20 @@ pub struct TimeStep {
     /// factor of each change (MFIX `DT_FAC`, 0.9); 1 disables adaptation
     #[serde(default = "default_dt_factor")]
     pub factor: f64,
+    /// converged steps per change of Δt (MFIX's `STEPS_MIN`, 5): the controller compares
+    /// the outer iterations per simulated second of each block of this many steps with the
+    /// previous block's. Fewer steps let Δt recover faster after a failed step (at 5, Δt
+    /// takes ~140 steps to grow back from 1e-4 to 1e-3 s with `factor` 0.9)
+    #[serde(default = "default_steps_per_change")]
+    pub steps_per_change: usize,
 }
 
 fn default_dt_factor() -> f64 {
     0.9
+}
+
+fn default_steps_per_change() -> usize {
+    5
 }
 
 /// Outer-iteration convergence (model-spec §4.11).

@@ -272,6 +272,13 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
         );
     }
     c.range("run.dt.factor", run.dt.factor, B::Open(0.0), B::Closed(1.0));
+    if run.dt.steps_per_change < 1 {
+        c.fail(
+            "run.dt.steps_per_change",
+            run.dt.steps_per_change,
+            "an integer >= 1",
+        );
+    }
     c.positive("run.tolerances.residual", run.tolerances.residual);
     c.positive(
         "run.tolerances.theta_residual",

@@ -127,6 +127,12 @@ fn time_step_bounds() {
         "dt: (initial: 1e-4, min: 1e-2, max: 1e-3",
     );
     rejected("dtmin.ron", &t, &["run.dt.min"]);
+    let t = replace_once(&mslide(), "factor: 0.9", "factor: 0.9, steps_per_change: 0");
+    rejected(
+        "dtsteps.ron",
+        &t,
+        &["run.dt.steps_per_change", "an integer >= 1"],
+    );
 }
 
 #[test]

@@ -121,7 +121,11 @@ fn run_end_time_overrides_the_fidelity_and_rejects_a_bad_value() {
     assert!(text(&o).contains("at t = 0.25 s"), "{}", text(&o));
     let o = runout(&["run", "examples/cavity-re100.ron", "--end-time=-1"]);
     assert!(!o.status.success());
-    assert!(text(&o).contains("-1: allowed (0, inf) seconds"), "{}", text(&o));
+    assert!(
+        text(&o).contains("-1: allowed (0, inf) seconds"),
+        "{}",
+        text(&o)
+    );
 }
 
 #[test]

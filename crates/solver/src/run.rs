@@ -73,8 +73,8 @@ pub struct Progress {
     pub steps: u64,
 }
 
-/// The adaptive time-step controller of MFIX (model-spec §4.12): after every 5 converged
-/// steps it compares the outer iterations per simulated second with the previous block and
+/// The adaptive time-step controller of MFIX (model-spec §4.12): after every block of
+/// `steps_per_change` converged steps (MFIX `STEPS_MIN` = 5) it compares the outer iterations per simulated second with the previous block and
 /// keeps or reverses the direction of change; a failed step shrinks Δt and resets.
 #[derive(Clone, Debug)]
 pub struct DtController {
@@ -85,15 +85,14 @@ pub struct DtController {
     direction: f64,
     iterations: usize,
     steps: usize,
+    steps_per_change: usize,
     cost_old: f64,
 }
 
-/// Converged steps per adaptation (MFIX `STEPS_MIN`).
-const STEPS_PER_ADAPTATION: usize = 5;
-
 impl DtController {
-    /// Starts at `initial`, bounded by [min, max], changing by `factor` (MFIX `DT_FAC`).
-    pub fn new(initial: f64, min: f64, max: f64, factor: f64) -> Self {
+    /// Starts at `initial`, bounded by [min, max], changing by `factor` (MFIX `DT_FAC`) after
+    /// every `steps_per_change` converged steps (MFIX `STEPS_MIN` = 5; at least 1).
+    pub fn new(initial: f64, min: f64, max: f64, factor: f64, steps_per_change: usize) -> Self {
         DtController {
             dt: initial,
             min,
@@ -102,6 +101,7 @@ impl DtController {
             direction: -1.0,
             iterations: 0,
             steps: 0,
+            steps_per_change: steps_per_change.max(1),
             cost_old: 0.0,
         }
     }
@@ -119,7 +119,7 @@ impl DtController {
         }
         self.iterations += iterations;
         self.steps += 1;
-        if self.steps < STEPS_PER_ADAPTATION {
+        if self.steps < self.steps_per_change {
             return;
         }
         let cost = self.iterations as f64 / (self.steps as f64 * dt);
@@ -944,7 +944,13 @@ pub fn run_case(
         _ => None,
     };
     let run = &case.run;
-    let mut dt = DtController::new(run.dt.initial, run.dt.min, run.dt.max, run.dt.factor);
+    let mut dt = DtController::new(
+        run.dt.initial,
+        run.dt.min,
+        run.dt.max,
+        run.dt.factor,
+        run.dt.steps_per_change,
+    );
     let mut summary = RunSummary {
         case: case.name.clone(),
         fidelity: fidelity.to_string(),
@@ -1146,7 +1152,7 @@ mod tests {
 
     #[test]
     fn dt_controller_follows_mfix_rules() {
-        let mut c = DtController::new(1e-3, 1e-6, 1e-2, 0.9);
+        let mut c = DtController::new(1e-3, 1e-6, 1e-2, 0.9, 5);
         // first block of 5: cost > 0 = old → direction flips from − to +: Δt grows
         for _ in 0..5 {
             c.converged(1e-3, 10, false);
@@ -1155,8 +1161,27 @@ mod tests {
         // a failure shrinks Δt and resets the direction
         assert!(c.failed());
         assert!((c.dt() - 1e-3).abs() < 1e-15);
-        let mut c = DtController::new(2e-6, 1e-6, 1e-2, 0.5);
+        let mut c = DtController::new(2e-6, 1e-6, 1e-2, 0.5, 5);
         assert!(c.failed());
         assert!(!c.failed(), "below dt_min the run must stop");
+    }
+
+    #[test]
+    fn dt_controller_changes_after_every_block_of_steps_per_change() {
+        // one step per change: Δt grows at every converged step while the iterations per
+        // simulated second fall (same iterations at a larger Δt)
+        let mut c = DtController::new(1e-4, 1e-6, 1e-3, 0.9, 1);
+        for n in 1..=10 {
+            c.converged(c.dt(), 8, false);
+            assert!((c.dt() - 1e-4 / 0.9_f64.powi(n)).abs() < 1e-15, "step {n}");
+        }
+        // a step that costs more per simulated second turns the direction: Δt shrinks
+        let before = c.dt();
+        c.converged(before, 40, false);
+        assert!((c.dt() - before * 0.9).abs() < 1e-15);
+        // at the cap it stays
+        let mut c = DtController::new(1e-3, 1e-6, 1e-3, 0.9, 1);
+        c.converged(1e-3, 8, false);
+        assert_eq!(c.dt(), 1e-3);
     }
 }
