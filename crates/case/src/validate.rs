@@ -272,6 +272,9 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
         );
     }
     c.range("run.dt.factor", run.dt.factor, B::Open(0.0), B::Closed(1.0));
+    if let Some(f) = run.dt.failure_factor {
+        c.range("run.dt.failure_factor", f, B::Open(0.0), B::Open(1.0));
+    }
     if run.dt.steps_per_change < 1 {
         c.fail(
             "run.dt.steps_per_change",

@@ -133,6 +133,12 @@ fn time_step_bounds() {
         &t,
         &["run.dt.steps_per_change", "an integer >= 1"],
     );
+    let t = replace_once(
+        &mslide(),
+        "factor: 0.9",
+        "factor: 0.9, failure_factor: Some(1.5)",
+    );
+    rejected("dtfail.ron", &t, &["run.dt.failure_factor", "(0, 1)"]);
 }
 
 #[test]

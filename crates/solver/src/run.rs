@@ -86,14 +86,17 @@ pub struct DtController {
     iterations: usize,
     steps: usize,
     steps_per_change: usize,
+    failure_factor: f64,
     cost_old: f64,
 }
 
 impl DtController {
     /// Starts at `initial`, bounded by [min, max], changing by `factor` (MFIX `DT_FAC`) after
-    /// every `steps_per_change` converged steps (MFIX `STEPS_MIN` = 5; at least 1).
+    /// every `steps_per_change` converged steps (MFIX `STEPS_MIN` = 5; at least 1). A failed
+    /// step multiplies Δt by `factor` (MFIX) or by [`DtController::with_failure_factor`]'s.
     pub fn new(initial: f64, min: f64, max: f64, factor: f64, steps_per_change: usize) -> Self {
         DtController {
+            failure_factor: factor,
             dt: initial,
             min,
             max,
@@ -104,6 +107,12 @@ impl DtController {
             steps_per_change: steps_per_change.max(1),
             cost_old: 0.0,
         }
+    }
+
+    /// The controller with `failure_factor` instead of `factor` after a failed step.
+    pub fn with_failure_factor(mut self, failure_factor: f64) -> Self {
+        self.failure_factor = failure_factor;
+        self
     }
 
     /// The Δt to try next [s].
@@ -144,7 +153,7 @@ impl DtController {
         self.iterations = 0;
         self.steps = 0;
         self.cost_old = 0.0;
-        self.dt *= self.factor.min(0.999_999);
+        self.dt *= self.failure_factor.min(0.999_999);
         self.dt >= self.min
     }
 }
@@ -950,7 +959,8 @@ pub fn run_case(
         run.dt.max,
         run.dt.factor,
         run.dt.steps_per_change,
-    );
+    )
+    .with_failure_factor(run.dt.failure_factor.unwrap_or(run.dt.factor));
     let mut summary = RunSummary {
         case: case.name.clone(),
         fidelity: fidelity.to_string(),
@@ -1183,5 +1193,9 @@ mod tests {
         let mut c = DtController::new(1e-3, 1e-6, 1e-3, 0.9, 1);
         c.converged(1e-3, 8, false);
         assert_eq!(c.dt(), 1e-3);
+        // a failure factor of its own
+        let mut c = DtController::new(1e-3, 1e-6, 1e-3, 0.9, 5).with_failure_factor(0.5);
+        assert!(c.failed());
+        assert!((c.dt() - 5e-4).abs() < 1e-15);
     }
 }
