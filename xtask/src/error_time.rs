@@ -761,11 +761,15 @@ fn read_history(dir: &Path, case: &Case, x_start: f64) -> Option<History> {
 /// 4.108170 against 4.108188 m/s with it, docs/performance.md session 6); fixing it keeps
 /// the study's runs, made before the sensitivity base relaxed, one solver configuration.
 /// Likewise every θ row is classified dilute or dense by the current εs at every outer
-/// iteration (`numerics.dilute_cells`), as MFIX does.
+/// iteration (`numerics.dilute_cells`), and Δt follows MFIX's controller (a change per 5
+/// converged steps, × `factor` after a failed one), which the sensitivity and flume bases
+/// change for speed (docs/performance.md, session 7).
 fn mfix_iteration(case: &mut Case) {
     case.numerics.relaxation.wall_closures = 1.0;
     case.numerics.relaxation.wall_closures_at = WallRelaxationScope::Everywhere;
     case.numerics.dilute_cells = DiluteCellClass::EveryIteration;
+    case.run.dt.steps_per_change = 5;
+    case.run.dt.failure_factor = None;
 }
 
 /// Runs (or with `reuse` reads) one level of one case with one scheme.
