@@ -82,18 +82,19 @@ fn mesh_prints_the_two_paper_grids() {
     assert!(text(&o).contains("cells: 40 x 10 = 400"), "{}", text(&o));
 }
 
+/// `runout run <file> --fidelity smoke --quiet [extra] --out <a temp folder named by tag>`:
+/// the output and the folder.
+fn run_smoke(file: &str, tag: &str, extra: &[&str]) -> (Output, PathBuf) {
+    let out = std::env::temp_dir().join(format!("runout-run{tag}-{}", std::process::id()));
+    let mut args = vec!["run", file, "--fidelity", "smoke", "--quiet"];
+    args.extend_from_slice(extra);
+    args.extend_from_slice(&["--out", out.to_str().unwrap()]);
+    (runout(&args), out)
+}
+
 #[test]
 fn run_writes_fields_monitors_and_summary() {
-    let out = std::env::temp_dir().join(format!("runout-run-{}", std::process::id()));
-    let o = runout(&[
-        "run",
-        "examples/cavity-re100.ron",
-        "--fidelity",
-        "smoke",
-        "--quiet",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let (o, out) = run_smoke("examples/cavity-re100.ron", "", &[]);
     assert!(o.status.success(), "{}", text(&o));
     let summary = std::fs::read_to_string(out.join("summary.json")).unwrap();
     assert!(summary.contains("\"Completed\""), "{summary}");
@@ -104,18 +105,7 @@ fn run_writes_fields_monitors_and_summary() {
 
 #[test]
 fn run_end_time_overrides_the_fidelity_and_rejects_a_bad_value() {
-    let out = std::env::temp_dir().join(format!("runout-run-t-{}", std::process::id()));
-    let o = runout(&[
-        "run",
-        "examples/cavity-re100.ron",
-        "--fidelity",
-        "smoke",
-        "--quiet",
-        "--end-time",
-        "0.25",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let (o, _) = run_smoke("examples/cavity-re100.ron", "-t", &["--end-time", "0.25"]);
     assert!(o.status.success(), "{}", text(&o));
     // the smoke preset ends at 1.0 s
     assert!(text(&o).contains("at t = 0.25 s"), "{}", text(&o));
@@ -130,16 +120,7 @@ fn run_end_time_overrides_the_fidelity_and_rejects_a_bad_value() {
 
 #[test]
 fn run_solves_the_mfix_slide_with_its_johnson_jackson_floor_at_smoke_fidelity() {
-    let out = std::env::temp_dir().join(format!("runout-run-m-{}", std::process::id()));
-    let o = runout(&[
-        "run",
-        "cases/mfix-slope/jj.ron",
-        "--fidelity",
-        "smoke",
-        "--quiet",
-        "--out",
-        out.to_str().unwrap(),
-    ]);
+    let (o, out) = run_smoke("cases/mfix-slope/jj.ron", "-m", &[]);
     assert!(o.status.success(), "{}", text(&o));
     let summary = std::fs::read_to_string(out.join("summary.json")).unwrap();
     assert!(summary.contains("\"Completed\""), "{summary}");
