@@ -487,6 +487,10 @@ pub struct RunControl {
     pub tolerances: Tolerances,
     /// interval between field outputs [s]
     pub output_interval: f64,
+    /// interval between checkpoints [s of simulated time] (`runout run --restart` continues
+    /// from the last one); none: only on a signal or `--checkpoint-every`
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub checkpoint_interval: Option<f64>,
 }
 
 /// Adaptive time-step control (model-spec §4.12).

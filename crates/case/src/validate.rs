@@ -301,6 +301,9 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
         );
     }
     c.positive("run.output_interval", run.output_interval);
+    if let Some(interval) = run.checkpoint_interval {
+        c.positive("run.checkpoint_interval", interval);
+    }
 
     let r = &case.numerics.relaxation;
     for (name, v) in [

@@ -15,10 +15,14 @@ mod material;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
 
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use runout_case::{case_files, load, Fidelity, Loaded};
+use runout_output::RunStatus;
+use runout_solver::run::RunOptions;
 use tracing::info;
 
 #[derive(Parser, Debug)]
@@ -67,6 +71,18 @@ enum Command {
         /// stop at this simulated time [s] instead of the fidelity's end time
         #[arg(long, value_parser = parse_end_time)]
         end_time: Option<f64>,
+        /// run only the case of this name (of a sweep file's cases)
+        #[arg(long, value_name = "NAME")]
+        only: Option<String>,
+        /// continue the run in DIR (default: the output folder) from its newest checkpoint
+        #[arg(long, value_name = "DIR", num_args = 0..=1)]
+        restart: Option<Option<PathBuf>>,
+        /// replace an earlier run in the output folder (its files only) instead of refusing
+        #[arg(long, conflicts_with = "restart")]
+        overwrite: bool,
+        /// also write a checkpoint after every this many minutes of wall time
+        #[arg(long, value_name = "MINUTES", value_parser = parse_minutes)]
+        checkpoint_every: Option<f64>,
     },
     /// Print every closure value (kinetic theory, friction, drag, K_cp, granular-energy
     /// sources) at one state as JSON.
@@ -78,6 +94,13 @@ enum Command {
 
 fn parse_fidelity(s: &str) -> Result<Fidelity, String> {
     s.parse()
+}
+
+fn parse_minutes(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(m) if m.is_finite() && m > 0.0 && m <= 1e6 => Ok(m),
+        _ => Err(format!("`{s}`: a number of minutes in (0, 1e6]")),
+    }
 }
 
 fn parse_end_time(s: &str) -> Result<f64, String> {
@@ -186,16 +209,53 @@ fn mesh(file: &Path, fidelity: Fidelity) -> ExitCode {
     ExitCode::SUCCESS
 }
 
+/// A flag that SIGINT and SIGTERM set: the run stops after its current step with a
+/// checkpoint; a second signal exits at once (the last checkpoint stays).
+fn stop_on_signals() -> Arc<AtomicBool> {
+    let stop = Arc::new(AtomicBool::new(false));
+    let flag = stop.clone();
+    let installed = ctrlc::set_handler(move || {
+        if flag.swap(true, Ordering::SeqCst) {
+            eprintln!("runout: second signal: stopping now; the last checkpoint stays");
+            std::process::exit(EXIT_INTERRUPTED);
+        }
+        eprintln!(
+            "runout: signal received: stopping after this step with a checkpoint \
+             (a second signal stops at once)"
+        );
+    });
+    if let Err(e) = installed {
+        eprintln!("runout: warning: signals will stop the run without a checkpoint: {e}");
+    }
+    stop
+}
+
+/// The exit status of a run stopped by a signal (128 + SIGINT, as shells report it).
+const EXIT_INTERRUPTED: i32 = 130;
+
 fn run(
     file: &Path,
+    only: Option<&str>,
     fidelity: Fidelity,
     out: Option<&Path>,
     quiet: bool,
     end_time: Option<f64>,
+    options: &RunOptions,
 ) -> ExitCode {
     let Some(mut cases) = flow_cases(file) else {
         return ExitCode::FAILURE;
     };
+    if let Some(name) = only {
+        cases.retain(|c| c.case.name == name);
+        if cases.is_empty() {
+            eprintln!(
+                "{}: --only {name}: no case of that name (`runout check {}` lists them)",
+                file.display(),
+                file.display()
+            );
+            return ExitCode::FAILURE;
+        }
+    }
     if let Some(t) = end_time {
         for sc in &mut cases {
             sc.case.run.end_time = t;
@@ -221,7 +281,7 @@ fn run(
                 .progress_chars("=> "),
         );
         bar.set_prefix(sc.case.name.clone());
-        let result = runout_solver::run_case(&sc.case, fidelity, &dir, |p| {
+        let result = runout_solver::run::run_case_with(&sc.case, fidelity, &dir, options, |p| {
             bar.set_position((1000.0 * p.time / p.end_time) as u64);
             bar.set_message(format!(
                 "t = {:.4} s, dt = {:.2e} s, {} it, {} steps",
@@ -242,9 +302,30 @@ fn run(
                     summary.wall_time,
                     dir.display()
                 );
-                if summary.status != runout_output::RunStatus::Completed {
-                    status = ExitCode::FAILURE;
-                }
+                match &summary.status {
+                    RunStatus::Completed => {}
+                    RunStatus::Interrupted => {
+                        let end = end_time.map_or(String::new(), |t| format!(" --end-time {t}"));
+                        println!(
+                            "{}: interrupted at t = {} s with a checkpoint; continue with:\n  \
+                             runout run {} --fidelity {fidelity}{end} --restart {}",
+                            summary.case,
+                            summary.simulated_time,
+                            file.display(),
+                            dir.display()
+                        );
+                        return ExitCode::from(EXIT_INTERRUPTED as u8);
+                    }
+                    RunStatus::Diverged { diagnosis } => {
+                        eprintln!("{}: diverged: {diagnosis}", summary.case);
+                        status = ExitCode::FAILURE;
+                    }
+                    RunStatus::Failed { reason } => {
+                        eprintln!("{}: failed: {reason}", summary.case);
+                        status = ExitCode::FAILURE;
+                    }
+                    RunStatus::Running => status = ExitCode::FAILURE,
+                };
             }
             Err(e) => {
                 eprintln!("{}: {e}", file.display());
@@ -273,7 +354,33 @@ fn main() -> ExitCode {
             out,
             quiet,
             end_time,
-        } => run(&file, fidelity, out.as_deref(), quiet, end_time),
+            only,
+            restart,
+            overwrite,
+            checkpoint_every,
+        } => {
+            let (out, restart) = match restart {
+                Some(Some(dir)) => (Some(dir), true),
+                Some(None) => (out, true),
+                None => (out, false),
+            };
+            let options = RunOptions {
+                restart,
+                replace: overwrite,
+                checkpoint_every: checkpoint_every
+                    .map(|m| std::time::Duration::from_secs_f64(60.0 * m)),
+                stop: Some(stop_on_signals()),
+            };
+            run(
+                &file,
+                only.as_deref(),
+                fidelity,
+                out.as_deref(),
+                quiet,
+                end_time,
+                &options,
+            )
+        }
         Command::Closures(args) => match cmd_closures::run(&args) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {

@@ -37,6 +37,42 @@ impl CsvSeries {
         })
     }
 
+    /// Reopens a series written earlier for appending, cut back to its first `len` bytes
+    /// (the length [`CsvSeries::len_bytes`] gave at a checkpoint): rows a stopped run wrote
+    /// after the checkpoint are dropped, and the restarted run writes them again.
+    pub fn resume(path: &Path, columns: usize, len: u64) -> Result<Self, OutputError> {
+        let file = std::fs::OpenOptions::new()
+            .write(true)
+            .open(path)
+            .map_err(crate::io_err(path))?;
+        let found = file.metadata().map_err(crate::io_err(path))?.len();
+        if found < len {
+            return Err(OutputError::Csv {
+                path: path.to_path_buf(),
+                message: format!(
+                    "holds {found} bytes, fewer than the {len} it had at the checkpoint"
+                ),
+            });
+        }
+        file.set_len(len).map_err(crate::io_err(path))?;
+        let mut file = file;
+        std::io::Seek::seek(&mut file, std::io::SeekFrom::End(0)).map_err(crate::io_err(path))?;
+        Ok(CsvSeries {
+            path: path.to_path_buf(),
+            columns,
+            writer: csv::WriterBuilder::new()
+                .has_headers(false)
+                .from_writer(BufWriter::new(file)),
+        })
+    }
+
+    /// Bytes written so far (every row is flushed).
+    pub fn len_bytes(&self) -> Result<u64, OutputError> {
+        std::fs::metadata(&self.path)
+            .map(|m| m.len())
+            .map_err(crate::io_err(&self.path))
+    }
+
     /// Appends one row; its length must match the header.
     pub fn push(&mut self, row: &[f64]) -> Result<(), OutputError> {
         if row.len() != self.columns {

@@ -18,8 +18,13 @@ pub enum RunStatus {
         /// human-readable diagnosis
         diagnosis: String,
     },
-    /// stopped by the user or a signal
+    /// stopped by the user or a signal (a checkpoint was written: restart from it)
     Interrupted,
+    /// stopped because output could not be written (e.g. a full disk)
+    Failed {
+        /// what failed
+        reason: String,
+    },
 }
 
 /// Time-step statistics [s].

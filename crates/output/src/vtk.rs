@@ -143,6 +143,50 @@ impl PvdSeries {
         }
     }
 
+    /// Continues a series whose first entries are `entries` (from [`PvdSeries::entries`] at
+    /// a checkpoint): the `.pvd` is rewritten with them, and `.vtr` files of the series
+    /// numbered beyond them (written by a stopped run after the checkpoint) are removed.
+    pub fn resume(
+        path: impl Into<PathBuf>,
+        entries: Vec<(f64, String)>,
+    ) -> Result<Self, OutputError> {
+        let series = PvdSeries {
+            path: path.into(),
+            entries,
+        };
+        let dir = series.path.parent().unwrap_or(Path::new("")).to_path_buf();
+        let stem = series.stem();
+        let listing = std::fs::read_dir(if dir.as_os_str().is_empty() {
+            Path::new(".")
+        } else {
+            &dir
+        })
+        .map_err(crate::io_err(&dir))?;
+        for entry in listing.flatten() {
+            let name = entry.file_name().to_string_lossy().into_owned();
+            let index = name
+                .strip_prefix(&format!("{stem}_"))
+                .and_then(|rest| rest.strip_suffix(".vtr"))
+                .and_then(|n| n.parse::<usize>().ok());
+            if index.is_some_and(|k| k >= series.entries.len()) {
+                std::fs::remove_file(entry.path()).map_err(crate::io_err(&entry.path()))?;
+            }
+        }
+        series.write()?;
+        Ok(series)
+    }
+
+    /// The (time, file) entries written so far.
+    pub fn entries(&self) -> &[(f64, String)] {
+        &self.entries
+    }
+
+    fn stem(&self) -> String {
+        self.path
+            .file_stem()
+            .map_or("fields".into(), |s| s.to_string_lossy().into_owned())
+    }
+
     /// Writes `fields` at `time` as `<stem>_<index>.vtr` next to the `.pvd` and adds it.
     pub fn push(
         &mut self,
@@ -150,10 +194,7 @@ impl PvdSeries {
         time: f64,
         fields: &[CellField<'_>],
     ) -> Result<PathBuf, OutputError> {
-        let stem = self
-            .path
-            .file_stem()
-            .map_or("fields".into(), |s| s.to_string_lossy().into_owned());
+        let stem = self.stem();
         let file = format!("{stem}_{:05}.vtr", self.entries.len());
         let dir = self.path.parent().unwrap_or(Path::new(""));
         let vtr = dir.join(&file);

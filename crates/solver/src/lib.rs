@@ -10,6 +10,7 @@
 //!   [`volume_fraction`] (the solids volume-fraction correction, §4.7);
 //! - [`chute1d`]: a 1-D steady inclined-chute boundary-value solver, the reference of
 //!   issue 7's chute check;
+//! - [`state`]: a solver's state between steps as named arrays (checkpoints);
 //! - [`verify`]: the verification problems of the single-phase core.
 #![deny(missing_docs)]
 // Stencil loops index several staggered arrays with the same (i, j); indices read better
@@ -24,6 +25,7 @@ pub mod momentum;
 pub mod pea;
 pub mod run;
 pub mod single_phase;
+pub mod state;
 pub mod stress;
 pub mod transport;
 pub mod two_fluid;

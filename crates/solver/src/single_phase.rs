@@ -303,6 +303,41 @@ impl SinglePhase {
         self.v_old.copy_from_slice(&self.v);
     }
 
+    /// The state the next step reads: u, v, p and the last d coefficients and pressure
+    /// correction (issue 21's checkpoints; see [`crate::state`]).
+    pub fn save_state(&self) -> crate::state::SolverState {
+        let mut st = crate::state::SolverState::default();
+        for (name, values) in [
+            ("u", &self.u),
+            ("v", &self.v),
+            ("p", &self.p),
+            ("d_u", &self.d_u),
+            ("d_v", &self.d_v),
+            ("p_corr", &self.p_corr),
+        ] {
+            st.put(name, values);
+        }
+        st
+    }
+
+    /// Puts back a state saved by [`SinglePhase::save_state`] on the same grid.
+    pub fn load_state(
+        &mut self,
+        st: &crate::state::SolverState,
+    ) -> Result<(), crate::state::StateError> {
+        for (name, values) in [
+            ("u", &mut self.u),
+            ("v", &mut self.v),
+            ("p", &mut self.p),
+            ("d_u", &mut self.d_u),
+            ("d_v", &mut self.d_v),
+            ("p_corr", &mut self.p_corr),
+        ] {
+            st.take(name, values)?;
+        }
+        Ok(())
+    }
+
     /// Restores the fields of the start of the step (after a failed step).
     pub fn restore_step(&mut self) {
         self.u.copy_from_slice(&self.u_old);

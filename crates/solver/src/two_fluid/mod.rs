@@ -32,6 +32,8 @@
 
 use std::time::Instant;
 
+mod checkpoint;
+
 use rayon::prelude::*;
 
 use runout_closures::friction::p_star;

@@ -1,0 +1,398 @@
+//! From a case to a solver: the single-phase core for a gas-only case, the two-fluid model
+//! for a case with solids, with their initial state and boundary conditions.
+
+use runout_case::{
+    Boundary, Case, Convection, FrictionModel, GasWall, Gravity, InitialPressure, KineticTheory,
+    OutletPressure, SolidsWall,
+};
+use runout_closures::{ClosureParams, FrictionParams, Gas, Particles};
+use runout_mesh::{Grid, Sides};
+use runout_walls::{RobinFace, SolidsWallModel};
+
+use super::RunError;
+use crate::single_phase::{Fluid, Settings, SideBc, SinglePhase};
+use crate::transport::Scheme;
+use crate::two_fluid::{SolidsSpec, TwoFluid, TwoFluidSettings};
+
+fn wall_closure(gas: &GasWall) -> RobinFace {
+    match *gas {
+        GasWall::NoSlip => RobinFace::dirichlet(0.0),
+        GasWall::FreeSlip => RobinFace::ZERO_GRADIENT,
+        GasWall::Moving { u_w } => RobinFace::dirichlet(u_w),
+        GasWall::PartialSlip { h_u, u_w } => RobinFace::partial_slip(h_u, u_w),
+    }
+}
+
+/// The gas condition of a boundary: the wall's closure of the tangential velocity, or the
+/// outlet's (hydrostatic) pressure.
+fn outlet_bc(b: &Boundary, gas: &runout_case::Gas) -> SideBc {
+    match b {
+        Boundary::Wall { gas: wall, .. } => SideBc::Wall(wall_closure(wall)),
+        Boundary::PressureOutlet {
+            pressure: OutletPressure::Uniform(p),
+        } => SideBc::Outlet(*p),
+        Boundary::PressureOutlet {
+            pressure: OutletPressure::Hydrostatic(p0),
+        } => SideBc::HydrostaticOutlet {
+            p0: *p0,
+            density: gas.density,
+        },
+    }
+}
+
+/// The gas conditions of the four sides of a case.
+fn gas_sides(case: &Case, gas: &runout_case::Gas) -> Sides<SideBc> {
+    let b = &case.boundaries;
+    Sides {
+        west: outlet_bc(&b.west, gas),
+        east: outlet_bc(&b.east, gas),
+        south: outlet_bc(&b.south, gas),
+        north: outlet_bc(&b.north, gas),
+    }
+}
+
+/// Initial gas pressure of cell centre (x, y): hydrostatic from the top-left corner,
+/// p = p_ref + ρ_g g·(r − r_top-left), or the case's uniform value.
+fn initial_gas_pressure(
+    case: &Case,
+    gas: &runout_case::Gas,
+    gravity: (f64, f64),
+    grid: &Grid,
+    x: f64,
+    y: f64,
+) -> f64 {
+    match case.initial.gas_pressure {
+        InitialPressure::Hydrostatic => {
+            gas.reference_pressure
+                + gas.density * (gravity.0 * (x - grid.x.start()) + gravity.1 * (y - grid.y.end()))
+        }
+        InitialPressure::Uniform(p) => p,
+    }
+}
+
+/// Gravity vector of a slope α: g = (g sin α, −g cos α) (architecture.md conventions).
+pub(super) fn gravity_vector(magnitude: f64, slope_deg: f64) -> (f64, f64) {
+    let a = slope_deg.to_radians();
+    (magnitude * a.sin(), -magnitude * a.cos())
+}
+
+/// Builds the single-phase solver of a gas-only case, or says why it cannot.
+pub fn single_phase_solver(case: &Case) -> Result<SinglePhase, RunError> {
+    let unsupported = |reason: &str| RunError::Unsupported {
+        case: case.name.clone(),
+        reason: reason.into(),
+    };
+    if !case.solids.is_empty() {
+        return Err(unsupported(
+            "has solids phases: the two-fluid model is not implemented yet (issue 7); only \
+             single-phase gas cases run today",
+        ));
+    }
+    let gas = case
+        .gas
+        .as_ref()
+        .ok_or_else(|| unsupported("has neither gas nor solids"))?;
+    let gravity = match case.gravity {
+        Gravity::Constant { magnitude, slope } => gravity_vector(magnitude, slope),
+        Gravity::TiltOnImpact { .. } => {
+            return Err(unsupported(
+                "tilts gravity on solids impact, which needs a solids phase",
+            ));
+        }
+    };
+    let grid = case.grid().map_err(|source| RunError::Mesh {
+        case: case.name.clone(),
+        source,
+    })?;
+    let b = &case.boundaries;
+    let bcs = gas_sides(case, gas);
+    let r = &case.numerics.relaxation;
+    let settings = Settings {
+        scheme: match case.numerics.convection {
+            Convection::Upwind => Scheme::Upwind,
+            Convection::Superbee => Scheme::Superbee,
+        },
+        relax_velocity: r.velocity,
+        relax_pressure: r.pressure,
+        ..Settings::default()
+    };
+    let fluid = Fluid {
+        density: gas.density,
+        viscosity: gas.viscosity,
+    };
+    let mut s = SinglePhase::new(grid, fluid, bcs, gravity, settings).map_err(|source| {
+        RunError::Solver {
+            case: case.name.clone(),
+            source,
+        }
+    })?;
+    // Initial state: uniform gas velocity; hydrostatic or uniform pressure.
+    let (u0, v0) = case.initial.gas_velocity;
+    s.u.iter_mut().for_each(|u| *u = u0);
+    s.v.iter_mut().for_each(|v| *v = v0);
+    let g = s.grid().clone();
+    for j in 0..g.ny() {
+        for i in 0..g.nx() {
+            let (x, y) = g.cell_centre(i, j);
+            s.p[g.cell_index(i, j)] = initial_gas_pressure(case, gas, gravity, &g, x, y);
+        }
+    }
+    // Walls: zero normal velocity on the wall faces.
+    let (nx, ny) = (g.nx(), g.ny());
+    for j in 0..ny {
+        for (i, side) in [(0, &b.west), (nx, &b.east)] {
+            if matches!(side, Boundary::Wall { .. }) {
+                s.u[i + (nx + 1) * j] = 0.0;
+            }
+        }
+    }
+    for i in 0..nx {
+        for (j, side) in [(0, &b.south), (ny, &b.north)] {
+            if matches!(side, Boundary::Wall { .. }) {
+                s.v[i + nx * j] = 0.0;
+            }
+        }
+    }
+    Ok(s)
+}
+
+/// Builds the two-fluid solver of a case with solids, or says what it still lacks.
+pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
+    let unsupported = |reason: String| RunError::Unsupported {
+        case: case.name.clone(),
+        reason,
+    };
+    let gas = case.gas.as_ref().ok_or_else(|| {
+        unsupported("a dry case (no gas) is not supported by the two-fluid solver yet".into())
+    })?;
+    if !matches!(case.models.kinetic_theory, KineticTheory::Lun1984 { .. }) {
+        return Err(unsupported(
+            "only the Lun 1984 kinetic theory with the θ PDE is implemented".into(),
+        ));
+    }
+    // one phase only: MFIX's P* of several phases uses the mixture εg and εs/Σε_cp weights
+    // (model-spec §2.4.1, §4.4), not implemented
+    if case.models.friction == FrictionModel::Schaeffer && case.solids.len() > 1 {
+        return Err(unsupported(
+            "Schaeffer friction with more than one solids phase is not implemented".into(),
+        ));
+    }
+    let grid = case.grid().map_err(|source| RunError::Mesh {
+        case: case.name.clone(),
+        source,
+    })?;
+    let b = &case.boundaries;
+    let gas_walls = gas_sides(case, gas);
+    // (tangential closure, θ closure, state-dependent model) of each side for the solids
+    type SolidsSide = (SideBc, Option<RobinFace>, Option<SolidsWallModel>);
+    let solids_side = |b: &Boundary| -> Result<SolidsSide, RunError> {
+        let model_err = |e: runout_walls::WallError| unsupported(format!("wall model: {e}"));
+        // placeholders that the per-face closures of a state-dependent model replace
+        let by_model = |m: SolidsWallModel| {
+            (
+                SideBc::Wall(RobinFace::ZERO_GRADIENT),
+                Some(RobinFace::ZERO_GRADIENT),
+                Some(m),
+            )
+        };
+        Ok(match b {
+            Boundary::PressureOutlet { .. } => (outlet_bc(b, gas), None, None),
+            Boundary::Wall { solids, .. } => match solids {
+                SolidsWall::NoSlip => (
+                    SideBc::Wall(RobinFace::dirichlet(0.0)),
+                    Some(RobinFace::ZERO_GRADIENT),
+                    None,
+                ),
+                SolidsWall::FreeSlip => (
+                    SideBc::Wall(RobinFace::ZERO_GRADIENT),
+                    Some(RobinFace::ZERO_GRADIENT),
+                    None,
+                ),
+                SolidsWall::PartialSlip {
+                    h_u,
+                    u_w,
+                    h_theta,
+                    theta_w,
+                    c,
+                } => (
+                    SideBc::Wall(RobinFace::partial_slip(*h_u, *u_w)),
+                    Some(RobinFace::user_theta(*h_theta, *theta_w, *c)),
+                    None,
+                ),
+                SolidsWall::JohnsonJackson {
+                    specularity,
+                    wall_restitution,
+                    wall_friction_angle,
+                    u_w,
+                } => by_model(
+                    SolidsWallModel::johnson_jackson(
+                        *specularity,
+                        *wall_restitution,
+                        *wall_friction_angle,
+                        *u_w,
+                    )
+                    .map_err(model_err)?,
+                ),
+                SolidsWall::RevisitedJohnsonJackson {
+                    wall_restitution,
+                    wall_friction_angle,
+                    phi0,
+                    u_w,
+                } => by_model(
+                    SolidsWallModel::revisited_johnson_jackson(
+                        *wall_restitution,
+                        *wall_friction_angle,
+                        *phi0,
+                        *u_w,
+                    )
+                    .map_err(model_err)?,
+                ),
+                SolidsWall::Jenkins {
+                    wall_restitution,
+                    wall_friction_angle,
+                    u_w,
+                } => by_model(
+                    SolidsWallModel::jenkins(*wall_restitution, *wall_friction_angle, *u_w)
+                        .map_err(model_err)?,
+                ),
+            },
+        })
+    };
+    let (w, e, s_, n) = (
+        solids_side(&b.west)?,
+        solids_side(&b.east)?,
+        solids_side(&b.south)?,
+        solids_side(&b.north)?,
+    );
+    let specs: Vec<SolidsSpec> = case
+        .solids
+        .iter()
+        .map(|m| SolidsSpec {
+            params: ClosureParams {
+                particles: Particles {
+                    diameter: m.diameter,
+                    density: m.density,
+                    restitution: m.restitution,
+                },
+                gas: Gas {
+                    density: gas.density,
+                    viscosity: gas.viscosity,
+                },
+                friction: FrictionParams::new(
+                    m.max_packing,
+                    m.friction_min_packing,
+                    m.internal_friction_angle,
+                ),
+                radial: case.models.radial_distribution,
+                friction_model: case.models.friction,
+                drag: case.models.drag,
+            },
+            eps_max: m.max_packing,
+            walls: Sides {
+                west: w.0,
+                east: e.0,
+                south: s_.0,
+                north: n.0,
+            },
+            theta_walls: Sides {
+                west: w.1,
+                east: e.1,
+                south: s_.1,
+                north: n.1,
+            },
+            wall_models: Sides {
+                west: w.2,
+                east: e.2,
+                south: s_.2,
+                north: n.2,
+            },
+        })
+        .collect();
+    let gravity = match case.gravity {
+        Gravity::Constant { magnitude, slope } => gravity_vector(magnitude, slope),
+        Gravity::TiltOnImpact { magnitude, .. } => gravity_vector(magnitude, 0.0),
+    };
+    let r = &case.numerics.relaxation;
+    let settings = TwoFluidSettings {
+        scheme: match case.numerics.convection {
+            Convection::Upwind => Scheme::Upwind,
+            Convection::Superbee => Scheme::Superbee,
+        },
+        relax_velocity: r.velocity,
+        relax_pressure: r.pressure,
+        relax_eps: r.eps_s,
+        relax_theta: r.theta,
+        relax_wall_closures: r.wall_closures,
+        relax_wall_closures_oscillating_only: r.wall_closures_at
+            == runout_case::WallRelaxationScope::Oscillating,
+        freeze_cycling_dilute_class: case.numerics.dilute_cells
+            == runout_case::DiluteCellClass::FrozenWhenCycling,
+        periodic_x: false,
+        exact_solids_continuity: case.numerics.exact_solids_mass,
+        detect_stall: case.run.tolerances.detect_stall,
+    };
+    let fluid = Fluid {
+        density: gas.density,
+        viscosity: gas.viscosity,
+    };
+    let mut tf = TwoFluid::new(grid.clone(), fluid, gas_walls, specs, gravity, settings)
+        .map_err(|e| unsupported(format!("setting up the two-fluid solver: {e}")))?;
+    // initial state: gas, background θ, then the blocks in order
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let (u0, v0) = case.initial.gas_velocity;
+    tf.u_g.iter_mut().for_each(|u| *u = u0);
+    tf.v_g.iter_mut().for_each(|v| *v = v0);
+    for s in tf.solids.iter_mut() {
+        s.theta
+            .iter_mut()
+            .for_each(|t| *t = case.initial.theta.max(runout_closures::guards::THETA_SMALL));
+    }
+    for j in 0..ny {
+        for i in 0..nx {
+            let (x, y) = grid.cell_centre(i, j);
+            let k = i + nx * j;
+            tf.p_g[k] = initial_gas_pressure(case, gas, gravity, &grid, x, y);
+            for block in &case.initial.regions {
+                if x >= block.x.0 && x <= block.x.1 && y >= block.y.0 && y <= block.y.1 {
+                    for (s, bs) in tf.solids.iter_mut().zip(&block.solids) {
+                        s.eps[k] = bs.eps_s;
+                        s.theta[k] = bs.theta.max(runout_closures::guards::THETA_SMALL);
+                        for f in [i + (nx + 1) * j, i + 1 + (nx + 1) * j] {
+                            s.u[f] = bs.velocity.0;
+                        }
+                        for f in [k, k + nx] {
+                            s.v[f] = bs.velocity.1;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    // walls: zero normal velocity of every phase
+    for (side, is_wall) in [
+        (0usize, matches!(b.west, Boundary::Wall { .. })),
+        (nx, matches!(b.east, Boundary::Wall { .. })),
+    ] {
+        if is_wall {
+            for j in 0..ny {
+                tf.u_g[side + (nx + 1) * j] = 0.0;
+                tf.solids
+                    .iter_mut()
+                    .for_each(|s| s.u[side + (nx + 1) * j] = 0.0);
+            }
+        }
+    }
+    for (side, is_wall) in [
+        (0usize, matches!(b.south, Boundary::Wall { .. })),
+        (ny, matches!(b.north, Boundary::Wall { .. })),
+    ] {
+        if is_wall {
+            for i in 0..nx {
+                tf.v_g[i + nx * side] = 0.0;
+                tf.solids.iter_mut().for_each(|s| s.v[i + nx * side] = 0.0);
+            }
+        }
+    }
+    tf.sync_volume_fractions();
+    Ok(tf)
+}

@@ -1,0 +1,369 @@
+//! The time loop's view of a solver (single phase or two-fluid): one step, the fields and
+//! monitors it writes, and its state for checkpoints.
+
+use runout_mesh::Grid;
+use runout_output::{CellField, OutputError, PvdSeries};
+
+use super::build::gravity_vector;
+use super::RunError;
+use crate::single_phase::SinglePhase;
+use crate::state::{SolverState, StateError};
+use crate::two_fluid::TwoFluid;
+
+/// What one time step of a case solver reports to the time loop.
+pub(super) struct StepReport {
+    pub(super) converged: bool,
+    pub(super) iterations: usize,
+    pub(super) residual: f64,
+    /// the residual breakdown (and locations where known), for a diagnosis
+    pub(super) detail: String,
+}
+
+/// The time loop's view of a solver: single phase or two-fluid.
+pub(super) trait CaseSolver {
+    fn step(&mut self, dt: f64, run: &runout_case::RunControl) -> Result<StepReport, RunError>;
+    /// Puts back the fields of the start of the step after a step that failed with an error.
+    fn restore(&mut self);
+    /// Gravity schedules act here, before each step.
+    fn before_step(&mut self) {}
+    fn write_fields(&mut self, series: &mut PvdSeries, time: f64) -> Result<(), OutputError>;
+    fn profile_header(&self) -> &'static [&'static str];
+    fn profile(&self, x: f64, y: f64) -> Vec<f64>;
+    fn grid(&self) -> &Grid;
+    /// Net continuity imbalance relative to the flow through the domain (0 if no flow).
+    fn mass_imbalance_ratio(&self) -> f64;
+    /// Total solids mass per unit depth [kg m⁻¹] (0 for a single phase).
+    fn solids_mass(&self) -> f64 {
+        0.0
+    }
+    /// Largest solids volume fraction of any phase in any cell (0 for a single phase).
+    fn max_eps_s(&self) -> f64 {
+        0.0
+    }
+    /// (front x, εs-weighted mean solids u) for the bulk monitor, `None` without solids.
+    fn bulk(&self, _threshold: f64) -> Option<(f64, f64)> {
+        None
+    }
+    /// The front interpolated within its cell, for the front tracker; `None` without solids.
+    fn interpolated_front(&self, _threshold: f64) -> Option<f64> {
+        None
+    }
+    /// Wall time per part of the iteration, if the solver keeps it.
+    fn time_profile(&self) -> Vec<(String, f64)> {
+        Vec::new()
+    }
+    /// h_w^u of the floor's velocity node nearest to `x` (the wall probe of paper Fig. 9),
+    /// `None` where the floor has no state-dependent wall model.
+    fn floor_h_u(&self, _x: f64) -> Option<f64> {
+        None
+    }
+    /// The state the next step reads, for a checkpoint.
+    fn save_state(&self) -> SolverState;
+    /// Puts back a state of [`CaseSolver::save_state`].
+    fn load_state(&mut self, state: &SolverState) -> Result<(), StateError>;
+}
+
+pub(super) struct SinglePhaseCase {
+    pub(super) solver: SinglePhase,
+    pub(super) velocity: Vec<f64>,
+}
+
+impl CaseSolver for SinglePhaseCase {
+    fn step(&mut self, dt: f64, run: &runout_case::RunControl) -> Result<StepReport, RunError> {
+        let t = &run.tolerances;
+        let out = self
+            .solver
+            .step(dt, t.residual, t.diverge, t.max_iterations as usize)
+            .map_err(|source| RunError::Solver {
+                case: String::new(),
+                source,
+            })?;
+        let places: Vec<String> = self
+            .solver
+            .locate_residual(&out.last)
+            .iter()
+            .map(|(eq, r, x, y)| format!("{eq} {r:.3e} (largest at x = {x:.4} m, y = {y:.4} m)"))
+            .collect();
+        let history: Vec<String> = out
+            .history
+            .iter()
+            .filter(|h| !h.is_nan())
+            .map(|h| format!("{h:.3e}"))
+            .collect();
+        Ok(StepReport {
+            converged: out.converged,
+            iterations: out.iterations,
+            residual: out.residual,
+            detail: format!(
+                "{}; residual history {}",
+                places.join(", "),
+                history.join(" ")
+            ),
+        })
+    }
+
+    fn write_fields(&mut self, series: &mut PvdSeries, time: f64) -> Result<(), OutputError> {
+        self.solver.centre_velocities(&mut self.velocity);
+        series.push(
+            self.solver.grid(),
+            time,
+            &[
+                CellField::vector("u_g", &self.velocity),
+                CellField::scalar("p_g", &self.solver.p),
+            ],
+        )?;
+        Ok(())
+    }
+
+    fn profile_header(&self) -> &'static [&'static str] {
+        &["y", "u_g", "v_g"]
+    }
+
+    fn profile(&self, x: f64, y: f64) -> Vec<f64> {
+        vec![y, self.solver.u_at(x, y), self.solver.v_at(x, y)]
+    }
+
+    fn grid(&self) -> &Grid {
+        self.solver.grid()
+    }
+
+    fn mass_imbalance_ratio(&self) -> f64 {
+        let g = self.solver.grid();
+        let flow: f64 =
+            self.solver.u.iter().map(|u| u.abs()).sum::<f64>() * g.y.length() / g.ny() as f64;
+        if flow > 0.0 {
+            self.solver.mass_imbalance() / flow
+        } else {
+            0.0
+        }
+    }
+
+    fn save_state(&self) -> SolverState {
+        self.solver.save_state()
+    }
+
+    fn restore(&mut self) {
+        self.solver.restore_step();
+    }
+
+    fn load_state(&mut self, state: &SolverState) -> Result<(), StateError> {
+        self.solver.load_state(state)
+    }
+}
+
+/// The state entry saying whether a tilt-on-impact schedule has not tilted yet.
+const TILT_PENDING: &str = "tilt_pending";
+
+/// A two-fluid case: the solver, the gravity schedule and output scratch.
+pub(super) struct TwoFluidCase {
+    pub(super) solver: TwoFluid,
+    /// (magnitude, slope in degrees, contact εs) of a tilt-on-impact schedule not yet tilted
+    pub(super) tilt: Option<(f64, f64, f64)>,
+    pub(super) scratch: Vec<f64>,
+    pub(super) scratch2: Vec<f64>,
+}
+
+impl TwoFluidCase {
+    /// Cell-centred (u, v) of face fields, interleaved.
+    fn centre(grid: &Grid, u: &[f64], v: &[f64], out: &mut [f64]) {
+        let (nx, ny) = (grid.nx(), grid.ny());
+        for j in 0..ny {
+            for i in 0..nx {
+                let k = i + nx * j;
+                out[2 * k] = 0.5 * (u[i + (nx + 1) * j] + u[i + 1 + (nx + 1) * j]);
+                out[2 * k + 1] = 0.5 * (v[k] + v[k + nx]);
+            }
+        }
+    }
+}
+
+impl CaseSolver for TwoFluidCase {
+    fn step(&mut self, dt: f64, run: &runout_case::RunControl) -> Result<StepReport, RunError> {
+        let t = &run.tolerances;
+        let out = self
+            .solver
+            .step(
+                dt,
+                t.residual,
+                t.theta_residual,
+                t.diverge,
+                t.max_iterations as usize,
+            )
+            .map_err(|e| RunError::Unsupported {
+                case: String::new(),
+                reason: format!("two-fluid step failed: {e}"),
+            })?;
+        let r = out.last;
+        Ok(StepReport {
+            converged: out.converged,
+            iterations: out.iterations,
+            residual: out.residual,
+            // only a failed step's detail is read (its diagnosis)
+            detail: if out.converged {
+                String::new()
+            } else {
+                format!(
+                    "momentum {:.3e}, gas continuity {:.3e}, solids continuity {:.3e}, granular energy {:.3e}; {}{}",
+                    r.momentum,
+                    r.gas_mass,
+                    r.solids_mass,
+                    r.theta,
+                    self.solver.residual_locations(),
+                    out.failure.map_or(String::new(), |f| format!("; the last try stopped on: {f}"))
+                )
+            },
+        })
+    }
+
+    fn before_step(&mut self) {
+        if let Some((magnitude, slope, contact)) = self.tilt {
+            let nx = self.solver.grid().nx();
+            // impact: solids first reach a floor cell (cases.md, paper Fig. 3)
+            if self
+                .solver
+                .solids
+                .iter()
+                .any(|s| s.eps[..nx].iter().any(|&e| e >= contact))
+            {
+                self.solver.set_gravity(gravity_vector(magnitude, slope));
+                self.tilt = None;
+            }
+        }
+    }
+
+    fn write_fields(&mut self, series: &mut PvdSeries, time: f64) -> Result<(), OutputError> {
+        let grid = self.solver.grid().clone();
+        let s = &self.solver.solids[0];
+        Self::centre(&grid, &self.solver.u_g, &self.solver.v_g, &mut self.scratch);
+        Self::centre(&grid, &s.u, &s.v, &mut self.scratch2);
+        series.push(
+            &grid,
+            time,
+            &[
+                CellField::scalar("eps_s", &s.eps),
+                CellField::vector("u_s", &self.scratch2),
+                CellField::scalar("theta", &s.theta),
+                CellField::scalar("p_s", &s.p_s),
+                CellField::vector("u_g", &self.scratch),
+                CellField::scalar("p_g", &self.solver.p_g),
+            ],
+        )?;
+        Ok(())
+    }
+
+    fn profile_header(&self) -> &'static [&'static str] {
+        &["y", "eps_s", "u_s", "theta"]
+    }
+
+    fn profile(&self, x: f64, y: f64) -> Vec<f64> {
+        let g = self.solver.grid();
+        let nx = g.nx();
+        let (i, j) = g.locate(x, y).unwrap_or((0, 0));
+        let s = &self.solver.solids[0];
+        let k = i + nx * j;
+        let u = 0.5 * (s.u[i + (nx + 1) * j] + s.u[i + 1 + (nx + 1) * j]);
+        vec![y, s.eps[k], u, s.theta[k]]
+    }
+
+    fn grid(&self) -> &Grid {
+        self.solver.grid()
+    }
+
+    fn mass_imbalance_ratio(&self) -> f64 {
+        0.0
+    }
+
+    fn restore(&mut self) {
+        self.solver.restore_step();
+    }
+
+    fn save_state(&self) -> SolverState {
+        let mut state = self.solver.save_state();
+        // gravity is in the solver's state; whether the impact is still to come is here
+        state.put_counts(TILT_PENDING, [self.tilt.is_some() as u8]);
+        state
+    }
+
+    fn load_state(&mut self, state: &SolverState) -> Result<(), StateError> {
+        self.solver.load_state(state)?;
+        if state.take_counts(TILT_PENDING, 1)?[0] == 0 {
+            self.tilt = None;
+        }
+        Ok(())
+    }
+
+    fn solids_mass(&self) -> f64 {
+        (0..self.solver.solids.len())
+            .map(|m| self.solver.solids_mass(m))
+            .sum()
+    }
+
+    fn time_profile(&self) -> Vec<(String, f64)> {
+        self.solver
+            .profile()
+            .parts()
+            .iter()
+            .map(|(name, t)| (name.to_string(), *t))
+            .collect()
+    }
+    fn max_eps_s(&self) -> f64 {
+        self.solver
+            .solids
+            .iter()
+            .flat_map(|s| s.eps.iter())
+            .fold(0.0, |a: f64, &e| a.max(e))
+    }
+
+    fn floor_h_u(&self, x: f64) -> Option<f64> {
+        let faces = self.solver.grid().x.faces();
+        let k = (0..faces.len())
+            .min_by(|&a, &b| (faces[a] - x).abs().total_cmp(&(faces[b] - x).abs()))?;
+        self.solver
+            .has_floor_model(0)
+            .then(|| self.solver.solids[0].floor_h_u[k])
+    }
+
+    /// The front for the gate speeds: where εs of the floor row falls through `threshold`
+    /// beyond its last cell i at or above it, interpolated linearly between the centres of
+    /// cells i and i + 1 (the east face at the last cell). Unlike the whole-cell front of
+    /// the bulk monitor it moves continuously, so speeds from it are not quantised in steps
+    /// of Δx per sampling interval.
+    fn interpolated_front(&self, threshold: f64) -> Option<f64> {
+        let g = self.solver.grid();
+        let nx = g.nx();
+        let (xc, eps) = (g.x.centres(), &self.solver.solids[0].eps);
+        let front = (0..nx)
+            .rev()
+            .find(|&i| eps[i] >= threshold)
+            .map_or(g.x.start(), |i| {
+                if i + 1 == nx {
+                    g.x.faces()[nx]
+                } else {
+                    let (e0, e1) = (eps[i], eps[i + 1]);
+                    xc[i] + (e0 - threshold) / (e0 - e1) * (xc[i + 1] - xc[i])
+                }
+            });
+        Some(front)
+    }
+
+    fn bulk(&self, threshold: f64) -> Option<(f64, f64)> {
+        let g = self.solver.grid();
+        let (nx, ny) = (g.nx(), g.ny());
+        let s = &self.solver.solids[0];
+        // front: the largest x whose floor cell has εs ≥ threshold (cases.md family F)
+        let front = (0..nx)
+            .rev()
+            .find(|&i| s.eps[i] >= threshold)
+            .map_or(g.x.start(), |i| g.x.faces()[i + 1]);
+        let (mut num, mut den) = (0.0, 0.0);
+        for j in 0..ny {
+            for i in 0..nx {
+                let k = i + nx * j;
+                let w = s.eps[k] * g.cell_volume(i, j);
+                num += w * 0.5 * (s.u[i + (nx + 1) * j] + s.u[i + 1 + (nx + 1) * j]);
+                den += w;
+            }
+        }
+        Some((front, if den > 0.0 { num / den } else { 0.0 }))
+    }
+}

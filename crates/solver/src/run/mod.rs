@@ -1,0 +1,453 @@
+//! Running a case: the time loop with MFIX's adaptive time step (model-spec §4.12) and its
+//! retries, the monitors, checkpoints and restarts, stopping on a signal, and the run
+//! summary.
+//!
+//! One concept per file: [`build`] turns a case into a solver, [`case_solver`] is the
+//! loop's view of a solver, [`dt_controller`] the Δt rule, [`monitors`] the scheduled
+//! output, [`checkpoint`] the restart files, [`out_dir`] the run folder's protection.
+
+mod build;
+mod case_solver;
+pub mod checkpoint;
+mod dt_controller;
+mod monitors;
+pub mod out_dir;
+
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+use std::time::{Duration, Instant};
+
+use runout_case::{Case, Fidelity, Gravity};
+use runout_mesh::Grid;
+use runout_output::{DtStats, OutputError, RunStatus, RunSummary};
+
+pub use build::{single_phase_solver, two_fluid_solver};
+pub use dt_controller::DtController;
+
+use crate::single_phase::SolverError;
+use case_solver::{CaseSolver, SinglePhaseCase, StepReport, TwoFluidCase};
+use checkpoint::Checkpoint;
+use monitors::Monitors;
+
+/// Why a case cannot run or stopped.
+#[derive(Debug, thiserror::Error)]
+pub enum RunError {
+    /// The case needs physics this solver does not have yet.
+    #[error("case `{case}`: {reason}")]
+    Unsupported {
+        /// case name
+        case: String,
+        /// what is missing
+        reason: String,
+    },
+    /// The grid could not be built.
+    #[error("case `{case}`: grid: {source}")]
+    Mesh {
+        /// case name
+        case: String,
+        /// the mesh error
+        source: runout_mesh::MeshError,
+    },
+    /// The solver failed outright (not a retryable non-convergence).
+    #[error("case `{case}`: {source}")]
+    Solver {
+        /// case name
+        case: String,
+        /// the solver error
+        source: SolverError,
+    },
+    /// The output folder cannot take the run.
+    #[error("{dir}: {reason}")]
+    OutDir {
+        /// the folder
+        dir: std::path::PathBuf,
+        /// why not
+        reason: String,
+    },
+    /// A checkpoint cannot be written, read or used.
+    #[error("case `{case}`: checkpoint: {source}")]
+    Checkpoint {
+        /// case name
+        case: String,
+        /// what is wrong
+        source: checkpoint::CheckpointError,
+    },
+    /// Writing output failed.
+    #[error("case `{case}`: output: {source}")]
+    Output {
+        /// case name
+        case: String,
+        /// the output error
+        source: OutputError,
+    },
+}
+
+/// Progress of a running case, for progress bars.
+#[derive(Clone, Copy, Debug)]
+pub struct Progress {
+    /// simulated time [s]
+    pub time: f64,
+    /// end time [s]
+    pub end_time: f64,
+    /// current Δt [s]
+    pub dt: f64,
+    /// outer iterations of the last step
+    pub iterations: usize,
+    /// accepted steps so far
+    pub steps: u64,
+}
+
+/// How a run starts and when it stops early.
+#[derive(Clone, Debug, Default)]
+pub struct RunOptions {
+    /// continue from the newest checkpoint in the output folder instead of from t = 0
+    pub restart: bool,
+    /// a fresh run replaces an earlier run in the output folder (its files only) instead
+    /// of refusing to start
+    pub replace: bool,
+    /// also write a checkpoint after every this much wall time (besides the case's
+    /// `run.checkpoint_interval` of simulated time)
+    pub checkpoint_every: Option<Duration>,
+    /// set (by a signal handler) to stop at the end of the current step, with a
+    /// checkpoint and status `Interrupted`
+    pub stop: Option<Arc<AtomicBool>>,
+}
+
+/// Runs `case` at `fidelity` from t = 0, writing into `out_dir` and replacing any earlier
+/// run there; see [`run_case_with`].
+pub fn run_case(
+    case: &Case,
+    fidelity: Fidelity,
+    out_dir: &Path,
+    progress: impl FnMut(&Progress),
+) -> Result<RunSummary, RunError> {
+    let options = RunOptions {
+        replace: true,
+        ..RunOptions::default()
+    };
+    run_case_with(case, fidelity, out_dir, &options, progress)
+}
+
+/// The solver of a case behind the time loop's interface.
+fn case_solver(case: &Case) -> Result<Box<dyn CaseSolver>, RunError> {
+    if case.solids.is_empty() {
+        let s = single_phase_solver(case)?;
+        let n = s.grid().cell_count();
+        return Ok(Box::new(SinglePhaseCase {
+            solver: s,
+            velocity: vec![0.0; 2 * n],
+        }));
+    }
+    let tf = two_fluid_solver(case)?;
+    let n = tf.grid().cell_count();
+    let tilt = match case.gravity {
+        Gravity::TiltOnImpact {
+            magnitude,
+            slope,
+            contact_eps_s,
+        } => Some((magnitude, slope, contact_eps_s)),
+        Gravity::Constant { .. } => None,
+    };
+    Ok(Box::new(TwoFluidCase {
+        solver: tf,
+        tilt,
+        scratch: vec![0.0; 2 * n],
+        scratch2: vec![0.0; 2 * n],
+    }))
+}
+
+/// The summary as reported: the raw tallies of `raw` (Δt mean still a sum) turned into
+/// statistics at `time`.
+fn reported(raw: &RunSummary, time: f64, mass_now: f64, mass0: f64) -> RunSummary {
+    let mut s = raw.clone();
+    if s.steps > 0 {
+        s.dt.mean /= s.steps as f64;
+    }
+    if !s.dt.min.is_finite() {
+        // no accepted step, or only one shortened to the end time
+        s.dt.min = s.dt.max;
+    }
+    if mass0 > 0.0 {
+        s.solids_mass_change = mass_now / mass0 - 1.0;
+    }
+    s.simulated_time = time;
+    s
+}
+
+/// Wall time per part of the iteration: `before` (from a checkpoint) plus this process's.
+fn merged_profile(before: &[(String, f64)], now: Vec<(String, f64)>) -> Vec<(String, f64)> {
+    if before.is_empty() {
+        return now;
+    }
+    now.into_iter()
+        .map(|(name, t)| {
+            let earlier = before.iter().find(|(n, _)| *n == name).map_or(0.0, |p| p.1);
+            (name, earlier + t)
+        })
+        .collect()
+}
+
+/// Runs `case` at `fidelity`, writing into `out_dir`: `fields.pvd` + `.vtr` files at every
+/// output interval, `profile_x<x>_t<t>.csv` for each profile monitor, `bulk.csv` for a bulk
+/// monitor (solids mass, front, mean u_s), `resolved.ron` (the case as run),
+/// `checkpoints/` and `summary.json` (rewritten at every checkpoint). A step that does not
+/// converge, or whose linear solve fails, is retried with a smaller Δt; below Δt_min the
+/// run stops with a diagnosis in the summary and keeps what it wrote. A stop request
+/// ([`RunOptions::stop`]) ends the run after the current step with a checkpoint; an output
+/// error ends it with status `Failed` in the summary where the summary can still be written.
+pub fn run_case_with(
+    case: &Case,
+    fidelity: Fidelity,
+    out_dir: &Path,
+    options: &RunOptions,
+    mut progress: impl FnMut(&Progress),
+) -> Result<RunSummary, RunError> {
+    let case = case.at_fidelity(fidelity);
+    let name = case.name.clone();
+    let out_err = |source| RunError::Output {
+        case: name.clone(),
+        source,
+    };
+    let ckpt_err = |source| RunError::Checkpoint {
+        case: name.clone(),
+        source,
+    };
+    let resolved = ron::ser::to_string_pretty(&case, ron::ser::PrettyConfig::default())
+        .expect("a case serialises");
+    let mut solver = case_solver(&case)?;
+    let grid: Grid = solver.grid().clone();
+    let fresh_summary = || RunSummary {
+        case: case.name.clone(),
+        fidelity: fidelity.to_string(),
+        cells: (grid.nx(), grid.ny()),
+        simulated_time: 0.0,
+        wall_time: 0.0,
+        steps: 0,
+        rejected_steps: 0,
+        outer_iterations: 0,
+        dt: DtStats {
+            min: f64::INFINITY,
+            max: 0.0,
+            mean: 0.0,
+        },
+        solids_mass_change: 0.0,
+        max_mass_imbalance: 0.0,
+        max_eps_s: 0.0,
+        status: RunStatus::Running,
+        profile: Vec::new(),
+    };
+    let run = &case.run;
+    // the state at the start: a checkpoint's, or t = 0's
+    let (mut monitors, mut time, mut dt, mut summary, mass0) = if options.restart {
+        let (path, c) =
+            checkpoint::latest(out_dir, &resolved, fidelity.name()).map_err(ckpt_err)?;
+        solver.load_state(&c.solver).map_err(|e| {
+            ckpt_err(checkpoint::CheckpointError::Mismatch {
+                path: path.clone(),
+                reason: e.to_string(),
+            })
+        })?;
+        let monitors = Monitors::resume(&case, out_dir, &c.monitors).map_err(out_err)?;
+        tracing::info!("restarting from {} at t = {} s", path.display(), c.time);
+        let mut summary = c.summary;
+        summary.status = RunStatus::Running;
+        (monitors, c.time, c.dt, summary, c.initial_solids_mass)
+    } else {
+        let earlier = out_dir::run_files(out_dir);
+        if !earlier.is_empty() {
+            if !options.replace {
+                let restart = if checkpoint::exists(out_dir) {
+                    "continue it from its checkpoint (--restart) or replace it (--overwrite)"
+                } else {
+                    "replace it (--overwrite) or choose another folder"
+                };
+                return Err(RunError::OutDir {
+                    dir: out_dir.to_path_buf(),
+                    reason: format!("holds an earlier run ({}): {restart}", earlier.join(", ")),
+                });
+            }
+            out_dir::clear_run(out_dir).map_err(|e| RunError::OutDir {
+                dir: out_dir.to_path_buf(),
+                reason: format!("clearing the earlier run: {e}"),
+            })?;
+        }
+        std::fs::create_dir_all(out_dir).map_err(|e| {
+            out_err(OutputError::Io {
+                path: out_dir.to_path_buf(),
+                source: e,
+            })
+        })?;
+        let monitors = Monitors::start(&case, solver.as_mut(), out_dir).map_err(out_err)?;
+        let dt = DtController::new(
+            run.dt.initial,
+            run.dt.min,
+            run.dt.max,
+            run.dt.factor,
+            run.dt.steps_per_change,
+        )
+        .with_failure_factor(run.dt.failure_factor.unwrap_or(run.dt.factor));
+        let mut summary = fresh_summary();
+        summary.max_eps_s = solver.max_eps_s();
+        (monitors, 0.0, dt, summary, solver.solids_mass())
+    };
+    runout_output::write_atomic(&out_dir.join("resolved.ron"), resolved.as_bytes())
+        .map_err(out_err)?;
+
+    let started = Instant::now();
+    let wall_before = summary.wall_time;
+    let profile_before = std::mem::take(&mut summary.profile);
+    let end = run.end_time;
+    let max_it = run.tolerances.max_iterations as usize;
+    let next_multiple = |t: f64, interval: f64| ((t / interval).floor() + 1.0) * interval;
+    let mut next_checkpoint = run
+        .checkpoint_interval
+        .map_or(f64::INFINITY, |i| next_multiple(time, i));
+    let mut last_checkpoint = Instant::now();
+    // the raw summary and a checkpoint of the current state
+    let save = |solver: &dyn CaseSolver,
+                monitors: &Monitors,
+                dt: &DtController,
+                summary: &RunSummary,
+                time: f64|
+     -> Result<(), RunError> {
+        let wrote = Instant::now();
+        let mut raw = summary.clone();
+        raw.wall_time = wall_before + started.elapsed().as_secs_f64();
+        raw.profile = merged_profile(&profile_before, solver.time_profile());
+        let c = Checkpoint {
+            solver_version: checkpoint::SOLVER_VERSION.to_string(),
+            case: resolved.clone(),
+            fidelity: fidelity.name().to_string(),
+            time,
+            dt: dt.clone(),
+            summary: raw.clone(),
+            initial_solids_mass: mass0,
+            monitors: monitors.state().map_err(out_err)?,
+            solver: solver.save_state(),
+        };
+        let (path, bytes) = checkpoint::write(out_dir, &c).map_err(ckpt_err)?;
+        reported(&raw, time, solver.solids_mass(), mass0)
+            .write_json(&out_dir.join("summary.json"))
+            .map_err(out_err)?;
+        tracing::info!(
+            bytes,
+            seconds = wrote.elapsed().as_secs_f64(),
+            "checkpoint {} at t = {time} s",
+            path.display()
+        );
+        Ok(())
+    };
+    let stop_requested = || {
+        options
+            .stop
+            .as_ref()
+            .is_some_and(|s| s.load(Ordering::SeqCst))
+    };
+    let mut failure: Option<OutputError> = None;
+    while time < end * (1.0 - 1e-12) {
+        if stop_requested() {
+            summary.status = RunStatus::Interrupted;
+            break;
+        }
+        let step_dt = dt.dt().min(end - time);
+        let shortened = step_dt < dt.dt();
+        solver.before_step();
+        // a failed linear solve (or any solver error) is a step that did not converge:
+        // retried with a smaller Δt like one
+        let outcome = solver.step(step_dt, run).unwrap_or_else(|e| {
+            solver.restore();
+            StepReport {
+                converged: false,
+                iterations: 0,
+                residual: f64::INFINITY,
+                detail: format!("the solver failed: {e}"),
+            }
+        });
+        tracing::debug!(
+            time,
+            dt = step_dt,
+            iterations = outcome.iterations,
+            converged = outcome.converged,
+            residual = outcome.residual,
+            detail = outcome.detail.as_str(),
+            "step"
+        );
+        if !outcome.converged {
+            summary.rejected_steps += 1;
+            if !dt.failed() {
+                summary.status = RunStatus::Diverged {
+                    diagnosis: format!(
+                        "the step from t = {time:.6e} s did not converge and dt fell below dt_min = {:.1e} s; \
+                         last try: dt = {step_dt:.3e} s, {} outer iterations, residual sum {:.3e}: {}",
+                        run.dt.min, outcome.iterations, outcome.residual, outcome.detail
+                    ),
+                };
+                break;
+            }
+            continue;
+        }
+        time += step_dt;
+        summary.steps += 1;
+        summary.outer_iterations += outcome.iterations as u64;
+        if !shortened {
+            summary.dt.min = summary.dt.min.min(step_dt);
+        }
+        summary.dt.max = summary.dt.max.max(step_dt);
+        summary.dt.mean += step_dt;
+        summary.max_mass_imbalance = summary
+            .max_mass_imbalance
+            .max(solver.mass_imbalance_ratio());
+        summary.max_eps_s = summary.max_eps_s.max(solver.max_eps_s());
+        dt.converged(step_dt, outcome.iterations, outcome.iterations >= max_it);
+        if let Err(e) = monitors.after_step(solver.as_mut(), &grid, time, end) {
+            failure = Some(e);
+            break;
+        }
+        progress(&Progress {
+            time,
+            end_time: end,
+            dt: dt.dt(),
+            iterations: outcome.iterations,
+            steps: summary.steps,
+        });
+        let by_wall = options
+            .checkpoint_every
+            .is_some_and(|every| last_checkpoint.elapsed() >= every);
+        if time >= next_checkpoint * (1.0 - 1e-9) || by_wall {
+            save(solver.as_ref(), &monitors, &dt, &summary, time)?;
+            if let Some(i) = run.checkpoint_interval {
+                next_checkpoint = next_multiple(time * (1.0 + 1e-9), i);
+            }
+            last_checkpoint = Instant::now();
+        }
+    }
+    if summary.status == RunStatus::Interrupted {
+        save(solver.as_ref(), &monitors, &dt, &summary, time)?;
+    }
+    if failure.is_none() {
+        failure = monitors.finish().err();
+    }
+    if let Some(e) = &failure {
+        summary.status = RunStatus::Failed {
+            reason: format!("writing output at t = {time} s: {e}"),
+        };
+    }
+    summary.wall_time = wall_before + started.elapsed().as_secs_f64();
+    summary.profile = merged_profile(&profile_before, solver.time_profile());
+    if summary.status == RunStatus::Running {
+        summary.status = RunStatus::Completed;
+    }
+    let summary = reported(&summary, time, solver.solids_mass(), mass0);
+    let written = summary.write_json(&out_dir.join("summary.json"));
+    if let Some(e) = failure {
+        return Err(out_err(e));
+    }
+    written.map_err(out_err)?;
+    Ok(summary)
+}
+
+/// The default output folder of a case: `runs/<case>/<fidelity>`.
+pub fn default_out_dir(root: &Path, case: &str, fidelity: Fidelity) -> PathBuf {
+    root.join("runs").join(case).join(fidelity.name())
+}

@@ -1,0 +1,223 @@
+//! The two-fluid solver's state between steps, for checkpoints (issue 21).
+//!
+//! What carries over a step boundary, and so goes into a checkpoint:
+//! - the fields: εg, P_g, u_g, v_g and per phase εs, u_s, v_s, θ (the old time level is
+//!   copied from them when the next step begins, [`TwoFluid::begin_step`]);
+//! - the closure values of the last outer iteration (P_s, P*, μ, λ, κ, K_cp, F_gs and the
+//!   kinetic parts): the first assembly of a step reads some of them before the closure pass
+//!   refreshes them;
+//! - the explicit stress sources, strain traces and the last corrections (e, ε', P', d),
+//!   read as lagged values by the first outer iteration;
+//! - the wall closures of the state-dependent walls, their cycle watch and the wall-face
+//!   velocities: a closure is relaxed against its last value, and the strain rates of the
+//!   wall cells use the last wall-face velocity;
+//! - the θ-row classes and their change counts, and h_w^u at the floor probe.
+//!
+//! Work arrays that every step rewrites before reading (stencils, face data, the
+//! array-of-structs closure records, the strain records) are left out; the restart test
+//! (`crates/solver/tests/restart.rs`) shows the set is complete: a run restarted from a
+//! checkpoint repeats the uninterrupted run bit for bit.
+
+use runout_walls::RobinFace;
+
+use super::{ClosureCycle, TwoFluid};
+use crate::momentum::WallFaces;
+use crate::state::{SolverState, StateError};
+use runout_mesh::Side;
+
+impl TwoFluid {
+    /// The state the next step reads (module doc).
+    pub fn save_state(&self) -> SolverState {
+        let mut st = SolverState::default();
+        st.put("gravity", &[self.gravity.0, self.gravity.1]);
+        st.put("eps_g", &self.eps_g);
+        st.put("p_g", &self.p_g);
+        st.put("u_g", &self.u_g);
+        st.put("v_g", &self.v_g);
+        st.put("d_u", &self.d_u);
+        st.put("d_v", &self.d_v);
+        st.put("p_corr", &self.p_corr);
+        for (m, s) in self.solids.iter().enumerate() {
+            let name = |field: &str| format!("solids[{m}].{field}");
+            for (field, values) in [
+                ("eps", &s.eps),
+                ("u", &s.u),
+                ("v", &s.v),
+                ("theta", &s.theta),
+                ("p_s", &s.p_s),
+                ("p_star", &s.p_star),
+                ("mu", &s.mu),
+                ("lambda", &s.lambda),
+                ("kappa", &s.kappa),
+                ("k_cp", &s.k_cp),
+                ("f_gs", &s.f_gs),
+                ("p_kin_over_theta", &s.p_kin_over_theta),
+                ("mu_kin", &s.mu_kin),
+                ("lambda_kin", &s.lambda_kin),
+                ("gamma_over_theta", &s.gamma_over_theta),
+                ("j_slip", &s.j_slip),
+                ("tau_u", &s.tau_u),
+                ("tau_v", &s.tau_v),
+                ("tr_d", &s.tr_d),
+                ("tr_d2", &s.tr_d2),
+                ("e_u", &s.e_u),
+                ("e_v", &s.e_v),
+                ("eps_prime", &s.eps_prime),
+                ("floor_h_u", &s.floor_h_u),
+            ] {
+                st.put(name(field), values);
+            }
+            st.put_counts(name("dilute_u"), s.dilute_u.iter().map(|&b| b as u8));
+            st.put_counts(name("dilute_v"), s.dilute_v.iter().map(|&b| b as u8));
+            st.put_counts(name("theta_dense"), s.theta_dense.iter().map(|&b| b as u8));
+            st.put_counts(
+                name("theta_class_changes"),
+                s.theta_class_changes.iter().copied(),
+            );
+            for side in Side::ALL {
+                let tag = |what: &str| name(&format!("{what}.{side:?}"));
+                st.put(tag("wall_face_velocity"), s.wall_face_velocity.get(side));
+                put_faces(
+                    &mut st,
+                    &tag("wall_velocity"),
+                    wall_side(&s.wall_velocity, side),
+                );
+                put_faces(&mut st, &tag("wall_theta"), wall_side(&s.wall_theta, side));
+                let cycle = s.wall_velocity_cycle.get(side);
+                st.put(
+                    tag("wall_velocity_cycle"),
+                    &cycle.iter().map(|c| c.last_change).collect::<Vec<_>>(),
+                );
+            }
+        }
+        st
+    }
+
+    /// Puts back a state saved by [`TwoFluid::save_state`] from a solver of the same case;
+    /// refuses one whose arrays do not match this solver's grid and phases.
+    pub fn load_state(&mut self, st: &SolverState) -> Result<(), StateError> {
+        let mut gravity = [0.0; 2];
+        st.take("gravity", &mut gravity)?;
+        self.gravity = (gravity[0], gravity[1]);
+        st.take("eps_g", &mut self.eps_g)?;
+        st.take("p_g", &mut self.p_g)?;
+        st.take("u_g", &mut self.u_g)?;
+        st.take("v_g", &mut self.v_g)?;
+        st.take("d_u", &mut self.d_u)?;
+        st.take("d_v", &mut self.d_v)?;
+        st.take("p_corr", &mut self.p_corr)?;
+        for (m, s) in self.solids.iter_mut().enumerate() {
+            let name = |field: &str| format!("solids[{m}].{field}");
+            for (field, values) in [
+                ("eps", &mut s.eps),
+                ("u", &mut s.u),
+                ("v", &mut s.v),
+                ("theta", &mut s.theta),
+                ("p_s", &mut s.p_s),
+                ("p_star", &mut s.p_star),
+                ("mu", &mut s.mu),
+                ("lambda", &mut s.lambda),
+                ("kappa", &mut s.kappa),
+                ("k_cp", &mut s.k_cp),
+                ("f_gs", &mut s.f_gs),
+                ("p_kin_over_theta", &mut s.p_kin_over_theta),
+                ("mu_kin", &mut s.mu_kin),
+                ("lambda_kin", &mut s.lambda_kin),
+                ("gamma_over_theta", &mut s.gamma_over_theta),
+                ("j_slip", &mut s.j_slip),
+                ("tau_u", &mut s.tau_u),
+                ("tau_v", &mut s.tau_v),
+                ("tr_d", &mut s.tr_d),
+                ("tr_d2", &mut s.tr_d2),
+                ("e_u", &mut s.e_u),
+                ("e_v", &mut s.e_v),
+                ("eps_prime", &mut s.eps_prime),
+                ("floor_h_u", &mut s.floor_h_u),
+            ] {
+                st.take(&name(field), values)?;
+            }
+            load_flags(st, &name("dilute_u"), &mut s.dilute_u)?;
+            load_flags(st, &name("dilute_v"), &mut s.dilute_v)?;
+            load_flags(st, &name("theta_dense"), &mut s.theta_dense)?;
+            let n = s.theta_class_changes.len();
+            s.theta_class_changes
+                .copy_from_slice(st.take_counts(&name("theta_class_changes"), n)?);
+            for side in Side::ALL {
+                let tag = |what: &str| name(&format!("{what}.{side:?}"));
+                st.take(
+                    &tag("wall_face_velocity"),
+                    s.wall_face_velocity.get_mut(side),
+                )?;
+                *wall_side_mut(&mut s.wall_velocity, side) = take_faces(st, &tag("wall_velocity"))?;
+                *wall_side_mut(&mut s.wall_theta, side) = take_faces(st, &tag("wall_theta"))?;
+                let changes = find_len(st, &tag("wall_velocity_cycle"))?;
+                let mut last = vec![0.0; changes];
+                st.take(&tag("wall_velocity_cycle"), &mut last)?;
+                *s.wall_velocity_cycle.get_mut(side) = last
+                    .into_iter()
+                    .map(|last_change| ClosureCycle {
+                        last_change,
+                        cycling: false,
+                    })
+                    .collect();
+            }
+        }
+        self.sync_volume_fractions();
+        Ok(())
+    }
+}
+
+fn load_flags(st: &SolverState, name: &str, into: &mut [bool]) -> Result<(), StateError> {
+    let values = st.take_counts(name, into.len())?;
+    for (b, &v) in into.iter_mut().zip(values) {
+        *b = v != 0;
+    }
+    Ok(())
+}
+
+fn wall_side(w: &WallFaces, side: Side) -> &Option<Vec<RobinFace>> {
+    match side {
+        Side::West => &w.west,
+        Side::East => &w.east,
+        Side::South => &w.south,
+        Side::North => &w.north,
+    }
+}
+
+fn wall_side_mut(w: &mut WallFaces, side: Side) -> &mut Option<Vec<RobinFace>> {
+    match side {
+        Side::West => &mut w.west,
+        Side::East => &mut w.east,
+        Side::South => &mut w.south,
+        Side::North => &mut w.north,
+    }
+}
+
+/// A side's per-node closures as (g, h, c) triples; absent when the side has none.
+fn put_faces(st: &mut SolverState, name: &str, faces: &Option<Vec<RobinFace>>) {
+    if let Some(f) = faces {
+        let flat: Vec<f64> = f.iter().flat_map(|r| [r.g, r.h, r.c]).collect();
+        st.put(name, &flat);
+    }
+}
+
+fn take_faces(st: &SolverState, name: &str) -> Result<Option<Vec<RobinFace>>, StateError> {
+    let Ok(len) = find_len(st, name) else {
+        return Ok(None);
+    };
+    let mut flat = vec![0.0; len];
+    st.take(name, &mut flat)?;
+    Ok(Some(
+        flat.chunks_exact(3)
+            .map(|c| RobinFace {
+                g: c[0],
+                h: c[1],
+                c: c[2],
+            })
+            .collect(),
+    ))
+}
+
+fn find_len(st: &SolverState, name: &str) -> Result<usize, StateError> {
+    st.len_of(name)
+}

@@ -1,0 +1,165 @@
+//! Checkpoint and restart (issue 21): a run stopped mid-way and restarted from its
+//! checkpoint repeats the uninterrupted run bit for bit: the same monitor files, the same
+//! field files, the same steps, rejected steps, outer iterations and Δt statistics.
+//!
+//! The case is the paper's Johnson–Jackson slide (S-JJ-phi, φ = 0.1) at smoke fidelity to
+//! 0.3 s: it crosses the tilt on impact (t ≈ 0.19 s), has state-dependent wall closures
+//! relaxed where they cycle, frozen dilute classes and the bulk, probe and profile
+//! monitors, so every piece of carried-over state is exercised. Two interruptions:
+//! - a stop request (what SIGINT/SIGTERM set) at step 60: the run writes a checkpoint and
+//!   ends `Interrupted`;
+//! - a kill: the same stop at step 110 with periodic checkpoints every 0.02 s, after which
+//!   the checkpoint written on the stop is deleted, so the restart starts from the last
+//!   periodic one and must cut back the files the "killed" run wrote after it.
+
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+
+use runout_case::{load, Case, Fidelity, Loaded};
+use runout_output::{RunStatus, RunSummary};
+use runout_solver::run::{checkpoint, run_case_with, RunOptions};
+
+fn slide() -> Case {
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../cases/sensitivity/S-JJ-phi.ron");
+    let Loaded::Cases(cases) = load(&file).unwrap() else {
+        panic!("a sweep")
+    };
+    let mut case = cases
+        .into_iter()
+        .find(|c| c.case.name == "S-JJ-phi_phi=0.1")
+        .unwrap()
+        .case;
+    case.fidelity.smoke.end_time = 0.3;
+    case.monitors.profiles[0].times = vec![0.1, 0.25];
+    case.monitors.profiles[0].x = 5.5;
+    case.run.output_interval = 0.02;
+    case
+}
+
+fn folder(tag: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("runout-restart-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    dir
+}
+
+/// Runs `case` into `dir`, setting the stop flag once `stop_at` steps were accepted.
+fn run(case: &Case, dir: &Path, restart: bool, stop_at: Option<u64>) -> RunSummary {
+    let stop = Arc::new(AtomicBool::new(false));
+    let options = RunOptions {
+        restart,
+        stop: Some(stop.clone()),
+        ..RunOptions::default()
+    };
+    run_case_with(case, Fidelity::Smoke, dir, &options, |p| {
+        if stop_at.is_some_and(|n| p.steps >= n) {
+            stop.store(true, Ordering::SeqCst);
+        }
+    })
+    .unwrap()
+}
+
+/// Every file of a run folder except the summary (its wall time differs), the resolved
+/// case (the killed run's names a checkpoint interval) and the checkpoints, by name.
+fn files(dir: &Path) -> Vec<(String, Vec<u8>)> {
+    let mut out: Vec<_> = std::fs::read_dir(dir)
+        .unwrap()
+        .flatten()
+        .filter(|e| e.path().is_file())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| n != "summary.json" && n != "resolved.ron")
+        .map(|n| {
+            let bytes = std::fs::read(dir.join(&n)).unwrap();
+            (n, bytes)
+        })
+        .collect();
+    out.sort();
+    out
+}
+
+fn same_run(a: &RunSummary, b: &RunSummary) {
+    assert_eq!(a.status, RunStatus::Completed);
+    assert_eq!(b.status, RunStatus::Completed);
+    assert_eq!(
+        (a.steps, a.rejected_steps, a.outer_iterations),
+        (b.steps, b.rejected_steps, b.outer_iterations)
+    );
+    assert_eq!(a.dt, b.dt);
+    assert_eq!(a.simulated_time, b.simulated_time);
+    assert_eq!(a.solids_mass_change, b.solids_mass_change);
+    assert_eq!(a.max_eps_s, b.max_eps_s);
+}
+
+fn same_files(a: &Path, b: &Path) {
+    let (fa, fb) = (files(a), files(b));
+    let names = |f: &[(String, Vec<u8>)]| f.iter().map(|x| x.0.clone()).collect::<Vec<_>>();
+    assert_eq!(names(&fa), names(&fb));
+    for ((name, x), (_, y)) in fa.iter().zip(&fb) {
+        assert!(x == y, "{name} differs between the runs");
+    }
+}
+
+#[test]
+fn a_stopped_or_killed_run_restarts_to_the_uninterrupted_result() {
+    let case = slide();
+    let whole = folder("whole");
+    let uninterrupted = run(&case, &whole, false, None);
+    assert!(uninterrupted.steps > 150, "{uninterrupted:?}");
+
+    // stopped by a signal: a checkpoint and `Interrupted`, then a restart
+    let stopped = folder("stopped");
+    let first = run(&case, &stopped, false, Some(60));
+    assert_eq!(first.status, RunStatus::Interrupted);
+    assert_eq!(first.steps, 60);
+    let summary: RunSummary =
+        serde_json::from_str(&std::fs::read_to_string(stopped.join("summary.json")).unwrap())
+            .unwrap();
+    assert_eq!(summary.status, RunStatus::Interrupted);
+    let restarted = run(&case, &stopped, true, None);
+    same_run(&uninterrupted, &restarted);
+    same_files(&whole, &stopped);
+    let resolved = |d: &Path| std::fs::read_to_string(d.join("resolved.ron")).unwrap();
+    assert_eq!(resolved(&whole), resolved(&stopped));
+
+    // killed: the restart starts from an earlier periodic checkpoint
+    let mut periodic = case.clone();
+    periodic.run.checkpoint_interval = Some(0.02);
+    let killed = folder("killed");
+    let first = run(&periodic, &killed, false, Some(110));
+    assert_eq!(first.status, RunStatus::Interrupted);
+    let ckpts = killed.join(checkpoint::CHECKPOINT_DIR);
+    let mut names: Vec<_> = std::fs::read_dir(&ckpts)
+        .unwrap()
+        .flatten()
+        .map(|e| e.path())
+        .collect();
+    names.sort();
+    assert_eq!(names.len(), 2, "the newest two are kept");
+    std::fs::remove_file(names.last().unwrap()).unwrap();
+    let restarted = run(&periodic, &killed, true, None);
+    same_run(&uninterrupted, &restarted);
+    same_files(&whole, &killed);
+
+    // a checkpoint of another case is refused with the reason
+    let mut other = periodic.clone();
+    other.solids[0].diameter *= 2.0;
+    let options = RunOptions {
+        restart: true,
+        ..RunOptions::default()
+    };
+    let err = run_case_with(&other, Fidelity::Smoke, &killed, &options, |_| {}).unwrap_err();
+    assert!(err.to_string().contains("another case"), "{err}");
+    // a fresh run into a folder holding a run is refused unless it replaces it
+    let err = run_case_with(
+        &case,
+        Fidelity::Smoke,
+        &killed,
+        &RunOptions::default(),
+        |_| {},
+    )
+    .unwrap_err();
+    assert!(err.to_string().contains("--restart"), "{err}");
+    for dir in [whole, stopped, killed] {
+        let _ = std::fs::remove_dir_all(dir);
+    }
+}
