@@ -76,6 +76,12 @@ impl DtController {
         self.cost_old = cost;
     }
 
+    /// Takes `dt` as the Δt just tried when it was shorter than the controller's (a step
+    /// cut to land on the end time), so that a failure shrinks from it.
+    pub fn shorten_to(&mut self, dt: f64) {
+        self.dt = self.dt.min(dt);
+    }
+
     /// Records a failed step; returns `false` if Δt fell below the minimum (the run stops).
     pub fn failed(&mut self) -> bool {
         self.direction = -1.0;

@@ -18,8 +18,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-use runout_case::{Case, Fidelity, Gravity};
-use runout_mesh::Grid;
+use runout_case::{Case, Fidelity, Gravity, RunControl};
 use runout_output::{DtStats, OutputError, RunStatus, RunSummary};
 
 pub use build::{single_phase_solver, two_fluid_solver};
@@ -188,6 +187,319 @@ fn merged_profile(before: &[(String, f64)], now: Vec<(String, f64)>) -> Vec<(Str
         .collect()
 }
 
+/// Where a run stands between steps, besides the solver and the monitors: what a
+/// checkpoint saves with them.
+struct Standing {
+    /// simulated time [s]
+    time: f64,
+    dt: DtController,
+    /// the summary's raw tallies (Δt mean still a sum; wall time and profile of the
+    /// processes before this one)
+    summary: RunSummary,
+    /// the solids mass at t = 0 [kg m⁻¹]
+    initial_solids_mass: f64,
+}
+
+/// What every stage of a run reads.
+struct RunContext<'a> {
+    case: &'a Case,
+    fidelity: Fidelity,
+    out_dir: &'a Path,
+    options: &'a RunOptions,
+    /// the resolved case as RON (`resolved.ron`, and the identity of a checkpoint)
+    resolved: String,
+    /// when this process started running the case
+    started: Instant,
+}
+
+impl RunContext<'_> {
+    fn out_err(&self, source: OutputError) -> RunError {
+        RunError::Output {
+            case: self.case.name.clone(),
+            source,
+        }
+    }
+
+    fn ckpt_err(&self, source: checkpoint::CheckpointError) -> RunError {
+        RunError::Checkpoint {
+            case: self.case.name.clone(),
+            source,
+        }
+    }
+
+    /// The raw summary with this process's wall time and profile added.
+    fn tallied(&self, standing: &Standing, solver: &dyn CaseSolver) -> RunSummary {
+        let mut raw = standing.summary.clone();
+        raw.wall_time += self.started.elapsed().as_secs_f64();
+        raw.profile = merged_profile(&standing.summary.profile, solver.time_profile());
+        raw
+    }
+}
+
+/// Stage 1a: a run from t = 0 into a folder that holds no other run (or whose earlier run
+/// it may replace): the monitors' files, the fields at t = 0, a fresh Δt controller.
+fn start_fresh(
+    ctx: &RunContext,
+    solver: &mut dyn CaseSolver,
+) -> Result<(Monitors, Standing), RunError> {
+    let out_dir = ctx.out_dir;
+    let earlier = out_dir::run_files(out_dir);
+    if !earlier.is_empty() {
+        if !ctx.options.replace {
+            let restart = if checkpoint::exists(out_dir) {
+                "continue it from its checkpoint (--restart) or replace it (--overwrite)"
+            } else {
+                "replace it (--overwrite) or choose another folder"
+            };
+            return Err(RunError::OutDir {
+                dir: out_dir.to_path_buf(),
+                reason: format!("holds an earlier run ({}): {restart}", earlier.join(", ")),
+            });
+        }
+        out_dir::clear_run(out_dir).map_err(|e| RunError::OutDir {
+            dir: out_dir.to_path_buf(),
+            reason: format!("clearing the earlier run: {e}"),
+        })?;
+    }
+    std::fs::create_dir_all(out_dir).map_err(|source| {
+        ctx.out_err(OutputError::Io {
+            path: out_dir.to_path_buf(),
+            source,
+        })
+    })?;
+    let monitors = Monitors::start(ctx.case, solver, out_dir).map_err(|e| ctx.out_err(e))?;
+    let d = &ctx.case.run.dt;
+    let dt = DtController::new(d.initial, d.min, d.max, d.factor, d.steps_per_change)
+        .with_failure_factor(d.failure_factor.unwrap_or(d.factor));
+    let grid = solver.grid();
+    let summary = RunSummary {
+        case: ctx.case.name.clone(),
+        fidelity: ctx.fidelity.to_string(),
+        cells: (grid.nx(), grid.ny()),
+        simulated_time: 0.0,
+        wall_time: 0.0,
+        steps: 0,
+        rejected_steps: 0,
+        outer_iterations: 0,
+        dt: DtStats {
+            min: f64::INFINITY,
+            max: 0.0,
+            mean: 0.0,
+        },
+        solids_mass_change: 0.0,
+        max_mass_imbalance: 0.0,
+        max_eps_s: solver.max_eps_s(),
+        status: RunStatus::Running,
+        profile: Vec::new(),
+    };
+    let standing = Standing {
+        time: 0.0,
+        dt,
+        summary,
+        initial_solids_mass: solver.solids_mass(),
+    };
+    Ok((monitors, standing))
+}
+
+/// Stage 1b: a run continued from the newest checkpoint of its folder (one of the same
+/// case, fidelity and solver version).
+fn resume(ctx: &RunContext, solver: &mut dyn CaseSolver) -> Result<(Monitors, Standing), RunError> {
+    let (path, c) = checkpoint::latest(ctx.out_dir, &ctx.resolved, ctx.fidelity.name())
+        .map_err(|e| ctx.ckpt_err(e))?;
+    solver.load_state(&c.solver).map_err(|e| {
+        ctx.ckpt_err(checkpoint::CheckpointError::Mismatch {
+            path: path.clone(),
+            reason: e.to_string(),
+        })
+    })?;
+    let monitors =
+        Monitors::resume(ctx.case, ctx.out_dir, &c.monitors).map_err(|e| ctx.out_err(e))?;
+    tracing::info!("restarting from {} at t = {} s", path.display(), c.time);
+    let mut summary = c.summary;
+    summary.status = RunStatus::Running;
+    let standing = Standing {
+        time: c.time,
+        dt: c.dt,
+        summary,
+        initial_solids_mass: c.initial_solids_mass,
+    };
+    Ok((monitors, standing))
+}
+
+/// Writes a checkpoint of the current state and the summary so far (status `Running`, or
+/// `Interrupted` when the run stops on a signal).
+fn save_checkpoint(
+    ctx: &RunContext,
+    solver: &dyn CaseSolver,
+    monitors: &Monitors,
+    standing: &Standing,
+) -> Result<(), RunError> {
+    let wrote = Instant::now();
+    let raw = ctx.tallied(standing, solver);
+    let c = Checkpoint {
+        solver_version: checkpoint::SOLVER_VERSION.to_string(),
+        case: ctx.resolved.clone(),
+        fidelity: ctx.fidelity.name().to_string(),
+        time: standing.time,
+        dt: standing.dt.clone(),
+        summary: raw.clone(),
+        initial_solids_mass: standing.initial_solids_mass,
+        monitors: monitors.state().map_err(|e| ctx.out_err(e))?,
+        solver: solver.save_state(),
+    };
+    let (path, bytes) = checkpoint::write(ctx.out_dir, &c).map_err(|e| ctx.ckpt_err(e))?;
+    reported(
+        &raw,
+        standing.time,
+        solver.solids_mass(),
+        standing.initial_solids_mass,
+    )
+    .write_json(&ctx.out_dir.join("summary.json"))
+    .map_err(|e| ctx.out_err(e))?;
+    tracing::info!(
+        bytes,
+        values = c.solver.value_count(),
+        seconds = wrote.elapsed().as_secs_f64(),
+        "checkpoint {} at t = {} s",
+        path.display(),
+        standing.time
+    );
+    Ok(())
+}
+
+/// Stage 2: one attempt at a step of `step_dt`: a failed linear solve (or any solver
+/// error) is a step that did not converge, retried with a smaller Δt like one.
+fn attempt_step(
+    solver: &mut dyn CaseSolver,
+    time: f64,
+    step_dt: f64,
+    run: &RunControl,
+) -> StepReport {
+    solver.before_step();
+    let outcome = solver.step(step_dt, run).unwrap_or_else(|e| {
+        solver.restore();
+        StepReport {
+            converged: false,
+            iterations: 0,
+            residual: f64::INFINITY,
+            detail: format!("the solver failed: {e}"),
+        }
+    });
+    tracing::debug!(
+        time,
+        dt = step_dt,
+        iterations = outcome.iterations,
+        converged = outcome.converged,
+        residual = outcome.residual,
+        detail = outcome.detail.as_str(),
+        "step"
+    );
+    outcome
+}
+
+/// Adds an accepted step to the summary's tallies.
+fn tally_step(
+    summary: &mut RunSummary,
+    solver: &dyn CaseSolver,
+    step_dt: f64,
+    shortened: bool,
+    iterations: usize,
+) {
+    summary.steps += 1;
+    summary.outer_iterations += iterations as u64;
+    if !shortened {
+        summary.dt.min = summary.dt.min.min(step_dt);
+    }
+    summary.dt.max = summary.dt.max.max(step_dt);
+    summary.dt.mean += step_dt;
+    summary.max_mass_imbalance = summary
+        .max_mass_imbalance
+        .max(solver.mass_imbalance_ratio());
+    summary.max_eps_s = summary.max_eps_s.max(solver.max_eps_s());
+}
+
+/// Stage 3: the time loop, from the standing time to the end time, until the run
+/// diverges, is asked to stop, or cannot write its output (returned).
+fn time_loop(
+    ctx: &RunContext,
+    solver: &mut dyn CaseSolver,
+    monitors: &mut Monitors,
+    standing: &mut Standing,
+    progress: &mut dyn FnMut(&Progress),
+) -> Result<Option<OutputError>, RunError> {
+    let run = &ctx.case.run;
+    let grid = solver.grid().clone();
+    let end = run.end_time;
+    let max_it = run.tolerances.max_iterations as usize;
+    let next_multiple = |t: f64, interval: f64| ((t / interval).floor() + 1.0) * interval;
+    let mut next_checkpoint = run
+        .checkpoint_interval
+        .map_or(f64::INFINITY, |i| next_multiple(standing.time, i));
+    let mut last_checkpoint = Instant::now();
+    let stop = ctx.options.stop.as_ref();
+    while standing.time < end * (1.0 - 1e-12) {
+        if stop.is_some_and(|s| s.load(Ordering::SeqCst)) {
+            standing.summary.status = RunStatus::Interrupted;
+            save_checkpoint(ctx, solver, monitors, standing)?;
+            return Ok(None);
+        }
+        let time = standing.time;
+        let step_dt = standing.dt.dt().min(end - time);
+        let shortened = step_dt < standing.dt.dt();
+        let outcome = attempt_step(solver, time, step_dt, run);
+        if !outcome.converged {
+            standing.summary.rejected_steps += 1;
+            // a step shortened to land on the end time is retried shorter than itself
+            if shortened {
+                standing.dt.shorten_to(step_dt);
+            }
+            if !standing.dt.failed() {
+                standing.summary.status = RunStatus::Diverged {
+                    diagnosis: format!(
+                        "the step from t = {time:.6e} s did not converge and dt fell below dt_min = {:.1e} s; \
+                         last try: dt = {step_dt:.3e} s, {} outer iterations, residual sum {:.3e}: {}",
+                        run.dt.min, outcome.iterations, outcome.residual, outcome.detail
+                    ),
+                };
+                return Ok(None);
+            }
+            continue;
+        }
+        standing.time += step_dt;
+        tally_step(
+            &mut standing.summary,
+            solver,
+            step_dt,
+            shortened,
+            outcome.iterations,
+        );
+        let hit_cap = outcome.iterations >= max_it;
+        standing.dt.converged(step_dt, outcome.iterations, hit_cap);
+        if let Err(e) = monitors.after_step(solver, &grid, standing.time, end) {
+            return Ok(Some(e));
+        }
+        progress(&Progress {
+            time: standing.time,
+            end_time: end,
+            dt: standing.dt.dt(),
+            iterations: outcome.iterations,
+            steps: standing.summary.steps,
+        });
+        let by_wall = ctx
+            .options
+            .checkpoint_every
+            .is_some_and(|every| last_checkpoint.elapsed() >= every);
+        if standing.time >= next_checkpoint * (1.0 - 1e-9) || by_wall {
+            save_checkpoint(ctx, solver, monitors, standing)?;
+            if let Some(i) = run.checkpoint_interval {
+                next_checkpoint = next_multiple(standing.time * (1.0 + 1e-9), i);
+            }
+            last_checkpoint = Instant::now();
+        }
+    }
+    Ok(None)
+}
+
 /// Runs `case` at `fidelity`, writing into `out_dir`: `fields.pvd` + `.vtr` files at every
 /// output interval, `profile_x<x>_t<t>.csv` for each profile monitor, `bulk.csv` for a bulk
 /// monitor (solids mass, front, mean u_s), `resolved.ron` (the case as run),
@@ -204,248 +516,70 @@ pub fn run_case_with(
     mut progress: impl FnMut(&Progress),
 ) -> Result<RunSummary, RunError> {
     let case = case.at_fidelity(fidelity);
-    let name = case.name.clone();
-    let out_err = |source| RunError::Output {
-        case: name.clone(),
-        source,
-    };
-    let ckpt_err = |source| RunError::Checkpoint {
-        case: name.clone(),
-        source,
-    };
-    let resolved = ron::ser::to_string_pretty(&case, ron::ser::PrettyConfig::default())
-        .expect("a case serialises");
     let mut solver = case_solver(&case)?;
-    let grid: Grid = solver.grid().clone();
-    let fresh_summary = || RunSummary {
-        case: case.name.clone(),
-        fidelity: fidelity.to_string(),
-        cells: (grid.nx(), grid.ny()),
-        simulated_time: 0.0,
-        wall_time: 0.0,
-        steps: 0,
-        rejected_steps: 0,
-        outer_iterations: 0,
-        dt: DtStats {
-            min: f64::INFINITY,
-            max: 0.0,
-            mean: 0.0,
-        },
-        solids_mass_change: 0.0,
-        max_mass_imbalance: 0.0,
-        max_eps_s: 0.0,
-        status: RunStatus::Running,
-        profile: Vec::new(),
-    };
-    let run = &case.run;
-    // the state at the start: a checkpoint's, or t = 0's
-    let (mut monitors, mut time, mut dt, mut summary, mass0) = if options.restart {
-        let (path, c) =
-            checkpoint::latest(out_dir, &resolved, fidelity.name()).map_err(ckpt_err)?;
-        solver.load_state(&c.solver).map_err(|e| {
-            ckpt_err(checkpoint::CheckpointError::Mismatch {
-                path: path.clone(),
-                reason: e.to_string(),
-            })
-        })?;
-        let monitors = Monitors::resume(&case, out_dir, &c.monitors).map_err(out_err)?;
-        tracing::info!("restarting from {} at t = {} s", path.display(), c.time);
-        let mut summary = c.summary;
-        summary.status = RunStatus::Running;
-        (monitors, c.time, c.dt, summary, c.initial_solids_mass)
-    } else {
-        let earlier = out_dir::run_files(out_dir);
-        if !earlier.is_empty() {
-            if !options.replace {
-                let restart = if checkpoint::exists(out_dir) {
-                    "continue it from its checkpoint (--restart) or replace it (--overwrite)"
-                } else {
-                    "replace it (--overwrite) or choose another folder"
-                };
-                return Err(RunError::OutDir {
-                    dir: out_dir.to_path_buf(),
-                    reason: format!("holds an earlier run ({}): {restart}", earlier.join(", ")),
-                });
-            }
-            out_dir::clear_run(out_dir).map_err(|e| RunError::OutDir {
-                dir: out_dir.to_path_buf(),
-                reason: format!("clearing the earlier run: {e}"),
-            })?;
-        }
-        std::fs::create_dir_all(out_dir).map_err(|e| {
-            out_err(OutputError::Io {
-                path: out_dir.to_path_buf(),
-                source: e,
-            })
-        })?;
-        let monitors = Monitors::start(&case, solver.as_mut(), out_dir).map_err(out_err)?;
-        let dt = DtController::new(
-            run.dt.initial,
-            run.dt.min,
-            run.dt.max,
-            run.dt.factor,
-            run.dt.steps_per_change,
-        )
-        .with_failure_factor(run.dt.failure_factor.unwrap_or(run.dt.factor));
-        let mut summary = fresh_summary();
-        summary.max_eps_s = solver.max_eps_s();
-        (monitors, 0.0, dt, summary, solver.solids_mass())
-    };
-    runout_output::write_atomic(&out_dir.join("resolved.ron"), resolved.as_bytes())
-        .map_err(out_err)?;
+    run_solver(
+        &case,
+        fidelity,
+        out_dir,
+        options,
+        solver.as_mut(),
+        &mut progress,
+    )
+}
 
-    let started = Instant::now();
-    let wall_before = summary.wall_time;
-    let profile_before = std::mem::take(&mut summary.profile);
-    let end = run.end_time;
-    let max_it = run.tolerances.max_iterations as usize;
-    let next_multiple = |t: f64, interval: f64| ((t / interval).floor() + 1.0) * interval;
-    let mut next_checkpoint = run
-        .checkpoint_interval
-        .map_or(f64::INFINITY, |i| next_multiple(time, i));
-    let mut last_checkpoint = Instant::now();
-    // the raw summary and a checkpoint of the current state
-    let save = |solver: &dyn CaseSolver,
-                monitors: &Monitors,
-                dt: &DtController,
-                summary: &RunSummary,
-                time: f64|
-     -> Result<(), RunError> {
-        let wrote = Instant::now();
-        let mut raw = summary.clone();
-        raw.wall_time = wall_before + started.elapsed().as_secs_f64();
-        raw.profile = merged_profile(&profile_before, solver.time_profile());
-        let c = Checkpoint {
-            solver_version: checkpoint::SOLVER_VERSION.to_string(),
-            case: resolved.clone(),
-            fidelity: fidelity.name().to_string(),
-            time,
-            dt: dt.clone(),
-            summary: raw.clone(),
-            initial_solids_mass: mass0,
-            monitors: monitors.state().map_err(out_err)?,
-            solver: solver.save_state(),
-        };
-        let (path, bytes) = checkpoint::write(out_dir, &c).map_err(ckpt_err)?;
-        reported(&raw, time, solver.solids_mass(), mass0)
-            .write_json(&out_dir.join("summary.json"))
-            .map_err(out_err)?;
-        tracing::info!(
-            bytes,
-            seconds = wrote.elapsed().as_secs_f64(),
-            "checkpoint {} at t = {time} s",
-            path.display()
-        );
-        Ok(())
+/// [`run_case_with`] on a solver already built from the resolved `case`.
+fn run_solver(
+    case: &Case,
+    fidelity: Fidelity,
+    out_dir: &Path,
+    options: &RunOptions,
+    solver: &mut dyn CaseSolver,
+    progress: &mut dyn FnMut(&Progress),
+) -> Result<RunSummary, RunError> {
+    let ctx = RunContext {
+        case,
+        fidelity,
+        out_dir,
+        options,
+        resolved: ron::ser::to_string_pretty(case, ron::ser::PrettyConfig::default())
+            .expect("a case serialises"),
+        started: Instant::now(),
     };
-    let stop_requested = || {
-        options
-            .stop
-            .as_ref()
-            .is_some_and(|s| s.load(Ordering::SeqCst))
+    let (mut monitors, mut standing) = if options.restart {
+        resume(&ctx, solver)?
+    } else {
+        start_fresh(&ctx, solver)?
     };
-    let mut failure: Option<OutputError> = None;
-    while time < end * (1.0 - 1e-12) {
-        if stop_requested() {
-            summary.status = RunStatus::Interrupted;
-            break;
-        }
-        let step_dt = dt.dt().min(end - time);
-        let shortened = step_dt < dt.dt();
-        solver.before_step();
-        // a failed linear solve (or any solver error) is a step that did not converge:
-        // retried with a smaller Δt like one
-        let outcome = solver.step(step_dt, run).unwrap_or_else(|e| {
-            solver.restore();
-            StepReport {
-                converged: false,
-                iterations: 0,
-                residual: f64::INFINITY,
-                detail: format!("the solver failed: {e}"),
-            }
-        });
-        tracing::debug!(
-            time,
-            dt = step_dt,
-            iterations = outcome.iterations,
-            converged = outcome.converged,
-            residual = outcome.residual,
-            detail = outcome.detail.as_str(),
-            "step"
-        );
-        if !outcome.converged {
-            summary.rejected_steps += 1;
-            if !dt.failed() {
-                summary.status = RunStatus::Diverged {
-                    diagnosis: format!(
-                        "the step from t = {time:.6e} s did not converge and dt fell below dt_min = {:.1e} s; \
-                         last try: dt = {step_dt:.3e} s, {} outer iterations, residual sum {:.3e}: {}",
-                        run.dt.min, outcome.iterations, outcome.residual, outcome.detail
-                    ),
-                };
-                break;
-            }
-            continue;
-        }
-        time += step_dt;
-        summary.steps += 1;
-        summary.outer_iterations += outcome.iterations as u64;
-        if !shortened {
-            summary.dt.min = summary.dt.min.min(step_dt);
-        }
-        summary.dt.max = summary.dt.max.max(step_dt);
-        summary.dt.mean += step_dt;
-        summary.max_mass_imbalance = summary
-            .max_mass_imbalance
-            .max(solver.mass_imbalance_ratio());
-        summary.max_eps_s = summary.max_eps_s.max(solver.max_eps_s());
-        dt.converged(step_dt, outcome.iterations, outcome.iterations >= max_it);
-        if let Err(e) = monitors.after_step(solver.as_mut(), &grid, time, end) {
-            failure = Some(e);
-            break;
-        }
-        progress(&Progress {
-            time,
-            end_time: end,
-            dt: dt.dt(),
-            iterations: outcome.iterations,
-            steps: summary.steps,
-        });
-        let by_wall = options
-            .checkpoint_every
-            .is_some_and(|every| last_checkpoint.elapsed() >= every);
-        if time >= next_checkpoint * (1.0 - 1e-9) || by_wall {
-            save(solver.as_ref(), &monitors, &dt, &summary, time)?;
-            if let Some(i) = run.checkpoint_interval {
-                next_checkpoint = next_multiple(time * (1.0 + 1e-9), i);
-            }
-            last_checkpoint = Instant::now();
-        }
-    }
-    if summary.status == RunStatus::Interrupted {
-        save(solver.as_ref(), &monitors, &dt, &summary, time)?;
-    }
+    runout_output::write_atomic(&out_dir.join("resolved.ron"), ctx.resolved.as_bytes())
+        .map_err(|e| ctx.out_err(e))?;
+    let mut failure = time_loop(&ctx, solver, &mut monitors, &mut standing, progress)?;
     if failure.is_none() {
         failure = monitors.finish().err();
     }
-    if let Some(e) = &failure {
-        summary.status = RunStatus::Failed {
-            reason: format!("writing output at t = {time} s: {e}"),
-        };
-    }
-    summary.wall_time = wall_before + started.elapsed().as_secs_f64();
-    summary.profile = merged_profile(&profile_before, solver.time_profile());
-    if summary.status == RunStatus::Running {
-        summary.status = RunStatus::Completed;
-    }
-    let summary = reported(&summary, time, solver.solids_mass(), mass0);
+    let mut raw = ctx.tallied(&standing, solver);
+    raw.status = match (&failure, raw.status) {
+        (Some(e), _) => RunStatus::Failed {
+            reason: format!("writing output at t = {} s: {e}", standing.time),
+        },
+        (None, RunStatus::Running) => RunStatus::Completed,
+        (None, status) => status,
+    };
+    let summary = reported(
+        &raw,
+        standing.time,
+        solver.solids_mass(),
+        standing.initial_solids_mass,
+    );
     let written = summary.write_json(&out_dir.join("summary.json"));
     if let Some(e) = failure {
-        return Err(out_err(e));
+        return Err(ctx.out_err(e));
     }
-    written.map_err(out_err)?;
+    written.map_err(|e| ctx.out_err(e))?;
     Ok(summary)
 }
+
+#[cfg(test)]
+mod tests;
 
 /// The default output folder of a case: `runs/<case>/<fidelity>`.
 pub fn default_out_dir(root: &Path, case: &str, fidelity: Fidelity) -> PathBuf {

@@ -1,0 +1,145 @@
+//! The time loop with a stand-in solver whose steps fail on demand: a solver error (a
+//! failed linear solve) is retried with a smaller Δt, and a step cut to land on the end
+//! time shrinks when it fails instead of being retried unchanged (issue 21).
+
+use std::path::{Path, PathBuf};
+
+use runout_case::{load, Case, Fidelity, Loaded, RunControl};
+use runout_mesh::Grid;
+use runout_output::{OutputError, PvdSeries, RunStatus};
+
+use super::case_solver::{CaseSolver, StepReport};
+use super::{run_solver, RunError, RunOptions};
+use crate::state::{SolverState, StateError};
+
+/// A solver whose step errors while the step is longer than `largest_good_dt` or for
+/// its first `errors` attempts; otherwise it converges in 3 iterations.
+struct Flaky {
+    grid: Grid,
+    errors: usize,
+    largest_good_dt: f64,
+    attempts: usize,
+}
+
+impl CaseSolver for Flaky {
+    fn step(&mut self, dt: f64, _run: &RunControl) -> Result<StepReport, RunError> {
+        self.attempts += 1;
+        if self.attempts <= self.errors {
+            return Err(RunError::Unsupported {
+                case: String::new(),
+                reason: "singular matrix: multigrid line pivot 0".into(),
+            });
+        }
+        Ok(StepReport {
+            converged: dt <= self.largest_good_dt,
+            iterations: 3,
+            residual: 0.0,
+            detail: String::new(),
+        })
+    }
+    fn restore(&mut self) {}
+    fn write_fields(&mut self, _: &mut PvdSeries, _: f64) -> Result<(), OutputError> {
+        Ok(())
+    }
+    fn profile_header(&self) -> &'static [&'static str] {
+        &["y"]
+    }
+    fn profile(&self, _x: f64, y: f64) -> Vec<f64> {
+        vec![y]
+    }
+    fn grid(&self) -> &Grid {
+        &self.grid
+    }
+    fn mass_imbalance_ratio(&self) -> f64 {
+        0.0
+    }
+    fn save_state(&self) -> SolverState {
+        SolverState::default()
+    }
+    fn load_state(&mut self, _: &SolverState) -> Result<(), StateError> {
+        Ok(())
+    }
+}
+
+fn cavity(end_time: f64) -> Case {
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/cavity-re100.ron");
+    let Loaded::Cases(cases) = load(&file).unwrap() else {
+        panic!("a case")
+    };
+    let mut case = cases
+        .into_iter()
+        .next()
+        .unwrap()
+        .case
+        .at_fidelity(Fidelity::Smoke);
+    case.run.end_time = end_time;
+    case.monitors.profiles.clear();
+    case
+}
+
+fn folder(tag: &str) -> PathBuf {
+    std::env::temp_dir().join(format!("runout-loop-{tag}-{}", std::process::id()))
+}
+
+fn run(case: &Case, solver: &mut Flaky, tag: &str) -> runout_output::RunSummary {
+    let options = RunOptions {
+        replace: true,
+        ..RunOptions::default()
+    };
+    let dir = folder(tag);
+    let summary = run_solver(case, Fidelity::Smoke, &dir, &options, solver, &mut |_| {}).unwrap();
+    let _ = std::fs::remove_dir_all(dir);
+    summary
+}
+
+#[test]
+fn a_solver_error_is_a_failed_step_retried_with_a_smaller_dt() {
+    let case = cavity(0.05);
+    let mut solver = Flaky {
+        grid: case.grid().unwrap(),
+        errors: 2,
+        largest_good_dt: f64::INFINITY,
+        attempts: 0,
+    };
+    let s = run(&case, &mut solver, "error");
+    assert_eq!(s.status, RunStatus::Completed);
+    assert_eq!(s.rejected_steps, 2);
+    // the first accepted step ran at dt_initial × 0.9² (the smallest of the run)
+    assert!((s.dt.min - 0.01 * 0.9 * 0.9).abs() < 1e-15, "{:?}", s.dt);
+}
+
+#[test]
+fn a_step_cut_to_the_end_time_shrinks_when_it_fails() {
+    // end time 1e-9 s, far below dt_initial = 0.01 s: the step is cut to 1e-9 s; it
+    // converges only at ≤ 5e-10 s, reached by one halving... of the cut step, not of 0.01
+    let mut case = cavity(1e-9);
+    case.run.dt.min = 1e-12;
+    case.run.dt.failure_factor = Some(0.5);
+    let mut solver = Flaky {
+        grid: case.grid().unwrap(),
+        errors: 0,
+        largest_good_dt: 5e-10,
+        attempts: 0,
+    };
+    let s = run(&case, &mut solver, "cut");
+    assert_eq!(s.status, RunStatus::Completed);
+    assert_eq!(
+        s.rejected_steps, 1,
+        "one retry, not one per halving of 0.01 s"
+    );
+    // a solver that never converges stops after the retries of the cut step alone
+    let mut never = Flaky {
+        grid: case.grid().unwrap(),
+        errors: 0,
+        largest_good_dt: 0.0,
+        attempts: 0,
+    };
+    case.run.dt.min = 2e-10;
+    let s = run(&case, &mut never, "never");
+    assert!(
+        matches!(s.status, RunStatus::Diverged { .. }),
+        "{:?}",
+        s.status
+    );
+    assert_eq!(s.rejected_steps, 3, "1e-9 → 5e-10 → 2.5e-10 → below dt_min");
+}
