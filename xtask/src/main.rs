@@ -3,7 +3,8 @@
 //! - `sweep`: the paper's case matrix (every sweep and stand-alone case under `cases/`),
 //!   expanded, validated and run in parallel into `runs/`, with `results/summary.csv`;
 //!   cases that need the two-fluid model (issue 7) are reported as unsupported.
-//! - `bench linsolve`: the linear-solver timing table of docs/performance.md.
+//! - `bench linsolve`: the linear-solver timing table of docs/performance.md;
+//! - `bench two-fluid`: the two-fluid solver's cost table (issue 22).
 //! - `verify <name> [--report]`: the verification suite of the single-phase core;
 //!   `verify mfix-slope`: family M against MFIX (issue 9, [`mfix_slope`]);
 //!   `verify two-fluid`: issue 7's cooling, settling and S-JJ-phi checks at full size;
@@ -20,6 +21,7 @@
 //!   with the table of docs/stability.md; fails if a run writes NaN.
 
 mod analytic;
+mod bench_two_fluid;
 mod chute;
 mod collapse;
 mod error_time;
@@ -143,12 +145,13 @@ enum Task {
         #[arg(long)]
         fidelity: Option<String>,
     },
-    /// Benchmarks: `cargo xtask bench linsolve [-- --max-cells N]`.
+    /// Benchmarks: `cargo xtask bench linsolve [-- --max-cells N]`, `cargo xtask bench
+    /// two-fluid [--smoke] [--write] [--window T] [--refine 1,2,4] [--skip-paper]`.
     Bench {
-        /// what to benchmark (linsolve)
+        /// what to benchmark (linsolve, two-fluid)
         what: String,
-        /// extra arguments passed to the benchmark program
-        #[arg(last = true)]
+        /// the benchmark's own options
+        #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
         args: Vec<String>,
     },
 }
@@ -343,7 +346,8 @@ fn main() -> Result<()> {
                 }
                 Ok(())
             }
-            other => bail!("unknown benchmark `{other}` (known: linsolve)"),
+            "two-fluid" => bench_two_fluid::run(&root(), &args),
+            other => bail!("unknown benchmark `{other}` (known: linsolve, two-fluid)"),
         },
     }
 }

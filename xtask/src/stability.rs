@@ -685,6 +685,7 @@ mod tests {
             max_eps_s: 0.6,
             status: RunStatus::Completed,
             profile: Vec::new(),
+            linear_iterations: Vec::new(),
         };
         assert!(row_from_summary(row(Outcome::Completed), &s).violates());
         s.solids_mass_change = 0.0;

@@ -509,6 +509,7 @@ mod tests {
             max_eps_s: 0.6,
             status: RunStatus::Completed,
             profile: Vec::new(),
+            linear_iterations: Vec::new(),
         };
         for outcome in [
             Outcome::Done(summary.clone()),

@@ -74,6 +74,10 @@ pub struct RunSummary {
     /// linear solve), where the solver reports it; empty otherwise
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub profile: Vec<(String, f64)>,
+    /// linear-solver iterations per equation over the run, where the solver reports them;
+    /// empty otherwise
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub linear_iterations: Vec<(String, u64)>,
 }
 
 impl RunSummary {

@@ -147,6 +147,7 @@ fn summary_round_trips() {
             diagnosis: "theta at (3, 4), t = 0.05 s".into(),
         },
         profile: vec![("closures".into(), 0.25), ("pressure_solve".into(), 0.5)],
+        linear_iterations: Vec::new(),
     };
     let path = tmp("summary.json");
     s.write_json(&path).unwrap();

@@ -465,6 +465,7 @@ pub mod fixture {
             max_eps_s: 0.6,
             status: RunStatus::Completed,
             profile: Vec::new(),
+            linear_iterations: Vec::new(),
         };
         summary
             .write_json(&dir.join("summary.json"))

@@ -52,6 +52,10 @@ pub(super) trait CaseSolver {
     fn time_profile(&self) -> Vec<(String, f64)> {
         Vec::new()
     }
+    /// Linear-solver iterations per equation, if the solver counts them.
+    fn linear_iterations(&self) -> Vec<(String, u64)> {
+        Vec::new()
+    }
     /// h_w^u of the floor's velocity node nearest to `x` (the wall probe of paper Fig. 9),
     /// `None` where the floor has no state-dependent wall model.
     fn floor_h_u(&self, _x: f64) -> Option<f64> {
@@ -306,6 +310,16 @@ impl CaseSolver for TwoFluidCase {
             .map(|(name, t)| (name.to_string(), *t))
             .collect()
     }
+    fn linear_iterations(&self) -> Vec<(String, u64)> {
+        self.solver
+            .profile()
+            .iterations
+            .parts()
+            .iter()
+            .map(|(name, n)| (name.to_string(), *n))
+            .collect()
+    }
+
     fn max_eps_s(&self) -> f64 {
         self.solver
             .solids

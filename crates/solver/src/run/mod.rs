@@ -174,14 +174,21 @@ fn reported(raw: &RunSummary, time: f64, mass_now: f64, mass0: f64) -> RunSummar
     s
 }
 
-/// Wall time per part of the iteration: `before` (from a checkpoint) plus this process's.
-fn merged_profile(before: &[(String, f64)], now: Vec<(String, f64)>) -> Vec<(String, f64)> {
+/// A tally by name (wall time per part, iterations per equation): `before` (from a
+/// checkpoint) plus this process's.
+fn merged<T: Copy + Default + std::ops::Add<Output = T>>(
+    before: &[(String, T)],
+    now: Vec<(String, T)>,
+) -> Vec<(String, T)> {
     if before.is_empty() {
         return now;
     }
     now.into_iter()
         .map(|(name, t)| {
-            let earlier = before.iter().find(|(n, _)| *n == name).map_or(0.0, |p| p.1);
+            let earlier = before
+                .iter()
+                .find(|(n, _)| *n == name)
+                .map_or(T::default(), |p| p.1);
             (name, earlier + t)
         })
         .collect()
@@ -231,7 +238,11 @@ impl RunContext<'_> {
     fn tallied(&self, standing: &Standing, solver: &dyn CaseSolver) -> RunSummary {
         let mut raw = standing.summary.clone();
         raw.wall_time += self.started.elapsed().as_secs_f64();
-        raw.profile = merged_profile(&standing.summary.profile, solver.time_profile());
+        raw.profile = merged(&standing.summary.profile, solver.time_profile());
+        raw.linear_iterations = merged(
+            &standing.summary.linear_iterations,
+            solver.linear_iterations(),
+        );
         raw
     }
 }
@@ -291,6 +302,7 @@ fn start_fresh(
         max_eps_s: solver.max_eps_s(),
         status: RunStatus::Running,
         profile: Vec::new(),
+        linear_iterations: Vec::new(),
     };
     let standing = Standing {
         time: 0.0,

@@ -341,6 +341,34 @@ pub struct Profile {
     pub theta_assembly: f64,
     /// granular-energy linear solves
     pub theta_solve: f64,
+    /// linear-solver iterations of each equation's solves
+    pub iterations: LinearIterations,
+}
+
+/// Linear-solver iterations summed over every solve since the solver was built, per
+/// equation (issue 22: where the cost per cell grows with the grid).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct LinearIterations {
+    /// momentum (every phase, u and v)
+    pub momentum: u64,
+    /// solids volume-fraction corrections
+    pub eps: u64,
+    /// gas pressure corrections
+    pub pressure: u64,
+    /// granular energy
+    pub theta: u64,
+}
+
+impl LinearIterations {
+    /// The counts by equation name.
+    pub fn parts(&self) -> [(&'static str, u64); 4] {
+        [
+            ("momentum", self.momentum),
+            ("eps", self.eps),
+            ("pressure", self.pressure),
+            ("theta", self.theta),
+        ]
+    }
 }
 
 impl Profile {
@@ -1342,20 +1370,30 @@ impl TwoFluid {
             }
         }
         let t = Instant::now();
-        self.solver_u
+        let mut iterations = 0;
+        iterations += self
+            .solver_u
             .setup_and_solve(&self.a_ug, &mut self.u_g)
-            .map_err(lin("gas u momentum"))?;
-        self.solver_v
+            .map_err(lin("gas u momentum"))?
+            .iterations;
+        iterations += self
+            .solver_v
             .setup_and_solve(&self.a_vg, &mut self.v_g)
-            .map_err(lin("gas v momentum"))?;
+            .map_err(lin("gas v momentum"))?
+            .iterations;
         for s in self.solids.iter_mut() {
-            self.solver_u
+            iterations += self
+                .solver_u
                 .setup_and_solve(&s.a_u, &mut s.u)
-                .map_err(lin("solids u momentum"))?;
-            self.solver_v
+                .map_err(lin("solids u momentum"))?
+                .iterations;
+            iterations += self
+                .solver_v
                 .setup_and_solve(&s.a_v, &mut s.v)
-                .map_err(lin("solids v momentum"))?;
+                .map_err(lin("solids v momentum"))?
+                .iterations;
         }
+        self.profile.iterations.momentum += iterations as u64;
         if periodic {
             // node nx of a periodic column is node 0 (fixed in the solves)
             let mx = nx + 1;
@@ -1393,6 +1431,7 @@ impl TwoFluid {
             total += s.imbalance.iter().map(|x| x.abs()).sum::<f64>() / n;
             s.eps_prime.iter_mut().for_each(|x| *x = 0.0);
             let t = Instant::now();
+            let mut iterations = 0;
             let solved = solve_keeping_preconditioner(
                 self.solver_eps.as_mut(),
                 &s.a_eps,
@@ -1400,7 +1439,8 @@ impl TwoFluid {
                 // ε' is rebuilt every iteration: its K_cp terms change too much within a
                 // step (kept, the solves took 17 % longer on family M)
                 true,
-            );
+            )
+            .map(|n| iterations += n);
             if let Err(LinSolveError::Breakdown { .. }) = solved {
                 // the multigrid-preconditioned BiCGSTAB broke down (seen at its first
                 // iteration on the paper grid of the sensitivity slide, during the fall):
@@ -1413,10 +1453,12 @@ impl TwoFluid {
                     &mut s.eps_prime,
                     true,
                 )
+                .map(|n| iterations += n)
             } else {
                 solved
             }
             .map_err(lin("solids volume fraction"))?;
+            self.profile.iterations.eps += iterations as u64;
             let solve = since(t);
             self.profile.eps_solve += solve;
             self.profile.eps_assembly -= solve;
@@ -1519,13 +1561,14 @@ impl TwoFluid {
         }
         self.p_corr.iter_mut().for_each(|x| *x = 0.0);
         let t = Instant::now();
-        solve_keeping_preconditioner(
+        self.profile.iterations.pressure += solve_keeping_preconditioner(
             self.solver_p.as_mut(),
             &self.a_p,
             &mut self.p_corr,
             self.rebuild_preconditioners,
         )
-        .map_err(lin("gas pressure correction"))?;
+        .map_err(lin("gas pressure correction"))?
+            as u64;
         // both multigrid hierarchies of this step are built (ε' is solved first)
         self.rebuild_preconditioners = false;
         let solve = since(t);
@@ -1638,9 +1681,11 @@ impl TwoFluid {
             }
             residual += if den > 0.0 { num / den } else { num };
             let t = Instant::now();
-            self.solver_theta
+            self.profile.iterations.theta += self
+                .solver_theta
                 .setup_and_solve(&s.a_theta, &mut s.theta)
-                .map_err(lin("granular energy"))?;
+                .map_err(lin("granular energy"))?
+                .iterations as u64;
             let solve = since(t);
             self.profile.theta_solve += solve;
             self.profile.theta_assembly -= solve;
@@ -1972,23 +2017,24 @@ fn gas_fixed_velocity(inflow: &Sides<f64>, (nx, ny): (usize, usize), dir: usize,
 /// Solves `a x = b` from x = 0 with the preconditioner of the step's first outer iteration
 /// (`rebuild` on that one): the P' and ε' matrices change little within a step, and the
 /// multigrid set-up costs as much as a few iterations. A solve that misses its tolerance
-/// with the kept preconditioner is repeated with a fresh one.
+/// with the kept preconditioner is repeated with a fresh one. Returns the iterations of
+/// the solves.
 fn solve_keeping_preconditioner(
     solver: &mut dyn LinearSolver,
     a: &Stencil5,
     x: &mut [f64],
     rebuild: bool,
-) -> Result<(), LinSolveError> {
+) -> Result<usize, LinSolveError> {
     if rebuild {
-        solver.setup_and_solve(a, x)?;
-        return Ok(());
+        return Ok(solver.setup_and_solve(a, x)?.iterations);
     }
     solver.refresh(a)?;
-    if !solver.solve(a, x)?.converged {
-        x.iter_mut().for_each(|v| *v = 0.0);
-        solver.setup_and_solve(a, x)?;
+    let kept = solver.solve(a, x)?;
+    if kept.converged {
+        return Ok(kept.iterations);
     }
-    Ok(())
+    x.iter_mut().for_each(|v| *v = 0.0);
+    Ok(kept.iterations + solver.setup_and_solve(a, x)?.iterations)
 }
 
 /// Fills `s.wall_face_velocity` with the tangential solids velocity on each wall face (the
