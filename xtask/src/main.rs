@@ -1,7 +1,8 @@
 //! Developer tasks of runout, run as `cargo xtask <task>`.
 //!
 //! - `sweep`: the paper's case matrix (every sweep and stand-alone case under `cases/`),
-//!   expanded, validated and run in parallel into `runs/`, with `results/summary.csv`;
+//!   expanded, validated and run in parallel into `runs/`, its rows merged into
+//!   `results/summary.csv` ([`summary`]);
 //!   cases that need the two-fluid model (issue 7) are reported as unsupported.
 //! - `bench linsolve`: the linear-solver timing table of docs/performance.md.
 //! - `verify <name> [--report]`: the verification suite of the single-phase core;
@@ -27,6 +28,7 @@ mod metrics;
 mod mfix_slope;
 mod report;
 mod stability;
+mod summary;
 mod sweep;
 mod verify;
 
@@ -46,7 +48,8 @@ struct Cli {
 #[derive(Subcommand)]
 enum Task {
     /// Expand, validate and run the paper's case matrix (cases/) in parallel; finished runs
-    /// are skipped (a killed sweep resumes); rows go to results/summary.csv.
+    /// are skipped (a killed sweep resumes); its rows are merged into results/summary.csv (the
+    /// rows of other cases and fidelities are kept; shards may write at once, under a lock).
     Sweep {
         /// smoke, coarse (default) or paper
         #[arg(long, default_value = "coarse")]
