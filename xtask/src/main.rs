@@ -13,7 +13,8 @@
 //! - `report analytic`: family A, the closed-form profiles of paper Fig. 1, as SVG and CSV
 //!   in docs/analytic/;
 //! - `report [results] [--fidelity F]`: the runs of the sweep beside the paper, in
-//!   docs/results.md with SVG figures in docs/results/.
+//!   docs/results.md with SVG figures in docs/results/, and the elasticities of family S's
+//!   one-factor families ([`sensitivity`]) as a table, a heat map and a CSV;
 //! - `error-time`: issue 8's discretisation error of the station profiles and gate speeds
 //!   against wall time over a ladder of grids, for upwind and Superbee ([`error_time`]), in
 //!   docs/error-time.md;
@@ -27,6 +28,7 @@ mod error_time;
 mod metrics;
 mod mfix_slope;
 mod report;
+mod sensitivity;
 mod stability;
 mod summary;
 mod sweep;
