@@ -1,7 +1,8 @@
 //! Developer tasks of runout, run as `cargo xtask <task>`.
 //!
 //! - `sweep`: the paper's case matrix (every sweep and stand-alone case under `cases/`),
-//!   expanded, validated and run in parallel into `runs/`, with `results/summary.csv`;
+//!   expanded, validated and run in parallel into `runs/`, its rows merged into
+//!   `results/summary.csv` ([`summary`]);
 //!   cases that need the two-fluid model (issue 7) are reported as unsupported.
 //! - `bench linsolve`: the linear-solver timing table of docs/performance.md;
 //! - `bench two-fluid`: the two-fluid solver's cost table (issue 22).
@@ -13,7 +14,8 @@
 //! - `report analytic`: family A, the closed-form profiles of paper Fig. 1, as SVG and CSV
 //!   in docs/analytic/;
 //! - `report [results] [--fidelity F]`: the runs of the sweep beside the paper, in
-//!   docs/results.md with SVG figures in docs/results/.
+//!   docs/results.md with SVG figures in docs/results/, and the elasticities of family S's
+//!   one-factor families ([`sensitivity`]) as a table, a heat map and a CSV;
 //! - `error-time`: issue 8's discretisation error of the station profiles and gate speeds
 //!   against wall time over a ladder of grids, for upwind and Superbee ([`error_time`]), in
 //!   docs/error-time.md;
@@ -28,7 +30,9 @@ mod error_time;
 mod metrics;
 mod mfix_slope;
 mod report;
+mod sensitivity;
 mod stability;
+mod summary;
 mod sweep;
 mod verify;
 
@@ -48,7 +52,8 @@ struct Cli {
 #[derive(Subcommand)]
 enum Task {
     /// Expand, validate and run the paper's case matrix (cases/) in parallel; finished runs
-    /// are skipped (a killed sweep resumes); rows go to results/summary.csv.
+    /// are skipped (a killed sweep resumes); its rows are merged into results/summary.csv (the
+    /// rows of other cases and fidelities are kept; shards may write at once, under a lock).
     Sweep {
         /// smoke, coarse (default) or paper
         #[arg(long, default_value = "coarse")]

@@ -3,8 +3,9 @@
 //! Writes `docs/results.md` and, in `docs/results/`, SVG figures of the quantities and axes
 //! of paper Figs. 4, 5, 7, 8, 9, 12, 13 and 14 (Fig. 1 is `cargo xtask report analytic`,
 //! linked), a table of every number the paper reports beside runout's, the flume's gate
-//! speeds with their mean square error against the described speeds, and the family-M
-//! cross-check against MFIX.
+//! speeds with their mean square error against the described speeds, the family-M
+//! cross-check against MFIX, and the elasticities of the one-factor families of family S
+//! (issue 23, [`crate::sensitivity`]) as a table and a heat map.
 //!
 //! Each case is read from `runs/<case>/<fidelity>/` (written by `cargo xtask sweep` or
 //! `runout run`): by default the best fidelity with a finished run (paper, then coarse, then
@@ -15,6 +16,7 @@
 pub mod data;
 mod paper;
 mod plots;
+mod sensitivity;
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -666,6 +668,8 @@ pub fn write_report(paths: &ReportPaths, requested: Option<Fidelity>) -> Result<
     );
     mfix_table(&mut md, &cases);
     floors_section(&mut md, &paths.docs);
+
+    sensitivity::section(&mut md, &matrix, &paths.cases, &cases, &out)?;
 
     md.push_str("## Runs used\n\n");
     runs_table(&mut md, &names, &cases);

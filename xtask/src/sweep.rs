@@ -5,7 +5,9 @@
 //! Every run writes into `runs/<case>/<fidelity>.partial/` and is renamed to
 //! `runs/<case>/<fidelity>/` when it ends, so a finished folder is always complete; a run
 //! whose folder exists with a summary is skipped, so a killed sweep resumes where it
-//! stopped. `results/summary.csv` gets one row per case of the matrix.
+//! stopped. `results/summary.csv` gets one row per case and fidelity: a sweep merges the
+//! rows of its cases into the file (a `--shard` or `--only` keeps the other rows; several
+//! shards may write at once), see [`crate::summary`].
 //!
 //! Runs go longest first to the first free worker (the length: the case's wall time in the
 //! last results/summary.csv at this fidelity, else its cells × simulated time). A case that
@@ -28,6 +30,7 @@ use runout_solver::{run_case, RunError};
 use crate::collapse::COLLAPSE_DIR;
 use crate::metrics::{described_speeds, flow_metrics, FlowMetrics};
 use crate::stability::STABILITY_DIR;
+use crate::summary;
 
 /// Options of a sweep.
 pub struct SweepOptions {
@@ -335,6 +338,9 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
     if opts.list {
         return Ok(());
     }
+    // refused before anything runs: a file of another xtask version cannot take the rows
+    let results = root.join("results").join("summary.csv");
+    summary::check_header(&results, HEADER)?;
 
     let runs_dir = root.join("runs");
     let started = Instant::now();
@@ -350,7 +356,7 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
     let mut order: Vec<usize> = (0..selected.len())
         .filter(|&k| same_as[k].is_none())
         .collect();
-    let measured = previous_wall_times(&root.join("results").join("summary.csv"), fidelity);
+    let measured = previous_wall_times(&results, fidelity);
     let size = |k: usize| -> f64 {
         let c = selected[k].case.at_fidelity(fidelity);
         c.grid().map_or(0.0, |g| g.cell_count() as f64) * c.run.end_time
@@ -399,8 +405,7 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
     outcomes.sort_by_key(|(k, _)| *k);
 
     let described = described_speeds(&root.join("cases").join("flume").join("gates.csv"));
-    let mut csv = String::from(HEADER);
-    csv.push('\n');
+    let mut rows = Vec::new();
     let (mut ran, mut skipped, mut copied, mut unsupported, mut failed) = (0, 0, 0, 0, 0);
     for (k, outcome) in &outcomes {
         let name = &selected[*k].case.name;
@@ -410,8 +415,7 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
             }
             _ => FlowMetrics::default(),
         };
-        csv.push_str(&csv_row(name, fidelity, outcome, &flow));
-        csv.push('\n');
+        rows.push(csv_row(name, fidelity, outcome, &flow));
         match outcome {
             Outcome::Done(s) => {
                 ran += 1;
@@ -432,12 +436,14 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
             }
         }
     }
-    let results = root.join("results").join("summary.csv");
-    runout_output::write_atomic(&results, csv.as_bytes()).context("writing results/summary.csv")?;
+    let order: Vec<&str> = runs.iter().map(|r| r.case.name.as_str()).collect();
+    let total = summary::write_merged(&results, HEADER, &rows, &order, summary::LOCK_TIMEOUT)?;
     println!(
         "ran {ran}, copied {copied} (repeats of a run), skipped {skipped} (finished earlier), \
-         unsupported {unsupported}, failed {failed} in {:.1} s; rows in {}",
+         unsupported {unsupported}, failed {failed} in {:.1} s; {} row(s) merged into {} ({total} \
+         in all)",
         started.elapsed().as_secs_f64(),
+        rows.len(),
         results.strip_prefix(root).unwrap_or(&results).display()
     );
     if unsupported > 0 {
@@ -485,6 +491,64 @@ mod tests {
         assert_eq!(t["a"], 12.5);
         assert!(previous_wall_times(&dir.join("none.csv"), Fidelity::Coarse).is_empty());
         std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    /// Issue 21: sweeps of subsets (`--only`, `--shard`) run in turn keep each other's rows
+    /// of results/summary.csv, in the matrix's order. The runs exist already (a summary.json
+    /// each), so nothing is solved.
+    #[test]
+    fn subsets_run_in_turn_keep_each_others_rows() {
+        use crate::report::data::fixture::{write_run, TempDir};
+        let tmp = TempDir::new("sweep-subsets");
+        let cases = Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases");
+        let names = [
+            "S-JJ-d_d=0.0001",
+            "S-JJ-d_d=0.0005",
+            "S-JJ-d_d=0.001",
+            "S-JJ-phi_phi=1",
+            "S-JJ-phi_phi=0.1",
+            "S-JJ-phi_phi=0.01",
+        ];
+        for name in names {
+            write_run(&tmp.0.join("runs"), name, "smoke", 0.4, &[]);
+        }
+        let sweep_of = |only: &str, shard: Option<(usize, usize)>| {
+            let opts = SweepOptions {
+                fidelity: Fidelity::Smoke,
+                only: Some(only.into()),
+                jobs: 1,
+                shard,
+                list: false,
+            };
+            sweep(&tmp.0, &cases, &opts).unwrap();
+            let text = std::fs::read_to_string(tmp.0.join("results").join("summary.csv")).unwrap();
+            let mut reader = csv::Reader::from_reader(text.as_bytes());
+            assert_eq!(
+                reader
+                    .headers()
+                    .unwrap()
+                    .iter()
+                    .collect::<Vec<_>>()
+                    .join(","),
+                HEADER
+            );
+            reader
+                .records()
+                .map(|r| r.unwrap().get(0).unwrap().to_string())
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(sweep_of("S-JJ-phi", None), names[3..]);
+        assert_eq!(
+            sweep_of("S-JJ-d", None),
+            names,
+            "the S-JJ-phi rows are kept"
+        );
+        // a rerun of a subset replaces its rows and keeps the rest
+        assert_eq!(sweep_of("S-JJ-phi_phi=1", None), names);
+        // shards of one sweep, written in turn
+        std::fs::remove_file(tmp.0.join("results").join("summary.csv")).unwrap();
+        assert_eq!(sweep_of("S-JJ", Some((2, 2))).len(), 3);
+        assert_eq!(sweep_of("S-JJ", Some((1, 2))), names);
     }
 
     #[test]

@@ -245,7 +245,7 @@ pub const PAPER_NUMBERS: &[PaperNumber] = &[
 
 /// The metrics of a case's station profile; a profile without flowing material (which
 /// would read as "no cushion, zero thickness") says that there is no flow instead.
-fn flow_at_station(data: &CaseData) -> Result<FlowMetrics, String> {
+pub fn flow_at_station(data: &CaseData) -> Result<FlowMetrics, String> {
     let p = data.profile.as_ref().map_err(Clone::clone)?;
     let peak = p.eps_s.iter().copied().fold(0.0, f64::max);
     if peak < FLOW_THRESHOLD {

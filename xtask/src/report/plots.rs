@@ -235,6 +235,177 @@ fn draw_panel(
     Ok(())
 }
 
+/// One cell of a [`Heatmap`].
+pub struct HeatCell {
+    /// the value that sets the colour; `None`: grey
+    pub value: Option<f64>,
+    /// the text written in the cell
+    pub label: String,
+}
+
+/// A table of coloured cells: rows × columns, a diverging colour scale symmetric about 0.
+pub struct Heatmap {
+    /// caption above the table
+    pub title: String,
+    /// row labels (left)
+    pub rows: Vec<String>,
+    /// column labels (top)
+    pub columns: Vec<String>,
+    /// `cells[row][column]`
+    pub cells: Vec<Vec<HeatCell>>,
+    /// text under the colour bar
+    pub note: String,
+}
+
+/// Width of the row labels of a heat map [px].
+const HEAT_LABEL_WIDTH: i32 = 300;
+/// Size of one heat-map cell [px].
+const HEAT_CELL: (i32, i32) = (104, 28);
+/// Height of the title and column labels above the cells [px].
+const HEAT_TOP: i32 = 64;
+/// Height of the colour bar and note below the cells [px].
+const HEAT_BOTTOM: i32 = 74;
+/// Ends of the diverging scale (ColorBrewer RdBu): negative, zero, positive.
+const DIVERGING: [RGBColor; 3] = [
+    RGBColor(33, 102, 172),
+    RGBColor(247, 247, 247),
+    RGBColor(178, 24, 43),
+];
+/// Fill of a cell without a value.
+const NO_VALUE: RGBColor = RGBColor(215, 215, 215);
+
+/// The smallest of 1, 2, 5 × 10ᵏ at or above `v` (1 for no positive `v`).
+pub fn nice_ceiling(v: f64) -> f64 {
+    if !(v > 0.0 && v.is_finite()) {
+        return 1.0;
+    }
+    let decade = 10f64.powf(v.log10().floor());
+    [1.0, 2.0, 5.0, 10.0]
+        .iter()
+        .map(|m| m * decade)
+        .find(|&c| c >= v * (1.0 - 1e-12))
+        .unwrap_or(10.0 * decade)
+}
+
+/// The colour of `v` on the diverging scale of ±`limit` (clipped beyond it).
+pub fn diverging(v: f64, limit: f64) -> RGBColor {
+    let t = (v / limit).clamp(-1.0, 1.0);
+    let (end, t) = if t < 0.0 {
+        (DIVERGING[0], -t)
+    } else {
+        (DIVERGING[2], t)
+    };
+    let mix = |a: u8, b: u8| (a as f64 + t * (b as f64 - a as f64)).round() as u8;
+    let zero = DIVERGING[1];
+    RGBColor(mix(zero.0, end.0), mix(zero.1, end.1), mix(zero.2, end.2))
+}
+
+/// Draws `map` into the SVG `path`; the scale is ±the largest |value| rounded up to 1, 2 or
+/// 5 × 10ᵏ.
+pub fn draw_heatmap(path: &Path, map: &Heatmap) -> Result<()> {
+    use plotters::style::text_anchor::{HPos, Pos, VPos};
+    let (cw, ch) = HEAT_CELL;
+    let n_cols = map.columns.len().max(1) as i32;
+    let n_rows = map.rows.len() as i32;
+    let width = HEAT_LABEL_WIDTH + cw * n_cols + 20;
+    let height = HEAT_TOP + ch * n_rows + HEAT_BOTTOM;
+    let limit = nice_ceiling(
+        map.cells
+            .iter()
+            .flatten()
+            .filter_map(|c| c.value)
+            .filter(|v| v.is_finite())
+            .fold(0.0, |m, v| f64::max(m, v.abs())),
+    );
+    let root = SVGBackend::new(path, (width as u32, height as u32)).into_drawing_area();
+    root.fill(&WHITE).map_err(plot_error)?;
+    let font = |size: i32, h: HPos| {
+        TextStyle::from(("sans-serif", size).into_font()).pos(Pos::new(h, VPos::Center))
+    };
+    root.draw(&Text::new(
+        map.title.clone(),
+        (width / 2, 16),
+        font(20, HPos::Center),
+    ))
+    .map_err(plot_error)?;
+    for (k, c) in map.columns.iter().enumerate() {
+        let x = HEAT_LABEL_WIDTH + cw * k as i32 + cw / 2;
+        root.draw(&Text::new(
+            c.clone(),
+            (x, HEAT_TOP - 14),
+            font(16, HPos::Center),
+        ))
+        .map_err(plot_error)?;
+    }
+    let white = WHITE;
+    for (r, (label, row)) in map.rows.iter().zip(&map.cells).enumerate() {
+        let y0 = HEAT_TOP + ch * r as i32;
+        root.draw(&Text::new(
+            label.clone(),
+            (HEAT_LABEL_WIDTH - 8, y0 + ch / 2),
+            font(16, HPos::Right),
+        ))
+        .map_err(plot_error)?;
+        for (k, cell) in row.iter().enumerate() {
+            let x0 = HEAT_LABEL_WIDTH + cw * k as i32;
+            let value = cell.value.filter(|v| v.is_finite());
+            let fill = value.map_or(NO_VALUE, |v| diverging(v, limit));
+            root.draw(&Rectangle::new(
+                [(x0, y0), (x0 + cw, y0 + ch)],
+                fill.filled(),
+            ))
+            .map_err(plot_error)?;
+            root.draw(&Rectangle::new(
+                [(x0, y0), (x0 + cw, y0 + ch)],
+                white.stroke_width(1),
+            ))
+            .map_err(plot_error)?;
+            // white text on the darker half of the scale
+            let dark = value.is_some_and(|v| (v / limit).abs() > 0.6);
+            let style = font(16, HPos::Center);
+            let style = if dark { style.color(&white) } else { style };
+            root.draw(&Text::new(
+                cell.label.clone(),
+                (x0 + cw / 2, y0 + ch / 2),
+                style,
+            ))
+            .map_err(plot_error)?;
+        }
+    }
+    // the colour bar: −limit … +limit
+    let bar_y = HEAT_TOP + ch * n_rows + 14;
+    let (bar_x, bar_w, steps) = (HEAT_LABEL_WIDTH, cw * n_cols.min(5), 50);
+    for s in 0..steps {
+        let v = limit * (2.0 * (s as f64 + 0.5) / steps as f64 - 1.0);
+        let x = bar_x + bar_w * s / steps;
+        root.draw(&Rectangle::new(
+            [(x, bar_y), (bar_x + bar_w * (s + 1) / steps, bar_y + 12)],
+            diverging(v, limit).filled(),
+        ))
+        .map_err(plot_error)?;
+    }
+    for (v, x) in [
+        (-limit, bar_x),
+        (0.0, bar_x + bar_w / 2),
+        (limit, bar_x + bar_w),
+    ] {
+        root.draw(&Text::new(
+            format!("{v}"),
+            (x, bar_y + 22),
+            font(14, HPos::Center),
+        ))
+        .map_err(plot_error)?;
+    }
+    root.draw(&Text::new(
+        map.note.clone(),
+        (bar_x, bar_y + 44),
+        font(14, HPos::Left),
+    ))
+    .map_err(plot_error)?;
+    root.present().map_err(plot_error)?;
+    Ok(())
+}
+
 fn plot_error<E: std::fmt::Debug>(e: E) -> anyhow::Error {
     anyhow::anyhow!("plotting a results figure: {e:?}")
 }
@@ -242,6 +413,18 @@ fn plot_error<E: std::fmt::Debug>(e: E) -> anyhow::Error {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_diverging_scale_is_white_at_zero_and_clipped_at_its_ends() {
+        assert_eq!(diverging(0.0, 2.0), DIVERGING[1]);
+        assert_eq!(diverging(2.0, 2.0), DIVERGING[2]);
+        assert_eq!(diverging(-7.0, 2.0), DIVERGING[0]);
+        assert_eq!(nice_ceiling(0.0), 1.0);
+        assert_eq!(nice_ceiling(0.3), 0.5);
+        assert_eq!(nice_ceiling(1.0), 1.0);
+        assert_eq!(nice_ceiling(1.2), 2.0);
+        assert_eq!(nice_ceiling(6.0), 10.0);
+    }
 
     #[test]
     fn ranges_are_padded_and_never_empty() {

@@ -1,0 +1,718 @@
+//! The sensitivity section of results.md (issue 23, item 3): the elasticity of each output
+//! of the report over each one-factor family of family S, as a table, a heat map
+//! (`sensitivity.svg`) and a CSV of every pair (`elasticities.csv`). The computation is
+//! [`crate::sensitivity`]; this module finds the families in the matrix and reads the
+//! outputs of their runs.
+
+use std::collections::BTreeSet;
+use std::fmt::Write as _;
+use std::path::Path;
+
+use anyhow::{Context, Result};
+use runout_case::{Case, Param, Sweep};
+
+use super::data::{CaseData, Cases};
+use super::paper::flow_at_station;
+use super::plots::{self, HeatCell, Heatmap};
+use super::{cell, remove_stale, FIGURE_DIR};
+use crate::metrics::PROFILE_TIME;
+use crate::sensitivity::{local, summary, Elasticity, Method, Summary};
+use crate::sweep::{csv_field, Matrix};
+
+/// The case directory of family S (the sensitivity study) below `cases/`.
+pub const SENSITIVITY_DIR: &str = "sensitivity";
+/// The heat map, in the figure directory.
+const HEATMAP_FILE: &str = "sensitivity.svg";
+/// Every pair's elasticity, in the figure directory.
+const CSV_FILE: &str = "elasticities.csv";
+
+/// A parameter a family varies: its symbol and unit.
+fn symbol(p: &Param) -> (&'static str, &'static str) {
+    match p {
+        Param::Diameter(_) => ("d", "m"),
+        Param::Specularity(_) => ("φ", "-"),
+        Param::PartialSlipHu(_) => ("h_w^u", "1/m"),
+        Param::PartialSlipHTheta(_) => ("h_w^θ", "1/m"),
+        Param::PartialSlipC(_) => ("c_w", "m/s²"),
+        Param::Slope(_) => ("slope", "deg"),
+        Param::SolidsWalls(_) => ("wall", ""),
+    }
+}
+
+/// The values of a numeric parameter (`None` for the wall condition).
+fn values(p: &Param) -> Option<&[f64]> {
+    match p {
+        Param::Diameter(v)
+        | Param::Specularity(v)
+        | Param::PartialSlipHu(v)
+        | Param::PartialSlipHTheta(v)
+        | Param::PartialSlipC(v)
+        | Param::Slope(v) => Some(v),
+        Param::SolidsWalls(_) => None,
+    }
+}
+
+/// A one-factor family: the runs of one sweep that differ in one parameter only.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Family {
+    /// the sweep's name
+    pub sweep: String,
+    /// the parameter's symbol
+    pub symbol: &'static str,
+    /// its unit
+    pub unit: &'static str,
+    /// the sweep's other varied parameters at this family's values, e.g. "slope = 40"
+    pub fixed: Vec<String>,
+    /// (parameter value, case name), in the sweep's order
+    pub points: Vec<(f64, String)>,
+}
+
+impl Family {
+    /// "S-PS-cw: c_w (slope = 40)".
+    pub fn label(&self) -> String {
+        let fixed = if self.fixed.is_empty() {
+            String::new()
+        } else {
+            format!(" ({})", self.fixed.join(", "))
+        };
+        format!("{}: {}{fixed}", self.sweep, self.symbol)
+    }
+}
+
+/// The one-factor families of a sweep: for each numeric varied parameter with two values or
+/// more, one family per combination of the other varied parameters' values. Case names are
+/// built as [`runout_case::expand`] builds them.
+pub fn sweep_families(sweep: &Sweep) -> Vec<Family> {
+    let vary = &sweep.vary;
+    let name = |index: &[usize]| {
+        let mut n = sweep.name.clone();
+        for (p, &i) in vary.iter().zip(index) {
+            let _ = write!(n, "_{}={}", p.key(), p.label(i));
+        }
+        n
+    };
+    let mut out = Vec::new();
+    for (k, param) in vary.iter().enumerate() {
+        let Some(v) = values(param).filter(|v| v.len() >= 2) else {
+            continue;
+        };
+        let others: Vec<usize> = (0..vary.len()).filter(|&j| j != k).collect();
+        let mut index = vec![0usize; vary.len()];
+        'combinations: loop {
+            let points = (0..v.len())
+                .map(|i| {
+                    index[k] = i;
+                    (v[i], name(&index))
+                })
+                .collect();
+            let (sym, unit) = symbol(param);
+            out.push(Family {
+                sweep: sweep.name.clone(),
+                symbol: sym,
+                unit,
+                fixed: others
+                    .iter()
+                    .map(|&j| format!("{} = {}", symbol(&vary[j]).0, vary[j].label(index[j])))
+                    .collect(),
+                points,
+            });
+            // next combination of the others, the last fastest
+            let mut d = others.len();
+            loop {
+                if d == 0 {
+                    break 'combinations;
+                }
+                d -= 1;
+                let j = others[d];
+                index[j] += 1;
+                if index[j] < vary[j].len() {
+                    break;
+                }
+                index[j] = 0;
+            }
+        }
+    }
+    out
+}
+
+/// The one-factor families of the sweeps of family S (`cases/sensitivity/`) in the matrix,
+/// in the matrix's order. The flume's φ pair (F-JJ) is left out: its outputs are gate
+/// speeds, not the station quantities.
+pub fn families(matrix: &Matrix, cases_dir: &Path) -> Result<Vec<Family>> {
+    let dir = cases_dir.join(SENSITIVITY_DIR);
+    let mut files = Vec::new();
+    for r in &matrix.runs {
+        if r.base.is_some() && r.file.starts_with(&dir) && !files.contains(&r.file) {
+            files.push(r.file.clone());
+        }
+    }
+    let mut out = Vec::new();
+    for f in files {
+        let text =
+            std::fs::read_to_string(&f).with_context(|| format!("reading {}", f.display()))?;
+        let sweep: Sweep = ron::Options::default()
+            .with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME)
+            .from_str(&text)
+            .with_context(|| format!("reading the sweep of {}", f.display()))?;
+        out.extend(sweep_families(&sweep));
+    }
+    Ok(out)
+}
+
+/// An output of the report whose elasticity is computed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Output {
+    /// largest u_s of the station profile [m/s]
+    MaxUs,
+    /// front x (bulk.csv) minus the release's front edge [m]
+    FrontTravel,
+    /// εs-weighted mean u_s over the domain (bulk.csv) [m/s]
+    MeanUs,
+    /// εs of the floor cell at the station [-]
+    FloorEpsS,
+    /// air-cushion thickness at the station [m]
+    CushionThickness,
+    /// flow thickness at the station [m]
+    FlowThickness,
+    /// h_w^u at the floor probe [1/m]
+    ProbeHu,
+}
+
+/// The outputs, in the table's order.
+pub const OUTPUTS: [Output; 7] = [
+    Output::MaxUs,
+    Output::FrontTravel,
+    Output::MeanUs,
+    Output::FloorEpsS,
+    Output::CushionThickness,
+    Output::FlowThickness,
+    Output::ProbeHu,
+];
+
+/// The largest x of the release blocks of the run's case (`resolved.ron`).
+fn release_front(d: &CaseData) -> Result<f64, String> {
+    let run = d.run.as_ref().map_err(Clone::clone)?;
+    // read, not validated: a resolved smoke case keeps the paper's profile time
+    let case: Case = std::fs::read_to_string(run.dir.join("resolved.ron"))
+        .map_err(|e| e.to_string())
+        .and_then(|t| ron::from_str(&t).map_err(|e| e.to_string()))
+        .map_err(|e| format!("the {} run's resolved.ron: {e}", run.fidelity))?;
+    case.initial
+        .regions
+        .iter()
+        .map(|b| b.x.1)
+        .reduce(f64::max)
+        .ok_or_else(|| "the case has no release block".into())
+}
+
+impl Output {
+    /// Column name of the table.
+    pub fn label(self) -> &'static str {
+        match self {
+            Output::MaxUs => "max u_s",
+            Output::FrontTravel => "front travel",
+            Output::MeanUs => "mean u_s",
+            Output::FloorEpsS => "floor εs",
+            Output::CushionThickness => "cushion thickness",
+            Output::FlowThickness => "flow thickness",
+            Output::ProbeHu => "h_w^u at the probe",
+        }
+    }
+
+    /// Column name of the heat map (short, ASCII).
+    fn short(self) -> &'static str {
+        match self {
+            Output::MaxUs => "max u_s",
+            Output::FrontTravel => "front travel",
+            Output::MeanUs => "mean u_s",
+            Output::FloorEpsS => "floor eps_s",
+            Output::CushionThickness => "cushion",
+            Output::FlowThickness => "flow thick.",
+            Output::ProbeHu => "h_w^u probe",
+        }
+    }
+
+    /// The output of the run of `d`; the time series at `t`.
+    pub fn read(self, d: &CaseData, t: f64) -> Result<f64, String> {
+        let unknown = || "not defined for this profile".to_string();
+        match self {
+            Output::MaxUs => flow_at_station(d)?.max_u_s.ok_or_else(unknown),
+            Output::FloorEpsS => flow_at_station(d)?.floor_eps_s.ok_or_else(unknown),
+            Output::FlowThickness => flow_at_station(d)?.flow_thickness.ok_or_else(unknown),
+            Output::CushionThickness => {
+                let m = flow_at_station(d)?;
+                match m.air_cushion {
+                    Some(true) => m.cushion_thickness.ok_or_else(unknown),
+                    _ => Err("no air cushion (thickness 0)".into()),
+                }
+            }
+            Output::FrontTravel => {
+                let (x, _) = d.bulk_at(t)?;
+                let edge = release_front(d)?;
+                if x <= edge {
+                    return Err(format!(
+                        "the front has not passed the release's front edge (x = {edge} m) by \
+                         t = {t:.2} s"
+                    ));
+                }
+                Ok(x - edge)
+            }
+            Output::MeanUs => Ok(d.bulk_at(t)?.1),
+            Output::ProbeHu => {
+                if let Some(why) = d.run.as_ref().ok().and_then(|r| r.ended_before(t)) {
+                    return Err(why);
+                }
+                let (_, h) = d.probe_at(t)?;
+                if h == 0.0 {
+                    return Err(format!(
+                        "h_w^u = 0 at the floor probe at t = {t:.2} s (no solids at the probe yet)"
+                    ));
+                }
+                Ok(h)
+            }
+        }
+    }
+}
+
+/// A family's time of the time-series outputs: t = 1.25 s, or the last time its runs reach
+/// if they all end before (smoke runs: 0.4 s).
+fn family_time(family: &Family, cases: &Cases) -> f64 {
+    family
+        .points
+        .iter()
+        .filter_map(|(_, c)| Some(cases.get(c).run.as_ref().ok()?.summary.simulated_time))
+        .reduce(f64::max)
+        .map_or(PROFILE_TIME, |t| t.min(PROFILE_TIME))
+}
+
+/// An elasticity for a table cell or the heat map: 2 decimals, or 2 digits if small; `*`
+/// marks an arc elasticity.
+fn format_elasticity(e: &Elasticity) -> String {
+    let v = e.value;
+    let number = if v == 0.0 {
+        "0".to_string()
+    } else if v.abs() >= 0.01 {
+        format!("{v:.2}")
+    } else {
+        format!("{v:.1e}")
+    };
+    match e.method {
+        Method::LogLog => number,
+        Method::Arc => format!("{number}*"),
+    }
+}
+
+/// A parameter value as written in the sweep files.
+fn value(p: f64) -> String {
+    format!("{p}")
+}
+
+/// The computed section: the per-(family, output) summaries and their notes.
+struct Computed {
+    families: Vec<Family>,
+    /// `summaries[family][output]`
+    summaries: Vec<Vec<Summary>>,
+    /// time-series time per family
+    times: Vec<f64>,
+    /// CSV of every pair and summary
+    csv: String,
+}
+
+fn compute(families: Vec<Family>, cases: &Cases) -> Computed {
+    let mut csv = String::from(
+        "family,parameter,output,kind,p_low,p_high,at,method,elasticity,points_used,reason\n",
+    );
+    let mut summaries = Vec::new();
+    let mut times = Vec::new();
+    for f in &families {
+        let t = family_time(f, cases);
+        times.push(t);
+        let mut row = Vec::new();
+        for o in OUTPUTS {
+            let points: Vec<(f64, Result<f64, String>)> = f
+                .points
+                .iter()
+                .map(|(p, case)| (*p, o.read(&cases.get(case), t)))
+                .collect();
+            let method = |m: Method| match m {
+                Method::LogLog => "log-log",
+                Method::Arc => "arc",
+            };
+            for l in local(&points) {
+                let (m, e, used, why) = match &l.elasticity {
+                    Ok(e) => (method(e.method), format!("{}", e.value), 2, String::new()),
+                    Err(why) => ("", String::new(), 0, why.clone()),
+                };
+                let _ = writeln!(
+                    csv,
+                    "{},{},{},pair,{},{},{},{m},{e},{used},{}",
+                    csv_field(&f.label()),
+                    csv_field(f.symbol),
+                    csv_field(o.label()),
+                    l.p.0,
+                    l.p.1,
+                    l.at,
+                    csv_field(&why)
+                );
+            }
+            let s = summary(&points);
+            let (lo, hi) = s.range.map_or((String::new(), String::new()), |(a, b)| {
+                (a.to_string(), b.to_string())
+            });
+            let (m, e, why) = match &s.elasticity {
+                Ok(e) => (method(e.method), format!("{}", e.value), String::new()),
+                Err(why) => ("", String::new(), why.clone()),
+            };
+            let _ = writeln!(
+                csv,
+                "{},{},{},summary,{lo},{hi},,{m},{e},{},{}",
+                csv_field(&f.label()),
+                csv_field(f.symbol),
+                csv_field(o.label()),
+                s.used,
+                csv_field(&why)
+            );
+            row.push(s);
+        }
+        summaries.push(row);
+    }
+    Computed {
+        families,
+        summaries,
+        times,
+        csv,
+    }
+}
+
+/// Writes the sensitivity section of results.md and its figure and CSV into `out`.
+pub fn section(
+    md: &mut String,
+    matrix: &Matrix,
+    cases_dir: &Path,
+    cases: &Cases,
+    out: &Path,
+) -> Result<()> {
+    md.push_str("## Sensitivity: elasticities of the one-factor families (issue 23)\n\n");
+    let c = compute(families(matrix, cases_dir)?, cases);
+    let svg = out.join(HEATMAP_FILE);
+    let csv = out.join(CSV_FILE);
+    if c.families.is_empty() {
+        remove_stale(&svg)?;
+        remove_stale(&csv)?;
+        md.push_str("*No one-factor family in cases/sensitivity/.*\n\n");
+        return Ok(());
+    }
+    let _ = writeln!(
+        md,
+        "**How it is computed** (xtask/src/sensitivity.rs). A one-factor family is the runs of \
+         one sweep of cases/{SENSITIVITY_DIR}/ that differ in one parameter p only (φ, d, h_w^u, \
+         h_w^θ, c_w or the slope; a sweep's other varied parameter is held, and named in \
+         brackets). For each output y the elasticity E = ∂ln y/∂ln p (the % change of y per % \
+         change of p) is taken by differences over the swept points: for neighbours \
+         pᵢ < pᵢ₊₁, (ln yᵢ₊₁ − ln yᵢ)/(ln pᵢ₊₁ − ln pᵢ), at the geometric mid-point √(pᵢpᵢ₊₁) \
+         (every pair is in [{FIGURE_DIR}/{CSV_FILE}]({FIGURE_DIR}/{CSV_FILE})). The table and \
+         the heat map give one number per family and output: the least-squares slope of ln y \
+         against ln p over the family's points (for two points, the pair's value; exact for a \
+         power law y = a·p^b). Where p = 0 (the 0° slope) ln p does not exist: the pair's arc \
+         elasticity (Δy/ȳ)/(Δp/p̄) at the arithmetic mid-point is given instead, marked \\*; on \
+         a pair (0, p) it is half the relative change Δy/ȳ, within ±1, and not comparable in \
+         size with the others. A point without a usable output (no run, a run that ended \
+         before the time read, no flow at the station, no cushion, y ≤ 0) is left out; a \
+         number over fewer points than the family has gives the range it covers, and a cell \
+         without two usable points is \"—\" with the reason in the notes below the table.\n\n\
+         **Outputs.** max u_s, floor εs, cushion thickness and flow thickness: the station \
+         profile at x = 11 m, t = {PROFILE_TIME} s, as in the tables above (a cushion \
+         thickness of 0, no cushion, has no elasticity). Front travel: the front x of bulk.csv \
+         (where the floor row's εs falls through 0.01) minus the release block's front edge \
+         (x = 5.5 m), a distance from a natural origin, so its elasticity does not depend on \
+         where the domain starts. Mean u_s: the εs-weighted mean over the domain (bulk.csv). \
+         Front travel, mean u_s and h_w^u at the floor probe are read at t = {PROFILE_TIME} s, \
+         or, where the family's runs all end before it, at their end (column \"read at\"); \
+         the profile exists only at {PROFILE_TIME} s.\n\n\
+         **Limits.** One-at-a-time: each family moves one parameter with the others at that \
+         sweep's base, so interactions are not seen, and the base differs between families \
+         (d is swept at Johnson–Jackson φ = 0.1, at Jenkins and at partial slip). Local and on \
+         the swept points only: secants between points that are far apart (φ and d by factors \
+         of 2–10), so a threshold response such as a cushion appearing is summarised by one \
+         number that hides it, and nothing is said between or beyond the points. The numbers \
+         carry the runs' discretisation error (docs/error-time.md), which at coarse fidelity \
+         is of the size of some differences here; the bulk front moves in whole cells (0.2 m \
+         at smoke, 0.08 m at coarse fidelity), so front travel changes in steps and a 0 can \
+         mean a change below one cell. At smoke and coarse fidelity the station \
+         quantities are often missing because the flow has not reached the station (smoke \
+         runs stop at 0.4 s), and the time-series outputs are then read at the runs' end, a \
+         different state from the paper's t = 1.25 s.\n"
+    );
+
+    // the table
+    let mut notes: Vec<String> = Vec::new();
+    let mut note = |why: &str| -> usize {
+        match notes.iter().position(|n| n == why) {
+            Some(k) => k + 1,
+            None => {
+                notes.push(why.to_string());
+                notes.len()
+            }
+        }
+    };
+    let _ = writeln!(
+        md,
+        "| family | parameter | fidelity | read at | {} |",
+        OUTPUTS.map(|o| o.label()).join(" | ")
+    );
+    let _ = writeln!(md, "|---|---|---|---|{}", "---|".repeat(OUTPUTS.len()));
+    let mut heat_cells = Vec::new();
+    for (k, f) in c.families.iter().enumerate() {
+        let fidelities: BTreeSet<String> = f
+            .points
+            .iter()
+            .filter_map(|(_, case)| cases.get(case).fidelity().map(|x| x.to_string()))
+            .collect();
+        let fidelity = if fidelities.is_empty() {
+            "—".to_string()
+        } else {
+            fidelities.into_iter().collect::<Vec<_>>().join(" + ")
+        };
+        let t = c.times[k];
+        let read_at = if t < PROFILE_TIME {
+            format!("t = {t:.2} s (profile: {PROFILE_TIME} s)")
+        } else {
+            format!("t = {PROFILE_TIME} s")
+        };
+        let values: Vec<String> = f.points.iter().map(|(p, _)| value(*p)).collect();
+        let mut row_cells = Vec::new();
+        let mut text = Vec::new();
+        for s in &c.summaries[k] {
+            match &s.elasticity {
+                Ok(e) => {
+                    let mut t = format_elasticity(e);
+                    row_cells.push(HeatCell {
+                        value: Some(e.value),
+                        label: t.clone(),
+                    });
+                    if s.used < s.of {
+                        if let Some((lo, hi)) = s.range {
+                            let _ = write!(
+                                t,
+                                " ({} of {} points: {}–{})",
+                                s.used,
+                                s.of,
+                                value(lo),
+                                value(hi)
+                            );
+                        }
+                    }
+                    text.push(t);
+                }
+                Err(why) => {
+                    row_cells.push(HeatCell {
+                        value: None,
+                        label: "—".into(),
+                    });
+                    text.push(format!("— [{}]", note(why)));
+                }
+            }
+        }
+        heat_cells.push(row_cells);
+        let fixed = if f.fixed.is_empty() {
+            String::new()
+        } else {
+            format!(" ({})", f.fixed.join(", "))
+        };
+        let _ = writeln!(
+            md,
+            "| `{}`{} | {} [{}] ∈ {{{}}} | {fidelity} | {read_at} | {} |",
+            f.sweep,
+            cell(&fixed),
+            f.symbol,
+            f.unit,
+            values.join(", "),
+            text.iter().map(|t| cell(t)).collect::<Vec<_>>().join(" | ")
+        );
+    }
+    md.push('\n');
+    if !notes.is_empty() {
+        md.push_str("Why a cell is \"—\":\n\n");
+        for (k, n) in notes.iter().enumerate() {
+            let _ = writeln!(md, "{}. {}", k + 1, n);
+        }
+        md.push('\n');
+    }
+
+    // the heat map
+    let map = Heatmap {
+        title: "Elasticity d ln y / d ln p of each output over each one-factor family".into(),
+        rows: c.families.iter().map(Family::label).collect(),
+        columns: OUTPUTS.iter().map(|o| o.short().to_string()).collect(),
+        cells: heat_cells,
+        note: "* arc elasticity (the family has p = 0); grey: no value (see docs/results.md)"
+            .into(),
+    };
+    plots::draw_heatmap(&svg, &map)?;
+    runout_output::write_atomic(&csv, c.csv.as_bytes())
+        .with_context(|| format!("writing {}", csv.display()))?;
+    let _ = writeln!(
+        md,
+        "![Elasticities]({FIGURE_DIR}/{HEATMAP_FILE})\n\n\
+         Heat map of the table: rows are the families, columns the outputs, colour the \
+         summary elasticity on a scale symmetric about 0 (red: the output grows with the \
+         parameter, blue: it falls); \\* marks an arc elasticity; grey cells have no value.\n"
+    );
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::data::fixture::*;
+    use super::*;
+
+    fn cases_dir() -> std::path::PathBuf {
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases")
+    }
+
+    #[test]
+    fn the_families_of_family_s_are_found_and_name_cases_of_the_matrix() {
+        let matrix = crate::sweep::paper_matrix(&cases_dir()).unwrap();
+        let fams = families(&matrix, &cases_dir()).unwrap();
+        let labels: Vec<String> = fams.iter().map(Family::label).collect();
+        for expected in [
+            "S-JJ-phi: φ",
+            "S-JJ-d: d",
+            "S-JEN-d: d",
+            "S-PS-d: d",
+            "S-PS-hu: h_w^u",
+            "S-PS-cw: c_w (slope = 40)",
+            "S-PS-cw: c_w (slope = 0)",
+            "S-PS-cw: slope (c_w = 0.1)",
+            "S-PS-cw: slope (c_w = 10)",
+            "S-PS-htheta: h_w^θ (slope = 0)",
+            "S-PS-htheta: slope (h_w^θ = 100)",
+        ] {
+            assert!(
+                labels.contains(&expected.to_string()),
+                "{expected}: {labels:?}"
+            );
+        }
+        // S-RJJ varies nothing; the flume is not family S
+        assert!(!labels
+            .iter()
+            .any(|l| l.starts_with("S-RJJ") || l.starts_with('F')));
+        assert_eq!(fams.len(), 15, "{labels:?}");
+        let names: BTreeSet<&str> = matrix.runs.iter().map(|r| r.case.name.as_str()).collect();
+        for f in &fams {
+            for (_, case) in &f.points {
+                assert!(names.contains(case.as_str()), "{case}");
+            }
+        }
+        let cw = fams
+            .iter()
+            .find(|f| f.label() == "S-PS-cw: slope (c_w = 1)")
+            .unwrap();
+        assert_eq!(
+            cw.points,
+            [
+                (40.0, "S-PS-cw_cw=1_slope=40".to_string()),
+                (0.0, "S-PS-cw_cw=1_slope=0".to_string())
+            ]
+        );
+    }
+
+    /// A profile whose max u_s is `u` with a 0.015 m thick flow and no cushion.
+    fn profile(u: f64) -> String {
+        format!(
+            "y,eps_s,u_s,theta\n0.0025,0.6,{},0.1\n0.0075,0.55,{u},0.2\n0.0125,0.3,{},0.3\n\
+             0.0175,0.0,0.0,0.0\n",
+            0.5 * u,
+            0.8 * u
+        )
+    }
+
+    /// End to end: made-up runs of S-PS-hu whose max u_s is 8·h_u^(−1/4) and whose mean
+    /// u_s is linear in h_u; the table gives −0.25 for the first, and the reasons of the
+    /// missing outputs.
+    #[test]
+    fn the_section_recovers_a_made_up_power_law_and_names_what_is_missing() {
+        let tmp = TempDir::new("sensitivity");
+        let runs = tmp.0.join("runs");
+        let matrix = crate::sweep::paper_matrix(&cases_dir()).unwrap();
+        let base = matrix
+            .runs
+            .iter()
+            .find(|r| r.case.name == "S-PS-hu_hu=1")
+            .unwrap();
+        let resolved =
+            ron::ser::to_string_pretty(&base.case, ron::ser::PrettyConfig::default()).unwrap();
+        for hu in [1.0, 10.0, 40.0, 70.0, 100.0] {
+            let case = format!("S-PS-hu_hu={hu}");
+            let u = 8.0 * f64::powf(hu, -0.25);
+            // front 1 m + hu/100 m past the release edge at 5.5 m
+            let bulk = format!(
+                "t,solids_mass,front_x,mean_u_s\n1.25,1,{},{}\n",
+                6.5 + hu / 100.0,
+                2.0 + 0.01 * hu
+            );
+            write_run(
+                &runs,
+                &case,
+                "coarse",
+                1.25,
+                &[
+                    ("profile_x11_t1.25.csv", &profile(u)),
+                    ("bulk.csv", &bulk),
+                    ("resolved.ron", &resolved),
+                ],
+            );
+        }
+        let names: Vec<&str> = matrix.runs.iter().map(|r| r.case.name.as_str()).collect();
+        let cases = Cases::load(&runs, names, None);
+        let out = tmp.0.join("docs").join(FIGURE_DIR);
+        std::fs::create_dir_all(&out).unwrap();
+        let mut md = String::new();
+        section(&mut md, &matrix, &cases_dir(), &cases, &out).unwrap();
+        let row = md
+            .lines()
+            .find(|l| l.starts_with("| `S-PS-hu` |"))
+            .unwrap_or_else(|| panic!("{md}"));
+        let c: Vec<&str> = row.split(" | ").collect();
+        assert_eq!(c[1], "h_w^u [1/m] ∈ {1, 10, 40, 70, 100}");
+        assert_eq!(c[2], "coarse");
+        assert_eq!(c[3], "t = 1.25 s");
+        assert_eq!(c[4], "-0.25", "max u_s: {row}");
+        // front travel 1 + hu/100: the least-squares log-log slope, positive and below 1
+        let travel: f64 = c[5].parse().unwrap();
+        assert!(0.0 < travel && travel < 1.0, "{row}");
+        let mean: f64 = c[6].parse().unwrap();
+        assert!(
+            0.0 < mean && mean < 1.0 / 3.0,
+            "linear, below its end elasticity: {row}"
+        );
+        assert_eq!(c[7], "0", "floor εs is the same at every point");
+        assert!(c[8].starts_with("— ["), "no cushion: {row}");
+        assert!(md.contains("no air cushion (thickness 0)"));
+        assert_eq!(c[9], "0", "flow thickness");
+        // a family without runs says why
+        assert!(md.contains("not run"));
+        // the heat map has a cell and a label per family and output
+        let svg = std::fs::read_to_string(out.join(HEATMAP_FILE)).unwrap();
+        assert!(
+            svg.contains("S-PS-hu: h_w^u") && svg.contains("\n-0.25\n"),
+            "{svg}"
+        );
+        assert!(svg.matches("<rect").count() >= 15 * OUTPUTS.len());
+        let csv = std::fs::read_to_string(out.join(CSV_FILE)).unwrap();
+        assert_eq!(
+            csv.lines()
+                .filter(|l| l.starts_with("S-PS-hu: h_w^u,h_w^u,max u_s,pair"))
+                .count(),
+            4
+        );
+        // no family: the figure goes
+        let mut md = String::new();
+        let empty = Matrix {
+            runs: Vec::new(),
+            analytic: Vec::new(),
+        };
+        section(&mut md, &empty, &cases_dir(), &cases, &out).unwrap();
+        assert!(!out.join(HEATMAP_FILE).exists());
+    }
+}
