@@ -6,9 +6,10 @@ use std::str::FromStr;
 
 use runout_mesh::{Grid, MeshError};
 
+use crate::checker::FieldError;
 use crate::schema::{Analytic, Case};
 use crate::sweep::{expand, Sweep};
-use crate::validate::{validate_analytic, validate_case, FieldError};
+use crate::validate::{validate_analytic, validate_case};
 
 /// Anything wrong with an input file, always naming the file.
 #[derive(Debug, thiserror::Error)]

@@ -55,7 +55,7 @@ fn check_rejects_bad_files_without_panicking() {
     assert_eq!(o.status.code(), Some(1), "{}", text(&o));
     let t = text(&o);
     assert!(
-        t.contains("neg.ron") && t.contains("solids[0].diameter") && t.contains("(0, inf)"),
+        t.contains("neg.ron") && t.contains("solids[0].diameter") && t.contains("[1e-6, 1] m"),
         "{t}"
     );
     assert!(!t.contains("panicked"), "{t}");

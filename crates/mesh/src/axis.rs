@@ -113,9 +113,12 @@ impl Segment {
                 ),
                 allowed: format!("widths that give at most {MAX_AXIS_CELLS} cells"),
             },
-            _ => MeshError::Invalid {
+            Segment::Uniform { cells, .. }
+            | Segment::Geometric { cells, .. }
+            | Segment::FirstWidth { cells, .. }
+            | Segment::LastWidth { cells, .. } => MeshError::Invalid {
                 field: format!("{field}.cells"),
-                value: short(count),
+                value: cells.to_string(),
                 allowed: format!("an integer in [1, {MAX_AXIS_CELLS}]"),
             },
         })
