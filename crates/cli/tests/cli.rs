@@ -45,6 +45,18 @@ fn check_accepts_every_shipped_case() {
 }
 
 #[test]
+fn check_prints_cells_unknowns_and_memory() {
+    let o = runout(&["check", "cases/mfix-slope/jj.ron"]);
+    assert!(o.status.success(), "{}", text(&o));
+    let t = text(&o);
+    assert!(
+        t.contains("paper 200x50 = 10000 cells, 70000 unknowns, ~2") && t.contains(" MiB"),
+        "{t}"
+    );
+    assert!(t.contains("smoke 40x10 = 400 cells"), "{t}");
+}
+
+#[test]
 fn check_rejects_bad_files_without_panicking() {
     let dir = std::env::temp_dir().join(format!("runout-cli-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
