@@ -13,9 +13,12 @@ mod checker;
 pub mod limits;
 mod load;
 mod name;
+mod read;
+mod ron_error;
 mod schema;
 mod size;
 mod sweep;
+mod sweep_base;
 mod validate;
 mod validate_grid;
 
@@ -24,5 +27,5 @@ pub use load::{case_files, load, load_case, CaseError, Fidelity, Loaded, Sourced
 pub use name::{is_valid_name, run_dir};
 pub use schema::*;
 pub use size::{available_memory_bytes, case_size, estimated_memory_bytes, format_bytes, CaseSize};
-pub use sweep::{expand, Param, Sweep};
+pub use sweep::{apply_set, expand, Param, Sweep};
 pub use validate::{validate_analytic, validate_case};

@@ -12,6 +12,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::limits::MAX_SWEEP_CASES;
 use crate::schema::{Boundary, Case, Gravity, SolidsWall};
 
 /// A sweep file (`Sweep(...)`).
@@ -195,8 +196,9 @@ fn for_each_solids_wall(
     }
 }
 
-/// Expands `sweep` over `base` into named cases. Errors are (field path, message).
-pub fn expand(sweep: &Sweep, base: &Case) -> Result<Vec<Case>, (String, String)> {
+/// `base` with the sweep's `set` parameters applied (what every expanded case starts
+/// from). Errors are (field path, message).
+pub fn apply_set(sweep: &Sweep, base: &Case) -> Result<Case, (String, String)> {
     let mut fixed = base.clone();
     for (k, p) in sweep.set.iter().enumerate() {
         if p.len() != 1 {
@@ -208,6 +210,29 @@ pub fn expand(sweep: &Sweep, base: &Case) -> Result<Vec<Case>, (String, String)>
         p.apply(0, &mut fixed)
             .map_err(|m| (format!("set[{k}] ({})", p.field()), m))?;
     }
+    Ok(fixed)
+}
+
+/// Expands `sweep` over `base` into named cases: at most [`MAX_SWEEP_CASES`], counted
+/// before any is built. Errors are (field path, message).
+pub fn expand(sweep: &Sweep, base: &Case) -> Result<Vec<Case>, (String, String)> {
+    let count = sweep
+        .vary
+        .iter()
+        .try_fold(1usize, |n, p| n.checked_mul(p.len()))
+        .filter(|&n| n <= MAX_SWEEP_CASES);
+    if count.is_none() {
+        let lengths: Vec<String> = sweep.vary.iter().map(|p| p.len().to_string()).collect();
+        return Err((
+            "vary".into(),
+            format!(
+                "at most {MAX_SWEEP_CASES} cases in all, found {} (the product of the list \
+                 lengths)",
+                lengths.join(" x ")
+            ),
+        ));
+    }
+    let fixed = apply_set(sweep, base)?;
     for (k, p) in sweep.vary.iter().enumerate() {
         if p.is_empty() {
             return Err((

@@ -484,3 +484,181 @@ fn names_that_leave_the_runs_folder_are_rejected() {
         .to_string();
     assert!(e.contains("name") && e.contains("\"..\""), "{e}");
 }
+
+/// A fresh folder for one test's files.
+fn folder(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("runout-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn a_byte_order_mark_is_accepted() {
+    let (_, r) = load_text("bom.ron", &format!("\u{feff}{}", mslide()));
+    r.expect("a UTF-8 byte-order mark is skipped");
+}
+
+#[test]
+fn a_non_utf8_byte_is_reported_with_line_and_offset() {
+    let dir = folder("utf8");
+    let text = mslide();
+    let at = text.find("Family M").unwrap() + "Family ".len();
+    let mut bytes = text.as_bytes().to_vec();
+    bytes.insert(at, 0xff);
+    let path = dir.join("latin1.ron");
+    std::fs::write(&path, bytes).unwrap();
+    let e = load(&path).expect_err("rejected").to_string();
+    let line = 1 + text[..at].matches('\n').count();
+    assert!(
+        e.contains(&format!(
+            "latin1.ron:{line}: byte 0xff at offset {at} is not UTF-8"
+        )),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_fraction_where_an_integer_is_expected_says_so() {
+    for (from, to, want) in [
+        (
+            "cells: 200)",
+            "cells: 2.5)",
+            "`cells` = 2.5: expected an integer",
+        ),
+        (
+            "cells: 200)",
+            "cells: 2e3)",
+            "`cells` = 2e3: expected an integer",
+        ),
+        (
+            "cells: 200)",
+            "cells: -3)",
+            "`cells` = -3: expected an integer in range",
+        ),
+        (
+            "coarsen: 5,",
+            "coarsen: 0.5,",
+            "`coarsen` = 0.5: expected an integer",
+        ),
+        (
+            "tolerances: (residual: 1e-3)",
+            "tolerances: (residual: 1e-3, max_iterations: 2.5)",
+            "`max_iterations` = 2.5: expected an integer",
+        ),
+    ] {
+        let t = replace_once(&mslide(), from, to);
+        rejected("int.ron", &t, &[want]);
+    }
+}
+
+#[test]
+fn files_larger_than_1_mib_are_not_read() {
+    let padding = format!("// {}\n", "x".repeat(100)).repeat(11_000);
+    let (_, r) = load_text("big_comment.ron", &format!("{padding}{}", mslide()));
+    let e = r.expect_err("rejected").to_string();
+    assert!(
+        e.contains("big_comment.ron") && e.contains("at most 1048576 bytes"),
+        "{e}"
+    );
+    // a device with no end is read only up to the limit
+    if Path::new("/dev/zero").exists() {
+        let e = load(Path::new("/dev/zero"))
+            .expect_err("rejected")
+            .to_string();
+        assert!(
+            e.contains("/dev/zero") && e.contains("at most 1048576 bytes"),
+            "{e}"
+        );
+    }
+}
+
+#[test]
+fn a_sweep_base_must_be_a_ron_file_below_the_sweep_folder() {
+    let top = folder("base");
+    let dir = top.join("sweeps");
+    std::fs::create_dir_all(dir.join("sub")).unwrap();
+    std::fs::write(dir.join("sub/base.ron"), mslide()).unwrap();
+    std::fs::write(top.join("outside.ron"), mslide()).unwrap();
+    std::fs::create_dir_all(dir.join("folder.ron")).unwrap();
+    let sweep = |base: &str| {
+        std::fs::write(
+            dir.join("s.ron"),
+            format!(r#"Sweep(name: "S", base: {base:?}, vary: [Slope([30.0, 40.0])])"#),
+        )
+        .unwrap();
+        load(&dir.join("s.ron"))
+    };
+    let cases = match sweep("sub/base.ron").expect("a base below the folder is accepted") {
+        runout_case::Loaded::Cases(c) => c,
+        _ => unreachable!(),
+    };
+    assert_eq!(cases.len(), 2);
+    sweep("sub/../sub/base.ron").expect("`..` that stays below is accepted");
+    for (base, want) in [
+        ("/dev/zero", "a relative path"),
+        ("/etc/passwd", "a relative path"),
+        ("../outside.ron", "outside the sweep file's folder"),
+        ("sub/base.txt", "a `.ron` file"),
+        ("folder.ron", "not a regular file"),
+        ("", "a relative path"),
+    ] {
+        let e = sweep(base).expect_err(base).to_string();
+        assert!(
+            e.contains("s.ron: base: ") && e.contains(want),
+            "{base}: {e}"
+        );
+        assert!(!e.contains("root:"), "{base}: file content echoed: {e}");
+    }
+    #[cfg(unix)]
+    {
+        std::os::unix::fs::symlink("/dev/zero", dir.join("zero.ron")).unwrap();
+        let e = sweep("zero.ron")
+            .expect_err("a link out is refused")
+            .to_string();
+        assert!(e.contains("outside the sweep file's folder"), "{e}");
+    }
+}
+
+#[test]
+fn sweep_set_values_are_validated_even_when_vary_overrides_them() {
+    let dir = folder("set");
+    std::fs::write(dir.join("base.ron"), mslide()).unwrap();
+    std::fs::write(
+        dir.join("s.ron"),
+        r#"Sweep(name: "S", base: "base.ron", set: [Slope([NaN])], vary: [Slope([30.0, 40.0])])"#,
+    )
+    .unwrap();
+    let e = load(&dir.join("s.ron")).expect_err("rejected").to_string();
+    assert!(
+        e.contains("the base with `set` applied") && e.contains("gravity.slope = NaN"),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_sweep_of_more_than_1000_cases_is_refused_before_expanding() {
+    let dir = folder("many");
+    std::fs::write(dir.join("base.ron"), mslide()).unwrap();
+    let list = |n: usize, scale: f64| {
+        (0..n)
+            .map(|k| format!("{:?}", 1.0 + k as f64 * scale))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    std::fs::write(
+        dir.join("s.ron"),
+        format!(
+            r#"Sweep(name: "S", base: "base.ron", vary: [Slope([{}]), Diameter([{}]), Specularity([{}])])"#,
+            list(11, 1.0),
+            list(10, 1e-5),
+            list(10, 0.01)
+        ),
+    )
+    .unwrap();
+    let e = load(&dir.join("s.ron")).expect_err("rejected").to_string();
+    assert!(
+        e.contains("at most 1000 cases") && e.contains("11 x 10 x 10"),
+        "{e}"
+    );
+}
