@@ -10,6 +10,7 @@
 //! ```
 //! expands to `S-JJ-phi_phi=1`, `S-JJ-phi_phi=0.1`, `S-JJ-phi_phi=0.01`.
 
+use runout_mesh::short;
 use serde::{Deserialize, Serialize};
 
 use crate::limits::MAX_SWEEP_CASES;
@@ -100,7 +101,8 @@ impl Param {
         self.len() == 0
     }
 
-    /// Label of value `k` for case names.
+    /// Label of value `k` for case names (numbers in short form: `1e-300`, never 300
+    /// digits; the shipped values print as they are written).
     pub fn label(&self, k: usize) -> String {
         match self {
             Param::Diameter(v)
@@ -108,7 +110,7 @@ impl Param {
             | Param::PartialSlipHu(v)
             | Param::PartialSlipHTheta(v)
             | Param::PartialSlipC(v)
-            | Param::Slope(v) => format!("{}", v[k]),
+            | Param::Slope(v) => short(v[k]),
             Param::SolidsWalls(v) => v[k].label(),
         }
     }
