@@ -116,14 +116,15 @@ pub const CELL_WIDTH: Band = Band {
     reason: "a tenth of the smallest diameter; a 1e-300 m layer next to 0.05 m cells is a typo",
 };
 
-/// Largest ratio of adjacent cell widths of any fidelity's grid.
+/// Largest ratio of adjacent cell widths of the grid as written (the presets' grids are
+/// coarsened from it by the code, not written, and reach 4.9 on the shipped cases).
 pub const ADJACENT_WIDTH_RATIO: Band = Band {
-    what: "largest adjacent cell-width ratio (any fidelity)",
+    what: "largest adjacent cell-width ratio (grid as written)",
     lo: 1.0,
-    hi: 10.0,
+    hi: 50.0,
     unit: "-",
-    reason:
-        "the shipped coarse presets reach 4.9; the centred stencils' error grows with the ratio",
+    reason: "shipped grids reach 1.13, grids coarsened from them 14..37 (xtask error-time's \
+             tiny level); 50 is a 1 mm layer next to 5 cm cells",
 };
 
 /// |g| `gravity.magnitude` when not 0 (0 is allowed: no gravity, as in the cavity).

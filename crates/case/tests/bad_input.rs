@@ -404,16 +404,16 @@ fn physically_impossible_values_name_field_value_and_band() {
             "[1e-7, 100000] m",
         ],
     );
-    // a jump from 1 mm to 5 cm cells
+    // a jump from 0.5 mm to 5 cm cells
     let t = replace_once(
         &m,
         "y: (segments: [Uniform(length: 0.5, cells: 50)])",
-        "y: (segments: [Uniform(length: 0.3, cells: 300), Uniform(length: 0.5, cells: 10)])",
+        "y: (segments: [Uniform(length: 0.3, cells: 600), Uniform(length: 0.5, cells: 10)])",
     );
     rejected(
         "ratio.ron",
         &t,
-        &["domain.y (largest adjacent width ratio)", "50"],
+        &["domain.y (largest adjacent width ratio)", "100", "[1, 50]"],
     );
 }
 

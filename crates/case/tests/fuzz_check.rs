@@ -611,12 +611,10 @@ fn case_violations(case: &Case) -> Vec<String> {
             Ok(g) => {
                 for axis in [&g.x, &g.y] {
                     in_band(out, "smallest width", axis.width_range().0, &CELL_WIDTH);
-                    in_band(
-                        out,
-                        "width ratio",
-                        axis.max_adjacent_ratio(),
-                        &ADJACENT_WIDTH_RATIO,
-                    );
+                    if f == Fidelity::Paper {
+                        let ratio = axis.max_adjacent_ratio();
+                        in_band(out, "width ratio", ratio, &ADJACENT_WIDTH_RATIO);
+                    }
                 }
                 if (g.nx() * g.ny()) as u64 != size.cells {
                     out.push(format!(
