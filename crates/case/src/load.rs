@@ -27,8 +27,8 @@ pub enum CaseError {
     },
     /// The file is larger than [`crate::limits::MAX_FILE_BYTES`].
     #[error(
-        "{file}: {}: allowed at most {} bytes (1 MiB) for a case, sweep or analytic file",
-        bytes.map_or("larger".to_string(), |b| format!("{b} bytes")),
+        "{file}: {} bytes: a case, sweep or analytic file may have at most {} bytes (1 MiB)",
+        bytes.map_or(format!("more than {}", crate::limits::MAX_FILE_BYTES), |b| b.to_string()),
         crate::limits::MAX_FILE_BYTES
     )]
     TooLarge {

@@ -166,13 +166,20 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
     } else {
         TIME.lo
     };
-    c.band_and_range(
-        "run.dt.min",
-        run.dt.min,
-        &TIME_STEP,
-        B::Closed(end * DT_MIN_PER_END_TIME),
-        B::Inf,
-    );
+    c.band("run.dt.min", run.dt.min, &TIME_STEP);
+    if TIME_STEP.contains(run.dt.min) && run.dt.min < end * DT_MIN_PER_END_TIME {
+        c.fail(
+            "run.dt.min",
+            short(run.dt.min),
+            format!(
+                ">= {} s (the end time {} s x {}: a smaller step no longer advances t in \
+                 double precision)",
+                short(end * DT_MIN_PER_END_TIME),
+                short(end),
+                short(DT_MIN_PER_END_TIME)
+            ),
+        );
+    }
     c.band("run.dt.max", run.dt.max, &TIME_STEP);
     c.band_and_range(
         "run.dt.initial",

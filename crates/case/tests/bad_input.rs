@@ -131,6 +131,14 @@ fn time_step_bounds() {
         "dt: (initial: 1e-4, min: 1e-2, max: 1e-3",
     );
     rejected("dtmin.ron", &t, &["run.dt.min"]);
+    // a smallest step that would no longer advance t near the end time
+    let t = replace_once(&mslide(), "end_time: 1.0,", "end_time: 1e6,");
+    let t = replace_once(&t, "min: 1e-6,", "min: 1e-4,");
+    rejected(
+        "dtrel.ron",
+        &t,
+        &["run.dt.min", ">= 0.001 s (the end time 1e6 s x 1e-9"],
+    );
     let t = replace_once(&mslide(), "factor: 0.9", "factor: 0.9, steps_per_change: 0");
     rejected(
         "dtsteps.ron",
