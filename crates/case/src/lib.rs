@@ -9,12 +9,23 @@
 //! errors that name the file, the field path and the allowed range.
 #![deny(missing_docs)]
 
+mod checker;
+pub mod limits;
 mod load;
+mod name;
+mod read;
+mod ron_error;
 mod schema;
+mod size;
 mod sweep;
+mod sweep_base;
 mod validate;
+mod validate_grid;
 
+pub use checker::FieldError;
 pub use load::{case_files, load, load_case, CaseError, Fidelity, Loaded, SourcedCase};
+pub use name::{is_valid_name, run_dir};
 pub use schema::*;
-pub use sweep::{expand, Param, Sweep};
-pub use validate::{validate_analytic, validate_case, FieldError};
+pub use size::{available_memory_bytes, case_size, estimated_memory_bytes, format_bytes, CaseSize};
+pub use sweep::{apply_set, expand, Param, Sweep};
+pub use validate::{validate_analytic, validate_case};

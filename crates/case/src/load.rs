@@ -6,9 +6,13 @@ use std::str::FromStr;
 
 use runout_mesh::{Grid, MeshError};
 
+use crate::checker::FieldError;
+use crate::read::read_text;
+use crate::ron_error;
 use crate::schema::{Analytic, Case};
-use crate::sweep::{expand, Sweep};
-use crate::validate::{validate_analytic, validate_case, FieldError};
+use crate::sweep::{apply_set, expand, Sweep};
+use crate::sweep_base::sweep_base;
+use crate::validate::{validate_analytic, validate_case};
 
 /// Anything wrong with an input file, always naming the file.
 #[derive(Debug, thiserror::Error)]
@@ -20,6 +24,33 @@ pub enum CaseError {
         file: PathBuf,
         /// the I/O error
         source: std::io::Error,
+    },
+    /// The file is larger than [`crate::limits::MAX_FILE_BYTES`].
+    #[error(
+        "{file}: {} bytes: a case, sweep or analytic file may have at most {} bytes (1 MiB)",
+        bytes.map_or(format!("more than {}", crate::limits::MAX_FILE_BYTES), |b| b.to_string()),
+        crate::limits::MAX_FILE_BYTES
+    )]
+    TooLarge {
+        /// the file
+        file: PathBuf,
+        /// its size, when its metadata states one
+        bytes: Option<u64>,
+    },
+    /// The file is not UTF-8 text.
+    #[error(
+        "{file}:{line}: byte 0x{byte:02x} at offset {offset} is not UTF-8: case files are UTF-8 \
+         text"
+    )]
+    Encoding {
+        /// the file
+        file: PathBuf,
+        /// 1-based line of the byte
+        line: usize,
+        /// 0-based offset of the byte in the file
+        offset: usize,
+        /// the byte
+        byte: u8,
     },
     /// The file is not valid RON for its kind (syntax, unknown or missing field, bad variant).
     #[error("{file}:{line}:{col}: {message}")]
@@ -173,14 +204,7 @@ fn parse<T: serde::de::DeserializeOwned>(file: &Path, text: &str) -> Result<T, C
         file: file.to_path_buf(),
         line: e.span.start.line,
         col: e.span.start.col,
-        message: e.code.to_string(),
-    })
-}
-
-fn read(file: &Path) -> Result<String, CaseError> {
-    std::fs::read_to_string(file).map_err(|source| CaseError::Io {
-        file: file.to_path_buf(),
-        source,
+        message: ron_error::message(text, &e),
     })
 }
 
@@ -206,8 +230,12 @@ fn leading_word(text: &str) -> String {
 
 /// Reads and validates a `Case(...)` file.
 pub fn load_case(file: &Path) -> Result<Case, CaseError> {
-    let text = read(file)?;
-    let case: Case = parse(file, &text)?;
+    case_from_text(file, &read_text(file)?)
+}
+
+/// Parses and validates the text of a `Case(...)` file.
+fn case_from_text(file: &Path, text: &str) -> Result<Case, CaseError> {
+    let case: Case = parse(file, text)?;
     validate_case(&case).map_err(|errors| CaseError::Invalid {
         file: file.to_path_buf(),
         case: case.name.clone(),
@@ -248,22 +276,30 @@ pub fn case_files(paths: &[PathBuf]) -> Vec<PathBuf> {
 
 /// Reads any case-directory file, expands sweeps and validates everything.
 pub fn load(file: &Path) -> Result<Loaded, CaseError> {
-    let text = read(file)?;
+    let text = read_text(file)?;
     match leading_word(&text).as_str() {
         "Case" => Ok(Loaded::Cases(vec![SourcedCase {
-            case: load_case(file)?,
+            case: case_from_text(file, &text)?,
             file: file.to_path_buf(),
             base: None,
         }])),
         "Sweep" => {
             let sweep: Sweep = parse(file, &text)?;
-            let base_path = file.parent().unwrap_or(Path::new(".")).join(&sweep.base);
-            let base = load_case(&base_path)?;
-            let cases = expand(&sweep, &base).map_err(|(field, message)| CaseError::Sweep {
+            let sweep_error = |(field, message)| CaseError::Sweep {
                 file: file.to_path_buf(),
                 field,
                 message,
+            };
+            let base_path = sweep_base(file, &sweep.base).map_err(sweep_error)?;
+            let base = load_case(&base_path)?;
+            // `set` values are validated even where `vary` overrides them
+            let fixed = apply_set(&sweep, &base).map_err(sweep_error)?;
+            validate_case(&fixed).map_err(|errors| CaseError::Invalid {
+                file: file.to_path_buf(),
+                case: format!("{} (the base with `set` applied)", sweep.name),
+                errors,
             })?;
+            let cases = expand(&sweep, &base).map_err(sweep_error)?;
             cases
                 .into_iter()
                 .map(|case| {

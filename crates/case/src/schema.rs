@@ -5,7 +5,7 @@
 //! Defaults are MFIX 21.3.2's (model-spec §5) unless a field says otherwise.
 
 pub use runout_closures::{Drag, FrictionModel, RadialDistribution};
-use runout_mesh::{AxisSpec, Side, Sides};
+use runout_mesh::{short, AxisSpec, Side, Sides};
 use serde::{Deserialize, Serialize};
 
 /// One simulation case (a `Case(...)` file).
@@ -276,9 +276,16 @@ impl SolidsWall {
             SolidsWall::PartialSlip {
                 h_u, h_theta, c, ..
             } => {
-                format!("ps-hu{h_u}-htheta{h_theta}-c{c}")
+                format!(
+                    "ps-hu{}-htheta{}-c{}",
+                    short(*h_u),
+                    short(*h_theta),
+                    short(*c)
+                )
             }
-            SolidsWall::JohnsonJackson { specularity, .. } => format!("jj-phi{specularity}"),
+            SolidsWall::JohnsonJackson { specularity, .. } => {
+                format!("jj-phi{}", short(*specularity))
+            }
             SolidsWall::RevisitedJohnsonJackson { .. } => "rjj".into(),
             SolidsWall::Jenkins { .. } => "jenkins".into(),
         }

@@ -10,8 +10,10 @@
 //! ```
 //! expands to `S-JJ-phi_phi=1`, `S-JJ-phi_phi=0.1`, `S-JJ-phi_phi=0.01`.
 
+use runout_mesh::short;
 use serde::{Deserialize, Serialize};
 
+use crate::limits::MAX_SWEEP_CASES;
 use crate::schema::{Boundary, Case, Gravity, SolidsWall};
 
 /// A sweep file (`Sweep(...)`).
@@ -99,7 +101,8 @@ impl Param {
         self.len() == 0
     }
 
-    /// Label of value `k` for case names.
+    /// Label of value `k` for case names (numbers in short form: `1e-300`, never 300
+    /// digits; the shipped values print as they are written).
     pub fn label(&self, k: usize) -> String {
         match self {
             Param::Diameter(v)
@@ -107,7 +110,7 @@ impl Param {
             | Param::PartialSlipHu(v)
             | Param::PartialSlipHTheta(v)
             | Param::PartialSlipC(v)
-            | Param::Slope(v) => format!("{}", v[k]),
+            | Param::Slope(v) => short(v[k]),
             Param::SolidsWalls(v) => v[k].label(),
         }
     }
@@ -195,8 +198,9 @@ fn for_each_solids_wall(
     }
 }
 
-/// Expands `sweep` over `base` into named cases. Errors are (field path, message).
-pub fn expand(sweep: &Sweep, base: &Case) -> Result<Vec<Case>, (String, String)> {
+/// `base` with the sweep's `set` parameters applied (what every expanded case starts
+/// from). Errors are (field path, message).
+pub fn apply_set(sweep: &Sweep, base: &Case) -> Result<Case, (String, String)> {
     let mut fixed = base.clone();
     for (k, p) in sweep.set.iter().enumerate() {
         if p.len() != 1 {
@@ -208,6 +212,29 @@ pub fn expand(sweep: &Sweep, base: &Case) -> Result<Vec<Case>, (String, String)>
         p.apply(0, &mut fixed)
             .map_err(|m| (format!("set[{k}] ({})", p.field()), m))?;
     }
+    Ok(fixed)
+}
+
+/// Expands `sweep` over `base` into named cases: at most [`MAX_SWEEP_CASES`], counted
+/// before any is built. Errors are (field path, message).
+pub fn expand(sweep: &Sweep, base: &Case) -> Result<Vec<Case>, (String, String)> {
+    let count = sweep
+        .vary
+        .iter()
+        .try_fold(1usize, |n, p| n.checked_mul(p.len()))
+        .filter(|&n| n <= MAX_SWEEP_CASES);
+    if count.is_none() {
+        let lengths: Vec<String> = sweep.vary.iter().map(|p| p.len().to_string()).collect();
+        return Err((
+            "vary".into(),
+            format!(
+                "at most {MAX_SWEEP_CASES} cases in all, found {} (the product of the list \
+                 lengths)",
+                lengths.join(" x ")
+            ),
+        ));
+    }
+    let fixed = apply_set(sweep, base)?;
     for (k, p) in sweep.vary.iter().enumerate() {
         if p.is_empty() {
             return Err((

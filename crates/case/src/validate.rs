@@ -1,138 +1,35 @@
 //! Validation of a parsed case: every bound, before anything runs.
 //!
-//! Errors are collected (not stopped at the first), each naming the field path and the
-//! allowed range, so one `runout check` shows everything that is wrong with a file.
+//! Errors are collected (not stopped at the first), each naming the field path, the value
+//! and the allowed range, so one `runout check` shows everything that is wrong with a
+//! file. Dimensional inputs must lie in the plausibility bands of [`crate::limits`].
 
-use std::fmt;
+use runout_mesh::{short, Side};
 
-use runout_mesh::{AxisSpec, Grid, Side};
-
+use crate::checker::{Checker, FieldError, B};
+use crate::limits::*;
+use crate::name::name_error;
 use crate::schema::*;
+use crate::validate_grid::check_grids;
 
-/// One out-of-range field.
-#[derive(Clone, Debug, PartialEq)]
-pub struct FieldError {
-    /// path of the field, e.g. `solids[0].diameter`
-    pub field: String,
-    /// the value found
-    pub value: String,
-    /// what is allowed
-    pub allowed: String,
-}
-
-impl fmt::Display for FieldError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "{} = {}: allowed {}",
-            self.field, self.value, self.allowed
-        )
-    }
-}
-
-/// Collects field errors.
-#[derive(Default)]
-struct Checker {
-    errors: Vec<FieldError>,
-}
-
-/// An interval bound.
-#[derive(Clone, Copy)]
-enum B {
-    Open(f64),
-    Closed(f64),
-    Inf,
-}
-
-fn fmt_interval(lo: B, hi: B) -> String {
-    let l = match lo {
-        B::Open(v) => format!("({v}"),
-        B::Closed(v) => format!("[{v}"),
-        B::Inf => "(-inf".into(),
-    };
-    let h = match hi {
-        B::Open(v) => format!("{v})"),
-        B::Closed(v) => format!("{v}]"),
-        B::Inf => "inf)".into(),
-    };
-    format!("{l}, {h}")
-}
-
-impl Checker {
-    fn fail(&mut self, field: impl Into<String>, value: impl ToString, allowed: impl Into<String>) {
-        self.errors.push(FieldError {
-            field: field.into(),
-            value: value.to_string(),
-            allowed: allowed.into(),
-        });
-    }
-
-    /// Checks lo ⋚ v ⋚ hi and finiteness.
-    fn range(&mut self, field: impl Into<String>, v: f64, lo: B, hi: B) {
-        let above = match lo {
-            B::Open(l) => v > l,
-            B::Closed(l) => v >= l,
-            B::Inf => true,
-        };
-        let below = match hi {
-            B::Open(h) => v < h,
-            B::Closed(h) => v <= h,
-            B::Inf => true,
-        };
-        if !(v.is_finite() && above && below) {
-            self.fail(field, v, fmt_interval(lo, hi));
-        }
-    }
-
-    fn positive(&mut self, field: impl Into<String>, v: f64) {
-        self.range(field, v, B::Open(0.0), B::Inf);
-    }
-
-    fn non_negative(&mut self, field: impl Into<String>, v: f64) {
-        self.range(field, v, B::Closed(0.0), B::Inf);
-    }
-
-    fn unit(&mut self, field: impl Into<String>, v: f64) {
-        self.range(field, v, B::Closed(0.0), B::Closed(1.0));
-    }
-
-    fn finite(&mut self, field: impl Into<String>, v: f64) {
-        self.range(field, v, B::Inf, B::Inf);
-    }
-
-    fn increasing(&mut self, field: &str, values: &[f64]) {
-        for k in 1..values.len() {
-            if values[k] <= values[k - 1] || values[k].is_nan() {
-                self.fail(
-                    format!("{field}[{k}]"),
-                    values[k],
-                    format!(
-                        "> {field}[{}] = {} (strictly increasing)",
-                        k - 1,
-                        values[k - 1]
-                    ),
-                );
-            }
-        }
-    }
-}
-
-/// Validates a case; `Ok` means every field is in range and every fidelity's grid builds.
+/// Validates a case; `Ok` means every field is in range and plausible, and every
+/// fidelity's grid builds within the size limits (see [`crate::limits`]).
 pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
     let mut c = Checker::default();
-    check_name(&mut c, "name", &case.name);
+    if let Some(e) = name_error("name", &case.name) {
+        c.errors.push(e);
+    }
 
-    // Grid: the paper fidelity and both presets must build.
+    // Grid: sizes bounded before anything is built; then every fidelity's grid.
+    check_grids(&mut c, case);
     let x_end = case.domain.x.end();
     let y_end = case.domain.y.end();
     let (x0, y0) = (case.domain.x.origin, case.domain.y.origin);
-    check_axis(&mut c, "domain.x", &case.domain.x);
-    check_axis(&mut c, "domain.y", &case.domain.y);
 
     if let Some(gas) = &case.gas {
-        c.positive("gas.density", gas.density);
-        c.positive("gas.viscosity", gas.viscosity);
-        c.positive("gas.reference_pressure", gas.reference_pressure);
+        c.band("gas.density", gas.density, &GAS_DENSITY);
+        c.band("gas.viscosity", gas.viscosity, &GAS_VISCOSITY);
+        c.band("gas.reference_pressure", gas.reference_pressure, &PRESSURE);
     }
 
     if case.solids.is_empty() && case.gas.is_none() {
@@ -142,17 +39,19 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
             "at least one solids phase, or a gas (a single-phase case)",
         );
     }
+    if case.solids.len() > MAX_SOLIDS_PHASES {
+        c.fail(
+            "solids",
+            format!("{} phases", case.solids.len()),
+            format!("at most {MAX_SOLIDS_PHASES} phases (MFIX's DIM_M)"),
+        );
+    }
     for (k, s) in case.solids.iter().enumerate() {
         let p = format!("solids[{k}]");
-        c.positive(format!("{p}.diameter"), s.diameter);
-        c.positive(format!("{p}.density"), s.density);
+        c.band(format!("{p}.diameter"), s.diameter, &DIAMETER);
+        c.band(format!("{p}.density"), s.density, &PARTICLE_DENSITY);
         c.unit(format!("{p}.restitution"), s.restitution);
-        c.range(
-            format!("{p}.max_packing"),
-            s.max_packing,
-            B::Open(0.0),
-            B::Open(1.0),
-        );
+        c.band(format!("{p}.max_packing"), s.max_packing, &MAX_PACKING);
         c.range(
             format!("{p}.friction_min_packing"),
             s.friction_min_packing,
@@ -168,12 +67,14 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
     }
 
     match &case.models.kinetic_theory {
-        KineticTheory::Lun1984 { alpha } => c.non_negative("models.kinetic_theory.alpha", *alpha),
+        KineticTheory::Lun1984 { alpha } => {
+            c.band("models.kinetic_theory.alpha", *alpha, &KT_ALPHA)
+        }
         KineticTheory::Algebraic => {}
     }
     if let Drag::SyamlalOBrien { c1, d1 } = &case.models.drag {
-        c.positive("models.drag.c1", *c1);
-        c.positive("models.drag.d1", *d1);
+        c.band("models.drag.c1", *c1, &DRAG_C1);
+        c.band("models.drag.d1", *d1, &DRAG_D1);
     }
 
     for (side, b) in case.boundaries.iter() {
@@ -186,11 +87,19 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
     }
 
     // Initial state.
-    c.non_negative("initial.theta", case.initial.theta);
-    c.finite("initial.gas_velocity.0", case.initial.gas_velocity.0);
-    c.finite("initial.gas_velocity.1", case.initial.gas_velocity.1);
+    c.band("initial.theta", case.initial.theta, &THETA);
+    c.band(
+        "initial.gas_velocity.0",
+        case.initial.gas_velocity.0,
+        &VELOCITY,
+    );
+    c.band(
+        "initial.gas_velocity.1",
+        case.initial.gas_velocity.1,
+        &VELOCITY,
+    );
     if let InitialPressure::Uniform(p) = case.initial.gas_pressure {
-        c.positive("initial.gas_pressure", p);
+        c.band("initial.gas_pressure", p, &PRESSURE);
     }
     for (k, block) in case.initial.regions.iter().enumerate() {
         let p = format!("initial.regions[{k}]");
@@ -206,15 +115,10 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
         let mut total = 0.0;
         for (m, (bs, phase)) in block.solids.iter().zip(&case.solids).enumerate() {
             let q = format!("{p}.solids[{m}]");
-            c.range(
-                format!("{q}.eps_s"),
-                bs.eps_s,
-                B::Closed(0.0),
-                B::Closed(phase.max_packing),
-            );
-            c.finite(format!("{q}.velocity.0"), bs.velocity.0);
-            c.finite(format!("{q}.velocity.1"), bs.velocity.1);
-            c.non_negative(format!("{q}.theta"), bs.theta);
+            check_packing(&mut c, &format!("{q}.eps_s"), bs.eps_s, phase.max_packing);
+            c.band(format!("{q}.velocity.0"), bs.velocity.0, &VELOCITY);
+            c.band(format!("{q}.velocity.1"), bs.velocity.1, &VELOCITY);
+            c.band(format!("{q}.theta"), bs.theta, &THETA);
             total += bs.eps_s;
         }
         let max_pack = case
@@ -222,70 +126,94 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
             .iter()
             .map(|s| s.max_packing)
             .fold(0.0, f64::max);
-        if block.solids.len() > 1 && total > max_pack {
-            c.fail(
-                format!("{p}.solids (sum of eps_s)"),
+        if block.solids.len() > 1 {
+            check_packing(
+                &mut c,
+                &format!("{p}.solids (sum of eps_s)"),
                 total,
-                format!("[0, {max_pack}]"),
+                max_pack,
             );
         }
     }
 
     // Gravity.
-    match &case.gravity {
-        Gravity::Constant { magnitude, slope } => {
-            c.non_negative("gravity.magnitude", *magnitude);
-            c.range("gravity.slope", *slope, B::Closed(0.0), B::Open(90.0));
-        }
+    let (magnitude, slope) = match &case.gravity {
+        Gravity::Constant { magnitude, slope } => (*magnitude, *slope),
         Gravity::TiltOnImpact {
             magnitude,
             slope,
             contact_eps_s,
         } => {
-            c.non_negative("gravity.magnitude", *magnitude);
-            c.range("gravity.slope", *slope, B::Closed(0.0), B::Open(90.0));
             c.range(
                 "gravity.contact_eps_s",
                 *contact_eps_s,
                 B::Open(0.0),
                 B::Open(1.0),
             );
+            (*magnitude, *slope)
         }
+    };
+    if magnitude != 0.0 {
+        c.band("gravity.magnitude", magnitude, &GRAVITY);
     }
+    c.range("gravity.slope", slope, B::Closed(0.0), B::Open(90.0));
 
     // Run control.
     let run = &case.run;
-    c.positive("run.end_time", run.end_time);
-    c.positive("run.dt.min", run.dt.min);
-    c.positive("run.dt.max", run.dt.max);
-    c.range(
+    c.band("run.end_time", run.end_time, &TIME);
+    let end = if TIME.contains(run.end_time) {
+        run.end_time
+    } else {
+        TIME.lo
+    };
+    c.band("run.dt.min", run.dt.min, &TIME_STEP);
+    if TIME_STEP.contains(run.dt.min) && run.dt.min < end * DT_MIN_PER_END_TIME {
+        c.fail(
+            "run.dt.min",
+            short(run.dt.min),
+            format!(
+                ">= {} s (the end time {} s x {}: a smaller step no longer advances t in \
+                 double precision)",
+                short(end * DT_MIN_PER_END_TIME),
+                short(end),
+                short(DT_MIN_PER_END_TIME)
+            ),
+        );
+    }
+    c.band("run.dt.max", run.dt.max, &TIME_STEP);
+    c.band_and_range(
         "run.dt.initial",
         run.dt.initial,
+        &TIME_STEP,
         B::Closed(run.dt.min),
         B::Closed(run.dt.max),
     );
     if run.dt.min > run.dt.max {
         c.fail(
             "run.dt.min",
-            run.dt.min,
-            format!("<= run.dt.max = {}", run.dt.max),
+            short(run.dt.min),
+            format!("<= run.dt.max = {}", short(run.dt.max)),
         );
     }
     c.range("run.dt.factor", run.dt.factor, B::Open(0.0), B::Closed(1.0));
     if let Some(f) = run.dt.failure_factor {
         c.range("run.dt.failure_factor", f, B::Open(0.0), B::Open(1.0));
     }
-    if run.dt.steps_per_change < 1 {
-        c.fail(
-            "run.dt.steps_per_change",
-            run.dt.steps_per_change,
-            "an integer >= 1",
-        );
-    }
-    c.positive("run.tolerances.residual", run.tolerances.residual);
-    c.positive(
+    c.count(
+        "run.dt.steps_per_change",
+        run.dt.steps_per_change as u64,
+        1,
+        MAX_ITERATIONS,
+    );
+    c.band(
+        "run.tolerances.residual",
+        run.tolerances.residual,
+        &TOLERANCE,
+    );
+    c.band(
         "run.tolerances.theta_residual",
         run.tolerances.theta_residual,
+        &TOLERANCE,
     );
     c.range(
         "run.tolerances.diverge",
@@ -293,16 +221,27 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
         B::Open(run.tolerances.residual),
         B::Inf,
     );
-    if run.tolerances.max_iterations < 2 {
-        c.fail(
-            "run.tolerances.max_iterations",
-            run.tolerances.max_iterations,
-            "an integer >= 2",
-        );
-    }
-    c.positive("run.output_interval", run.output_interval);
+    c.count(
+        "run.tolerances.max_iterations",
+        u64::from(run.tolerances.max_iterations),
+        2,
+        MAX_ITERATIONS,
+    );
+    check_interval(
+        &mut c,
+        "run.output_interval",
+        run.output_interval,
+        end,
+        (MAX_OUTPUTS, "outputs"),
+    );
     if let Some(interval) = run.checkpoint_interval {
-        c.positive("run.checkpoint_interval", interval);
+        check_interval(
+            &mut c,
+            "run.checkpoint_interval",
+            interval,
+            end,
+            (MAX_OUTPUTS, "checkpoints"),
+        );
     }
 
     let r = &case.numerics.relaxation;
@@ -313,12 +252,7 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
         ("theta", r.theta),
         ("wall_closures", r.wall_closures),
     ] {
-        c.range(
-            format!("numerics.relaxation.{name}"),
-            v,
-            B::Open(0.0),
-            B::Closed(1.0),
-        );
+        c.band(format!("numerics.relaxation.{name}"), v, &RELAXATION);
     }
 
     // Monitors.
@@ -338,6 +272,13 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
         }
         c.increasing(&format!("{p}.times"), &prof.times);
     }
+    if case.monitors.wall_probes.len() > MAX_WALL_PROBES {
+        c.fail(
+            "monitors.wall_probes",
+            format!("{} probes", case.monitors.wall_probes.len()),
+            format!("at most {MAX_WALL_PROBES} (each keeps a file open during the run)"),
+        );
+    }
     for (k, probe) in case.monitors.wall_probes.iter().enumerate() {
         let p = format!("monitors.wall_probes[{k}]");
         let (lo, hi) = match probe.side {
@@ -352,7 +293,13 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
                 "a side that is a Wall",
             );
         }
-        c.positive(format!("{p}.interval"), probe.interval);
+        check_interval(
+            &mut c,
+            &format!("{p}.interval"),
+            probe.interval,
+            end,
+            (MAX_SAMPLES, "samples"),
+        );
     }
     if let Some(front) = &case.monitors.front {
         let p = "monitors.front";
@@ -377,10 +324,22 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
             );
         }
         c.increasing(&format!("{p}.gates"), &front.gates);
-        c.positive(format!("{p}.interval"), front.interval);
+        check_interval(
+            &mut c,
+            &format!("{p}.interval"),
+            front.interval,
+            end,
+            (MAX_SAMPLES, "samples"),
+        );
     }
     if let Some(bulk) = &case.monitors.bulk {
-        c.positive("monitors.bulk.interval", bulk.interval);
+        check_interval(
+            &mut c,
+            "monitors.bulk.interval",
+            bulk.interval,
+            end,
+            (MAX_SAMPLES, "samples"),
+        );
         c.range(
             "monitors.bulk.front_threshold",
             bulk.front_threshold,
@@ -389,8 +348,8 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
         );
     }
 
-    // Fidelity presets: coarsening ≥ 1, end times in (0, paper end time], grids build.
-    let grid_ok = c.errors.is_empty();
+    // Fidelity presets: coarsening ≥ 1, end times in the band and ≤ the paper end time
+    // (their grids are checked with the domain's).
     for (name, preset) in [
         ("smoke", &case.fidelity.smoke),
         ("coarse", &case.fidelity.coarse),
@@ -399,70 +358,60 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
         if preset.coarsen < 1 {
             c.fail(format!("{p}.coarsen"), preset.coarsen, "an integer >= 1");
         }
-        c.range(
+        c.band_and_range(
             format!("{p}.end_time"),
             preset.end_time,
+            &TIME,
             B::Open(0.0),
             B::Closed(run.end_time),
         );
-        let cx = case.domain.x.coarsened(preset.coarsen);
-        let cy = case.domain.y.coarsened(preset.coarsen);
-        if grid_ok && preset.coarsen >= 1 {
-            if let Err(e) = Grid::from_specs(&cx, &cy) {
-                c.fail(
-                    format!("{p}.coarsen"),
-                    preset.coarsen,
-                    format!("a factor whose grid builds ({e})"),
-                );
-            }
-        }
     }
 
-    if c.errors.is_empty() {
-        Ok(())
-    } else {
-        Err(c.errors)
-    }
+    c.into_result()
 }
 
-fn check_name(c: &mut Checker, field: &str, name: &str) {
-    let ok = !name.is_empty()
-        && name
-            .chars()
-            .all(|ch| ch.is_ascii_alphanumeric() || "-_.=".contains(ch));
-    if !ok {
+/// A block's εs (or the sum over phases) strictly below the packing limit: at εs,max the
+/// solids pressure's packing term diverges (MFIX's P_c ∝ 1/(εs,max − εs)^D), so a block
+/// at exactly max_packing stopped at t = 0 after retries (issue 21).
+fn check_packing(c: &mut Checker, field: &str, eps_s: f64, max_packing: f64) {
+    if !(eps_s.is_finite() && eps_s >= 0.0 && eps_s < max_packing) {
         c.fail(
             field,
-            format!("{name:?}"),
-            "a non-empty name of letters, digits and -_.=",
+            short(eps_s),
+            format!(
+                "[0, {}) (strictly below max_packing: the solids pressure diverges at the \
+                 packing limit)",
+                short(max_packing)
+            ),
         );
     }
 }
 
-fn check_axis(c: &mut Checker, field: &str, axis: &AxisSpec) {
-    let before = c.errors.len();
-    c.finite(format!("{field}.origin"), axis.origin);
-    if axis.segments.is_empty() {
-        c.fail(format!("{field}.segments"), "[]", "at least one segment");
-    }
-    for (k, seg) in axis.segments.iter().enumerate() {
-        if let Err(runout_mesh::MeshError::Invalid {
-            field: f,
-            value,
-            allowed,
-        }) = seg.validate(&format!("{field}.segments[{k}]"))
-        {
-            c.fail(f, value, allowed);
-        }
-    }
-    if c.errors.len() == before {
-        if let Err(e) = axis.build() {
-            c.fail(
-                format!("{field}.segments"),
-                "(as given)",
-                format!("segments that form a grid: {e}"),
-            );
-        }
+/// An output or monitor interval: at most `max_count` outputs to `end_time`, at least
+/// [`MIN_INTERVAL`], at most the longest end time. Below that, `next += interval` stops
+/// advancing past t and the run spins (issue 21).
+fn check_interval(
+    c: &mut Checker,
+    field: &str,
+    v: f64,
+    end_time: f64,
+    (max_count, what): (f64, &str),
+) {
+    let lo = (end_time / max_count).max(MIN_INTERVAL);
+    if !(v.is_finite() && v >= lo && v <= TIME.hi) {
+        c.fail(
+            field,
+            short(v),
+            format!(
+                "[{}, {}] s (at most {} {what} to the end time {} s, and >= {} s: \
+                 docs/input-validation.md)",
+                short(lo),
+                short(TIME.hi),
+                short(max_count),
+                short(end_time),
+                short(MIN_INTERVAL)
+            ),
+        );
     }
 }
 
@@ -472,8 +421,8 @@ fn check_span(c: &mut Checker, field: &str, span: (f64, f64), lo: f64, hi: f64) 
     if span.1 <= span.0 || span.1.is_nan() {
         c.fail(
             format!("{field}.1"),
-            span.1,
-            format!("> {field}.0 = {}", span.0),
+            short(span.1),
+            format!("> {field}.0 = {}", short(span.0)),
         );
     }
 }
@@ -484,7 +433,7 @@ fn check_boundary(c: &mut Checker, p: &str, b: &Boundary, has_gas: bool) {
             let v = match pressure {
                 OutletPressure::Uniform(v) | OutletPressure::Hydrostatic(v) => *v,
             };
-            c.positive(format!("{p}.pressure"), v);
+            c.band(format!("{p}.pressure"), v, &PRESSURE);
             if !has_gas {
                 c.fail(
                     p.to_string(),
@@ -496,10 +445,10 @@ fn check_boundary(c: &mut Checker, p: &str, b: &Boundary, has_gas: bool) {
         Boundary::Wall { gas, solids } => {
             match gas {
                 GasWall::PartialSlip { h_u, u_w } => {
-                    c.non_negative(format!("{p}.gas.h_u"), *h_u);
-                    c.finite(format!("{p}.gas.u_w"), *u_w);
+                    c.band(format!("{p}.gas.h_u"), *h_u, &SLIP_COEFFICIENT);
+                    c.band(format!("{p}.gas.u_w"), *u_w, &VELOCITY);
                 }
-                GasWall::Moving { u_w } => c.finite(format!("{p}.gas.u_w"), *u_w),
+                GasWall::Moving { u_w } => c.band(format!("{p}.gas.u_w"), *u_w, &VELOCITY),
                 GasWall::NoSlip | GasWall::FreeSlip => {}
             }
             let q = format!("{p}.solids");
@@ -511,6 +460,7 @@ fn check_boundary(c: &mut Checker, p: &str, b: &Boundary, has_gas: bool) {
                     B::Open(90.0),
                 )
             };
+            let wall_velocity = |c: &mut Checker, v: f64| c.band(format!("{q}.u_w"), v, &VELOCITY);
             match solids {
                 SolidsWall::NoSlip | SolidsWall::FreeSlip => {}
                 SolidsWall::PartialSlip {
@@ -520,11 +470,11 @@ fn check_boundary(c: &mut Checker, p: &str, b: &Boundary, has_gas: bool) {
                     theta_w,
                     c: flux,
                 } => {
-                    c.non_negative(format!("{q}.h_u"), *h_u);
-                    c.finite(format!("{q}.u_w"), *u_w);
-                    c.non_negative(format!("{q}.h_theta"), *h_theta);
-                    c.non_negative(format!("{q}.theta_w"), *theta_w);
-                    c.finite(format!("{q}.c"), *flux);
+                    c.band(format!("{q}.h_u"), *h_u, &SLIP_COEFFICIENT);
+                    wall_velocity(c, *u_w);
+                    c.band(format!("{q}.h_theta"), *h_theta, &SLIP_COEFFICIENT);
+                    c.band(format!("{q}.theta_w"), *theta_w, &THETA);
+                    c.band(format!("{q}.c"), *flux, &THETA_FLUX);
                 }
                 SolidsWall::JohnsonJackson {
                     specularity,
@@ -535,7 +485,7 @@ fn check_boundary(c: &mut Checker, p: &str, b: &Boundary, has_gas: bool) {
                     c.unit(format!("{q}.specularity"), *specularity);
                     c.unit(format!("{q}.wall_restitution"), *wall_restitution);
                     wall_angle(c, *wall_friction_angle);
-                    c.finite(format!("{q}.u_w"), *u_w);
+                    wall_velocity(c, *u_w);
                 }
                 SolidsWall::RevisitedJohnsonJackson {
                     wall_restitution,
@@ -548,7 +498,7 @@ fn check_boundary(c: &mut Checker, p: &str, b: &Boundary, has_gas: bool) {
                     if let Some(phi0) = phi0 {
                         c.range(format!("{q}.phi0"), *phi0, B::Open(0.0), B::Closed(1.0));
                     }
-                    c.finite(format!("{q}.u_w"), *u_w);
+                    wall_velocity(c, *u_w);
                 }
                 SolidsWall::Jenkins {
                     wall_restitution,
@@ -557,7 +507,7 @@ fn check_boundary(c: &mut Checker, p: &str, b: &Boundary, has_gas: bool) {
                 } => {
                     c.unit(format!("{q}.wall_restitution"), *wall_restitution);
                     wall_angle(c, *wall_friction_angle);
-                    c.finite(format!("{q}.u_w"), *u_w);
+                    wall_velocity(c, *u_w);
                 }
             }
         }
@@ -567,27 +517,25 @@ fn check_boundary(c: &mut Checker, p: &str, b: &Boundary, has_gas: bool) {
 /// Validates a family-A file.
 pub fn validate_analytic(a: &Analytic) -> Result<(), Vec<FieldError>> {
     let mut c = Checker::default();
-    check_name(&mut c, "name", &a.name);
-    c.positive("depth", a.depth);
-    c.finite("velocity.bulk", a.velocity.bulk);
-    c.finite("velocity.wall", a.velocity.wall);
+    if let Some(e) = name_error("name", &a.name) {
+        c.errors.push(e);
+    }
+    c.band("depth", a.depth, &DOMAIN_LENGTH);
+    c.band("velocity.bulk", a.velocity.bulk, &VELOCITY);
+    c.band("velocity.wall", a.velocity.wall, &VELOCITY);
     if a.velocity.h_u.is_empty() {
         c.fail("velocity.h_u", "[]", "at least one value");
     }
     for (k, h) in a.velocity.h_u.iter().enumerate() {
-        c.non_negative(format!("velocity.h_u[{k}]"), *h);
+        c.band(format!("velocity.h_u[{k}]"), *h, &SLIP_COEFFICIENT);
     }
-    c.non_negative("temperature.bulk", a.temperature.bulk);
-    c.non_negative("temperature.wall", a.temperature.wall);
+    c.band("temperature.bulk", a.temperature.bulk, &THETA);
+    c.band("temperature.wall", a.temperature.wall, &THETA);
     for (k, h) in a.temperature.h_theta.iter().enumerate() {
-        c.non_negative(format!("temperature.h_theta[{k}]"), *h);
+        c.band(format!("temperature.h_theta[{k}]"), *h, &SLIP_COEFFICIENT);
     }
     for (k, v) in a.temperature.c.iter().enumerate() {
-        c.finite(format!("temperature.c[{k}]"), *v);
+        c.band(format!("temperature.c[{k}]"), *v, &THETA_FLUX);
     }
-    if c.errors.is_empty() {
-        Ok(())
-    } else {
-        Err(c.errors)
-    }
+    c.into_result()
 }

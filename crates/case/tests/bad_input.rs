@@ -50,7 +50,11 @@ fn mslide() -> String {
 #[test]
 fn negative_diameter() {
     let t = replace_once(&mslide(), "diameter: 5e-4", "diameter: -1e-3");
-    rejected("d.ron", &t, &["solids[0].diameter", "-0.001", "(0, inf)"]);
+    rejected(
+        "d.ron",
+        &t,
+        &["solids[0].diameter", "-0.001", "[1e-6, 1] m"],
+    );
 }
 
 #[test]
@@ -86,12 +90,12 @@ fn unknown_boundary_condition() {
 #[test]
 fn packing_above_one_and_block_denser_than_packing() {
     let t = replace_once(&mslide(), "max_packing: 0.65", "max_packing: 1.2");
-    rejected("pack.ron", &t, &["solids[0].max_packing", "(0, 1)"]);
+    rejected("pack.ron", &t, &["solids[0].max_packing", "[0.3, 0.9]"]);
     let t = replace_once(&mslide(), "eps_s: 0.6,", "eps_s: 0.7,");
     rejected(
         "block.ron",
         &t,
-        &["initial.regions[0].solids[0].eps_s", "[0, 0.65]"],
+        &["initial.regions[0].solids[0].eps_s", "[0, 0.65)"],
     );
 }
 
@@ -120,18 +124,26 @@ fn time_step_bounds() {
         "dt: (initial: 1e-4, min: 1e-6, max: 1e-3",
         "dt: (initial: 1e-2, min: 1e-6, max: 1e-3",
     );
-    rejected("dt.ron", &t, &["run.dt.initial", "[0.000001, 0.001]"]);
+    rejected("dt.ron", &t, &["run.dt.initial", "[1e-6, 0.001]"]);
     let t = replace_once(
         &mslide(),
         "dt: (initial: 1e-4, min: 1e-6, max: 1e-3",
         "dt: (initial: 1e-4, min: 1e-2, max: 1e-3",
     );
     rejected("dtmin.ron", &t, &["run.dt.min"]);
+    // a smallest step that would no longer advance t near the end time
+    let t = replace_once(&mslide(), "end_time: 1.0,", "end_time: 1e6,");
+    let t = replace_once(&t, "min: 1e-6,", "min: 1e-4,");
+    rejected(
+        "dtrel.ron",
+        &t,
+        &["run.dt.min", ">= 0.001 s (the end time 1e6 s x 1e-9"],
+    );
     let t = replace_once(&mslide(), "factor: 0.9", "factor: 0.9, steps_per_change: 0");
     rejected(
         "dtsteps.ron",
         &t,
-        &["run.dt.steps_per_change", "an integer >= 1"],
+        &["run.dt.steps_per_change", "an integer in [1, 10000]"],
     );
     let t = replace_once(
         &mslide(),
@@ -208,4 +220,453 @@ fn sweep_that_does_not_apply_is_rejected() {
     std::fs::write(dir.join("z.ron"), sweep).unwrap();
     let e = load(&dir.join("z.ron")).expect_err("rejected").to_string();
     assert!(e.contains("nope.ron"), "{e}");
+}
+
+// ---- issue 21: inputs that hung, crashed or ran to nonsense ----
+
+#[test]
+fn intervals_too_small_to_advance_time_are_rejected() {
+    let short_form = |name: &str, text: &str, field: &str| {
+        let (_, r) = load_text(name, text);
+        let e = r.expect_err("rejected").to_string();
+        assert!(e.contains(field) && e.contains("= 1e-300"), "{e}");
+        assert!(!e.contains("00000000"), "a long decimal in: {e}");
+    };
+    let t = replace_once(
+        &mslide(),
+        "output_interval: 0.05",
+        "output_interval: 1e-300",
+    );
+    rejected("out.ron", &t, &["run.output_interval", "[1e-5, 1e7] s"]);
+    short_form("out2.ron", &t, "run.output_interval");
+    // at most 100 000 field outputs: end time 1 s, so 1e-5 s is the smallest interval
+    let t = replace_once(&mslide(), "output_interval: 0.05", "output_interval: 9e-6");
+    rejected(
+        "out3.ron",
+        &t,
+        &["run.output_interval", "at most 100000 outputs"],
+    );
+    let t = replace_once(&mslide(), "output_interval: 0.05", "output_interval: 1e-5");
+    load_text("out4.ron", &t)
+        .1
+        .expect("1e-5 s is 1e5 outputs: accepted");
+    let t = replace_once(
+        &mslide(),
+        "bulk: (interval: 0.01",
+        "bulk: (interval: 1e-300",
+    );
+    short_form("bulk.ron", &t, "monitors.bulk.interval");
+    let t = replace_once(
+        &mslide(),
+        "side: South, interval: 0.005",
+        "side: South, interval: 1e-300",
+    );
+    short_form("probe.ron", &t, "monitors.wall_probes[0].interval");
+    let flume = shipped("flume/base.ron");
+    let t = replace_once(&flume, "interval: 0.002", "interval: 1e-300");
+    short_form("front.ron", &t, "monitors.front.interval");
+}
+
+#[test]
+fn huge_grids_are_rejected_before_anything_is_allocated() {
+    for cells in ["18446744073709551615", "4294967296", "1000000000"] {
+        let t = replace_once(&mslide(), "cells: 200)", &format!("cells: {cells})"));
+        rejected(
+            "cells.ron",
+            &t,
+            &["domain.x.segments[0].cells", cells, "[1, 1000000]"],
+        );
+    }
+    let flume = shipped("flume/base.ron");
+    let first = "EndWidths(length: 0.5, first: 0.05, last: 0.01)";
+    let t = replace_once(
+        &flume,
+        first,
+        "EndWidths(length: 1e300, first: 0.05, last: 0.01)",
+    );
+    rejected("long.ron", &t, &["domain.x.segments[0]", "cells"]);
+    let t = replace_once(
+        &flume,
+        first,
+        "EndWidths(length: 0.5, first: 1e-300, last: 1e-300)",
+    );
+    rejected("tiny.ron", &t, &["domain.x.segments[0]", "cells"]);
+    let t = replace_once(
+        &flume,
+        first,
+        "EndWidths(length: 0.5, first: 1e-300, last: 0.01)",
+    );
+    rejected("tiny_first.ron", &t, &["domain.x"]);
+    // each axis within its cap, 1e9 cells in all: ~1.8 TiB for the two-fluid solver
+    let t = replace_once(&mslide(), "cells: 200)", "cells: 40000)");
+    let t = replace_once(&t, "cells: 50)", "cells: 25000)");
+    rejected(
+        "big.ron",
+        &t,
+        &[
+            "domain (cells)",
+            "40000 x 25000 = 1000000000",
+            "at most 10000000 cells",
+        ],
+    );
+}
+
+#[test]
+fn physically_impossible_values_name_field_value_and_band() {
+    let m = mslide();
+    let cases: [(&str, &str, &[&str]); 14] = [
+        (
+            "Uniform(length: 4.0, cells: 200)",
+            "Uniform(length: 1.8e19, cells: 200)",
+            &[
+                "domain.x.segments (total length)",
+                "1.8e19",
+                "[0.0001, 100000] m",
+            ],
+        ),
+        (
+            "viscosity: 1.8e-5",
+            "viscosity: 1e-300",
+            &["gas.viscosity", "1e-300", "[1e-7, 1] Pa s"],
+        ),
+        (
+            "diameter: 5e-4",
+            "diameter: 1e300",
+            &["solids[0].diameter", "1e300", "[1e-6, 1] m"],
+        ),
+        (
+            "density: 2000.0",
+            "density: 1e9",
+            &["solids[0].density", "[100, 25000] kg/m³"],
+        ),
+        (
+            "density: 1.2",
+            "density: 1e-9",
+            &["gas.density", "[0.001, 100] kg/m³"],
+        ),
+        (
+            "reference_pressure: 101325.0",
+            "reference_pressure: 1e-300",
+            &["gas.reference_pressure", "[1, 1e9] Pa"],
+        ),
+        (
+            "Hydrostatic(101325.0)",
+            "Hydrostatic(1e12)",
+            &["boundaries.north.pressure", "1e12"],
+        ),
+        (
+            "magnitude: 9.81",
+            "magnitude: 1e-300",
+            &["gravity.magnitude", "[0.01, 1000] m/s²"],
+        ),
+        (
+            "theta: 1e-5,\n",
+            "theta: 1e9,\n",
+            &["initial.theta", "[0, 10000] m²/s²"],
+        ),
+        (
+            "wall_friction_angle: 11.0)",
+            "wall_friction_angle: 11.0, u_w: 1e6)",
+            &["boundaries.south.solids.u_w", "[-1000, 1000] m/s"],
+        ),
+        (
+            "Lun1984(alpha: 1.6)",
+            "Lun1984(alpha: 1e300)",
+            &["models.kinetic_theory.alpha"],
+        ),
+        (
+            "end_time: 1.0,",
+            "end_time: 1e300,",
+            &["run.end_time", "[1e-6, 1e7] s"],
+        ),
+        ("min: 1e-6,", "min: 1e-300,", &["run.dt.min", "1e-300"]),
+        (
+            "residual: 1e-3)",
+            "residual: 1e-300)",
+            &["run.tolerances.residual"],
+        ),
+    ];
+    for (k, (from, to, want)) in cases.iter().enumerate() {
+        let t = replace_once(&m, from, to);
+        rejected(&format!("band{k}.ron"), &t, want);
+    }
+    let s = shipped("sensitivity/base.ron");
+    let t = replace_once(
+        &s,
+        "drag: SyamlalOBrien(c1: 0.8, d1: 2.65)",
+        "drag: SyamlalOBrien(c1: 1e-300, d1: 1e300)",
+    );
+    rejected("drag.ron", &t, &["models.drag.c1", "models.drag.d1"]);
+    // a 1e-300 m cell layer next to 0.05 m cells
+    let t = replace_once(
+        &m,
+        "y: (segments: [Uniform(length: 0.5, cells: 50)])",
+        "y: (segments: [Uniform(length: 1e-300, cells: 1), Uniform(length: 0.5, cells: 10)])",
+    );
+    rejected(
+        "layer.ron",
+        &t,
+        &[
+            "domain.y (smallest cell width)",
+            "1e-300",
+            "[1e-7, 100000] m",
+        ],
+    );
+    // a jump from 0.5 mm to 5 cm cells
+    let t = replace_once(
+        &m,
+        "y: (segments: [Uniform(length: 0.5, cells: 50)])",
+        "y: (segments: [Uniform(length: 0.3, cells: 600), Uniform(length: 0.5, cells: 10)])",
+    );
+    rejected(
+        "ratio.ron",
+        &t,
+        &["domain.y (largest adjacent width ratio)", "100", "[1, 50]"],
+    );
+}
+
+#[test]
+fn zero_gravity_is_allowed_but_tiny_gravity_is_not() {
+    let t = replace_once(&mslide(), "magnitude: 9.81", "magnitude: 0.0");
+    load_text("g0.ron", &t)
+        .1
+        .expect("no gravity is a valid case");
+    let t = replace_once(&mslide(), "magnitude: 9.81", "magnitude: 0.001");
+    rejected("g.ron", &t, &["gravity.magnitude", "exactly 0"]);
+}
+
+#[test]
+fn a_block_at_max_packing_is_rejected() {
+    let t = replace_once(&mslide(), "eps_s: 0.6,", "eps_s: 0.65,");
+    rejected(
+        "packed.ron",
+        &t,
+        &[
+            "initial.regions[0].solids[0].eps_s",
+            "0.65",
+            "[0, 0.65)",
+            "strictly below max_packing",
+        ],
+    );
+    let t = replace_once(&mslide(), "eps_s: 0.6,", "eps_s: 0.6499,");
+    load_text("below.ron", &t)
+        .1
+        .expect("below the limit is accepted");
+}
+
+#[test]
+fn names_that_leave_the_runs_folder_are_rejected() {
+    let long = "a".repeat(101);
+    for name in [
+        ".",
+        "..",
+        ".hidden",
+        "a/b",
+        "..\\\\x",
+        "tab\there",
+        long.as_str(),
+        "",
+    ] {
+        let t = replace_once(&mslide(), "name: \"M-JJ\"", &format!("name: {name:?}"));
+        rejected("name.ron", &t, &["name", "not starting with a dot"]);
+    }
+    let t = replace_once(
+        &mslide(),
+        "name: \"M-JJ\"",
+        &format!("name: \"{}\"", "a".repeat(100)),
+    );
+    load_text("name100.ron", &t)
+        .1
+        .expect("100 bytes is allowed");
+    // a sweep named `..` expands to a case named `..`
+    let dir = std::env::temp_dir().join(format!("runout-name-tests-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("base.ron"), mslide()).unwrap();
+    std::fs::write(
+        dir.join("dots.ron"),
+        r#"Sweep(name: "..", base: "base.ron")"#,
+    )
+    .unwrap();
+    let e = load(&dir.join("dots.ron"))
+        .expect_err("rejected")
+        .to_string();
+    assert!(e.contains("name") && e.contains("\"..\""), "{e}");
+}
+
+/// A fresh folder for one test's files.
+fn folder(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("runout-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+#[test]
+fn a_byte_order_mark_is_accepted() {
+    let (_, r) = load_text("bom.ron", &format!("\u{feff}{}", mslide()));
+    r.expect("a UTF-8 byte-order mark is skipped");
+}
+
+#[test]
+fn a_non_utf8_byte_is_reported_with_line_and_offset() {
+    let dir = folder("utf8");
+    let text = mslide();
+    let at = text.find("Family M").unwrap() + "Family ".len();
+    let mut bytes = text.as_bytes().to_vec();
+    bytes.insert(at, 0xff);
+    let path = dir.join("latin1.ron");
+    std::fs::write(&path, bytes).unwrap();
+    let e = load(&path).expect_err("rejected").to_string();
+    let line = 1 + text[..at].matches('\n').count();
+    assert!(
+        e.contains(&format!(
+            "latin1.ron:{line}: byte 0xff at offset {at} is not UTF-8"
+        )),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_fraction_where_an_integer_is_expected_says_so() {
+    for (from, to, want) in [
+        (
+            "cells: 200)",
+            "cells: 2.5)",
+            "`cells` = 2.5: expected an integer",
+        ),
+        (
+            "cells: 200)",
+            "cells: 2e3)",
+            "`cells` = 2e3: expected an integer",
+        ),
+        (
+            "cells: 200)",
+            "cells: -3)",
+            "`cells` = -3: expected an integer in range",
+        ),
+        (
+            "coarsen: 5,",
+            "coarsen: 0.5,",
+            "`coarsen` = 0.5: expected an integer",
+        ),
+        (
+            "tolerances: (residual: 1e-3)",
+            "tolerances: (residual: 1e-3, max_iterations: 2.5)",
+            "`max_iterations` = 2.5: expected an integer",
+        ),
+    ] {
+        let t = replace_once(&mslide(), from, to);
+        rejected("int.ron", &t, &[want]);
+    }
+}
+
+#[test]
+fn files_larger_than_1_mib_are_not_read() {
+    let padding = format!("// {}\n", "x".repeat(100)).repeat(11_000);
+    let (_, r) = load_text("big_comment.ron", &format!("{padding}{}", mslide()));
+    let e = r.expect_err("rejected").to_string();
+    assert!(
+        e.contains("big_comment.ron") && e.contains("at most 1048576 bytes"),
+        "{e}"
+    );
+    // a device with no end is read only up to the limit
+    if Path::new("/dev/zero").exists() {
+        let e = load(Path::new("/dev/zero"))
+            .expect_err("rejected")
+            .to_string();
+        assert!(
+            e.contains("/dev/zero") && e.contains("at most 1048576 bytes"),
+            "{e}"
+        );
+    }
+}
+
+#[test]
+fn a_sweep_base_must_be_a_ron_file_below_the_sweep_folder() {
+    let top = folder("base");
+    let dir = top.join("sweeps");
+    std::fs::create_dir_all(dir.join("sub")).unwrap();
+    std::fs::write(dir.join("sub/base.ron"), mslide()).unwrap();
+    std::fs::write(top.join("outside.ron"), mslide()).unwrap();
+    std::fs::create_dir_all(dir.join("folder.ron")).unwrap();
+    let sweep = |base: &str| {
+        std::fs::write(
+            dir.join("s.ron"),
+            format!(r#"Sweep(name: "S", base: {base:?}, vary: [Slope([30.0, 40.0])])"#),
+        )
+        .unwrap();
+        load(&dir.join("s.ron"))
+    };
+    let cases = match sweep("sub/base.ron").expect("a base below the folder is accepted") {
+        runout_case::Loaded::Cases(c) => c,
+        _ => unreachable!(),
+    };
+    assert_eq!(cases.len(), 2);
+    sweep("sub/../sub/base.ron").expect("`..` that stays below is accepted");
+    for (base, want) in [
+        ("/dev/zero", "a relative path"),
+        ("/etc/passwd", "a relative path"),
+        ("../outside.ron", "outside the sweep file's folder"),
+        ("sub/base.txt", "a `.ron` file"),
+        ("folder.ron", "not a regular file"),
+        ("", "a relative path"),
+    ] {
+        let e = sweep(base).expect_err(base).to_string();
+        assert!(
+            e.contains("s.ron: base: ") && e.contains(want),
+            "{base}: {e}"
+        );
+        assert!(!e.contains("root:"), "{base}: file content echoed: {e}");
+    }
+    #[cfg(unix)]
+    {
+        std::os::unix::fs::symlink("/dev/zero", dir.join("zero.ron")).unwrap();
+        let e = sweep("zero.ron")
+            .expect_err("a link out is refused")
+            .to_string();
+        assert!(e.contains("outside the sweep file's folder"), "{e}");
+    }
+}
+
+#[test]
+fn sweep_set_values_are_validated_even_when_vary_overrides_them() {
+    let dir = folder("set");
+    std::fs::write(dir.join("base.ron"), mslide()).unwrap();
+    std::fs::write(
+        dir.join("s.ron"),
+        r#"Sweep(name: "S", base: "base.ron", set: [Slope([NaN])], vary: [Slope([30.0, 40.0])])"#,
+    )
+    .unwrap();
+    let e = load(&dir.join("s.ron")).expect_err("rejected").to_string();
+    assert!(
+        e.contains("the base with `set` applied") && e.contains("gravity.slope = NaN"),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_sweep_of_more_than_1000_cases_is_refused_before_expanding() {
+    let dir = folder("many");
+    std::fs::write(dir.join("base.ron"), mslide()).unwrap();
+    let list = |n: usize, scale: f64| {
+        (0..n)
+            .map(|k| format!("{:?}", 1.0 + k as f64 * scale))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    std::fs::write(
+        dir.join("s.ron"),
+        format!(
+            r#"Sweep(name: "S", base: "base.ron", vary: [Slope([{}]), Diameter([{}]), Specularity([{}])])"#,
+            list(11, 1.0),
+            list(10, 1e-5),
+            list(10, 0.01)
+        ),
+    )
+    .unwrap();
+    let e = load(&dir.join("s.ron")).expect_err("rejected").to_string();
+    assert!(
+        e.contains("at most 1000 cases") && e.contains("11 x 10 x 10"),
+        "{e}"
+    );
 }

@@ -18,7 +18,16 @@ fn load_cases(rel: &str) -> Vec<runout_case::SourcedCase> {
 #[test]
 fn every_shipped_file_is_valid() {
     let mut n = 0;
-    for family in ["sensitivity", "flume", "mfix-slope", "analytic", "collapse"] {
+    let families = [
+        "sensitivity",
+        "flume",
+        "mfix-slope",
+        "analytic",
+        "collapse",
+        "stability",
+        "../examples",
+    ];
+    for family in families {
         for entry in std::fs::read_dir(cases_dir().join(family)).unwrap() {
             let path = entry.unwrap().path();
             if path.extension().is_some_and(|e| e == "ron") {
@@ -27,7 +36,7 @@ fn every_shipped_file_is_valid() {
             }
         }
     }
-    assert!(n >= 15, "only {n} case files found");
+    assert!(n >= 30, "only {n} case files found");
 }
 
 #[test]
@@ -156,4 +165,17 @@ fn fidelity_changes_only_grid_and_end_time() {
     let g = smoke.grid().unwrap();
     let b = &smoke.initial.regions[0];
     assert!(g.locate(b.x.0, b.y.0).unwrap() != g.locate(b.x.1, b.y.1).unwrap());
+}
+
+#[test]
+fn the_bands_table_of_the_docs_is_the_code_s() {
+    let doc = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/input-validation.md"),
+    )
+    .unwrap();
+    let table = runout_case::limits::bands_table();
+    assert!(
+        doc.contains(&table),
+        "docs/input-validation.md lacks the table of runout_case::limits; it is:\n{table}"
+    );
 }

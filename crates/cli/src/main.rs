@@ -122,19 +122,12 @@ fn check(paths: &[PathBuf]) -> ExitCode {
                     cases.len(),
                     if cases.len() == 1 { "" } else { "s" }
                 );
+                let available = runout_case::available_memory_bytes();
                 for sc in &cases {
                     total += 1;
                     let sizes: Vec<String> = [Fidelity::Smoke, Fidelity::Coarse, Fidelity::Paper]
                         .into_iter()
-                        .map(|f| {
-                            let c = sc.case.at_fidelity(f);
-                            match c.grid() {
-                                Ok(g) => {
-                                    format!("{f} {}x{} to {} s", g.nx(), g.ny(), c.run.end_time)
-                                }
-                                Err(e) => format!("{f} grid error: {e}"),
-                            }
-                        })
+                        .map(|f| fidelity_size(&sc.case, f, available))
                         .collect();
                     println!("  {}  [{}]", sc.case.name, sizes.join("; "));
                 }
@@ -159,6 +152,33 @@ fn check(paths: &[PathBuf]) -> ExitCode {
     } else {
         println!("{total} case(s) valid");
         ExitCode::SUCCESS
+    }
+}
+
+/// A case's grid, unknowns and estimated memory at one fidelity, for `check`, with a
+/// warning when the estimate exceeds the memory available on this machine.
+fn fidelity_size(case: &runout_case::Case, f: Fidelity, available: Option<u64>) -> String {
+    let c = case.at_fidelity(f);
+    match runout_case::case_size(&c) {
+        Ok(s) => {
+            let over = match available {
+                Some(a) if s.memory_bytes > a => format!(
+                    ", more than the {} available here",
+                    runout_case::format_bytes(a)
+                ),
+                _ => String::new(),
+            };
+            format!(
+                "{f} {}x{} = {} cells, {} unknowns, ~{}{over}, to {} s",
+                s.nx,
+                s.ny,
+                s.cells,
+                s.unknowns,
+                runout_case::format_bytes(s.memory_bytes),
+                runout_mesh::short(c.run.end_time)
+            )
+        }
+        Err(e) => format!("{f} grid error: {e}"),
     }
 }
 

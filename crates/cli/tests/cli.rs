@@ -45,6 +45,18 @@ fn check_accepts_every_shipped_case() {
 }
 
 #[test]
+fn check_prints_cells_unknowns_and_memory() {
+    let o = runout(&["check", "cases/mfix-slope/jj.ron"]);
+    assert!(o.status.success(), "{}", text(&o));
+    let t = text(&o);
+    assert!(
+        t.contains("paper 200x50 = 10000 cells, 70000 unknowns, ~2") && t.contains(" MiB"),
+        "{t}"
+    );
+    assert!(t.contains("smoke 40x10 = 400 cells"), "{t}");
+}
+
+#[test]
 fn check_rejects_bad_files_without_panicking() {
     let dir = std::env::temp_dir().join(format!("runout-cli-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
@@ -55,7 +67,7 @@ fn check_rejects_bad_files_without_panicking() {
     assert_eq!(o.status.code(), Some(1), "{}", text(&o));
     let t = text(&o);
     assert!(
-        t.contains("neg.ron") && t.contains("solids[0].diameter") && t.contains("(0, inf)"),
+        t.contains("neg.ron") && t.contains("solids[0].diameter") && t.contains("[1e-6, 1] m"),
         "{t}"
     );
     assert!(!t.contains("panicked"), "{t}");

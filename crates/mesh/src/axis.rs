@@ -7,7 +7,15 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::number::short;
 use crate::MeshError;
+
+/// Most cells one axis may have. An axis holds four vectors of its length (faces, centres,
+/// widths, centre distances), so a million cells is 32 MB: a thousand times the paper's
+/// longest axis (1000 cells), and more than any grid within the case crate's cap on cells
+/// needs. Counts are checked against it arithmetically before anything is allocated, so
+/// `cells: 18446744073709551615` is an error, not a capacity overflow (issue 21).
+pub const MAX_AXIS_CELLS: usize = 1_000_000;
 
 /// Relative tolerance used when a derived quantity (a cell count from end widths, a
 /// growth ratio from a first width) is solved for numerically.
@@ -85,15 +93,84 @@ impl Segment {
         }
     }
 
-    /// Checks the segment's numbers. `field` is the path used in error messages.
+    /// Checks the segment's numbers, and that it has at most [`MAX_AXIS_CELLS`] cells
+    /// (computed without building it). `field` is the path used in error messages.
     pub fn validate(&self, field: &str) -> Result<(), MeshError> {
+        self.validate_numbers(field)?;
+        let count = self.implied_cell_count();
+        if count <= MAX_AXIS_CELLS as f64 {
+            return Ok(());
+        }
+        Err(match *self {
+            Segment::EndWidths { .. } => MeshError::Invalid {
+                field: field.to_string(),
+                value: format!(
+                    "length {}, first {}, last {}: {} cells",
+                    short(self.length()),
+                    short(self.end_width(false)),
+                    short(self.end_width(true)),
+                    short(count)
+                ),
+                allowed: format!("widths that give at most {MAX_AXIS_CELLS} cells"),
+            },
+            Segment::Uniform { cells, .. }
+            | Segment::Geometric { cells, .. }
+            | Segment::FirstWidth { cells, .. }
+            | Segment::LastWidth { cells, .. } => MeshError::Invalid {
+                field: format!("{field}.cells"),
+                value: cells.to_string(),
+                allowed: format!("an integer in [1, {MAX_AXIS_CELLS}]"),
+            },
+        })
+    }
+
+    /// The number of cells, computed without building the segment (for
+    /// [`Segment::EndWidths`] from its widths and length); an error for an invalid segment
+    /// or one with more than [`MAX_AXIS_CELLS`] cells.
+    pub fn cell_count(&self) -> Result<usize, MeshError> {
+        self.validate("segment")?;
+        Ok(self.implied_cell_count() as usize)
+    }
+
+    /// The cell count as a float, so that a huge count implied by end widths is compared
+    /// with the cap before it is converted (or allocated).
+    fn implied_cell_count(&self) -> f64 {
+        match *self {
+            Segment::Uniform { cells, .. }
+            | Segment::Geometric { cells, .. }
+            | Segment::FirstWidth { cells, .. }
+            | Segment::LastWidth { cells, .. } => cells as f64,
+            Segment::EndWidths {
+                length,
+                first,
+                last,
+            } => end_widths_cell_count(length, first, last),
+        }
+    }
+
+    /// `first` (or `last` when `last_end`) of an `EndWidths` segment, for messages.
+    fn end_width(&self, last_end: bool) -> f64 {
+        match *self {
+            Segment::EndWidths { first, last, .. } => {
+                if last_end {
+                    last
+                } else {
+                    first
+                }
+            }
+            _ => f64::NAN,
+        }
+    }
+
+    /// The checks of [`Segment::validate`] that need no cell count.
+    fn validate_numbers(&self, field: &str) -> Result<(), MeshError> {
         let positive = |name: &str, v: f64| -> Result<(), MeshError> {
             if v.is_finite() && v > 0.0 {
                 Ok(())
             } else {
                 Err(MeshError::Invalid {
                     field: format!("{field}.{name}"),
-                    value: v.to_string(),
+                    value: short(v),
                     allowed: "a finite number > 0".into(),
                 })
             }
@@ -105,7 +182,7 @@ impl Segment {
                 Err(MeshError::Invalid {
                     field: format!("{field}.cells"),
                     value: cells.to_string(),
-                    allowed: "an integer ≥ 1".into(),
+                    allowed: format!("an integer in [1, {MAX_AXIS_CELLS}]"),
                 })
             }
         };
@@ -115,8 +192,8 @@ impl Segment {
             } else {
                 Err(MeshError::Invalid {
                     field: format!("{field}.{name}"),
-                    value: w.to_string(),
-                    allowed: format!("(0, length = {length}]"),
+                    value: short(w),
+                    allowed: format!("(0, length = {}]", short(length)),
                 })
             }
         };
@@ -138,8 +215,8 @@ impl Segment {
                 if cells == 1 && (first - length).abs() > 1e-12 * length {
                     return Err(MeshError::Invalid {
                         field: format!("{field}.first"),
-                        value: first.to_string(),
-                        allowed: format!("= length ({length}) when cells = 1"),
+                        value: short(first),
+                        allowed: format!("= length ({}) when cells = 1", short(length)),
                     });
                 }
                 Ok(())
@@ -155,8 +232,8 @@ impl Segment {
                 if cells == 1 && (last - length).abs() > 1e-12 * length {
                     return Err(MeshError::Invalid {
                         field: format!("{field}.last"),
-                        value: last.to_string(),
-                        allowed: format!("= length ({length}) when cells = 1"),
+                        value: short(last),
+                        allowed: format!("= length ({}) when cells = 1", short(length)),
                     });
                 }
                 Ok(())
@@ -173,8 +250,8 @@ impl Segment {
                 if first + last > length * (1.0 + 1e-12) && (first - last).abs() > 1e-12 * length {
                     return Err(MeshError::Invalid {
                         field: format!("{field}.first + last"),
-                        value: (first + last).to_string(),
-                        allowed: format!("≤ length ({length}) unless first = last"),
+                        value: short(first + last),
+                        allowed: format!("≤ length ({}) unless first = last", short(length)),
                     });
                 }
                 Ok(())
@@ -264,7 +341,7 @@ impl Segment {
     /// (up to the round-off of the width and growth arithmetic).
     pub fn refined(&self, factor: u32) -> Segment {
         let f = f64::from(factor.max(1));
-        let more = |cells: usize| cells * factor.max(1) as usize;
+        let more = |cells: usize| cells.saturating_mul(factor.max(1) as usize);
         match *self {
             Segment::Uniform { length, cells } => Segment::Uniform {
                 length,
@@ -343,7 +420,8 @@ impl Segment {
                 last,
             } => {
                 let (small, big) = (first.min(last), first.max(last));
-                let cells = end_widths_cell_count(length, first, last);
+                // validate() bounded the count by MAX_AXIS_CELLS
+                let cells = end_widths_cell_count(length, first, last) as usize;
                 // With the small end exact, a monotone segment needs
                 // cells·small ≤ length ≤ cells·big.
                 let monotone = (cells as f64) * small <= length * (1.0 + 1e-12)
@@ -433,18 +511,40 @@ fn solve_growth(length: f64, cells: usize, first: f64) -> Result<f64, MeshError>
 /// Cell count for a geometric segment from `first` to `last`: with g = (L − first)/(L − last)
 /// the continuous count is n = 1 + ln(last/first)/ln g. The nearest integer is used,
 /// moved into [⌈L/big⌉, ⌊L/small⌋] when that range is not empty, so that a monotone
-/// segment with the small end exact exists.
-fn end_widths_cell_count(length: f64, first: f64, last: f64) -> usize {
+/// segment with the small end exact exists. A float (possibly huge or infinite: a first
+/// width of 1e-300 m, a length of 1e300 m), so that it is bounded before any conversion.
+fn end_widths_cell_count(length: f64, first: f64, last: f64) -> f64 {
     if (first - last).abs() <= 1e-12 * length {
-        return ((length / first).round() as usize).max(1);
+        return (length / first).round().max(1.0);
     }
     let growth = (length - first) / (length - last);
     let n = (1.0 + (last / first).ln() / growth.ln()).round().max(1.0);
     let (small, big) = (first.min(last), first.max(last));
     let lo = (length / big * (1.0 - 1e-12)).ceil().max(1.0);
     let hi = (length / small * (1.0 + 1e-12)).floor();
-    let n = if lo <= hi { n.clamp(lo, hi) } else { n };
-    n as usize
+    if lo <= hi {
+        n.clamp(lo, hi)
+    } else {
+        n
+    }
+}
+
+/// The number of cells of consecutive segments, each validated (its path
+/// `segments[k]`), without building them; an error above [`MAX_AXIS_CELLS`].
+pub(crate) fn total_cells(segments: &[Segment]) -> Result<usize, MeshError> {
+    let mut total = 0usize;
+    for (k, seg) in segments.iter().enumerate() {
+        seg.validate(&format!("segments[{k}]"))?;
+        total = total.saturating_add(seg.implied_cell_count() as usize);
+    }
+    if total > MAX_AXIS_CELLS {
+        return Err(MeshError::Invalid {
+            field: "segments".into(),
+            value: format!("{total} cells in all"),
+            allowed: format!("at most {MAX_AXIS_CELLS} cells per axis"),
+        });
+    }
+    Ok(total)
 }
 
 /// A 1-D axis: faces are the truth; centres, widths and centre distances are cached.
@@ -499,10 +599,12 @@ impl Axis {
                 "an axis needs at least one segment".into(),
             ));
         }
-        let mut faces = vec![origin];
+        // bounded before anything is allocated
+        let cells = total_cells(segments)?;
+        let mut faces = Vec::with_capacity(cells + 1);
+        faces.push(origin);
         let mut start = origin;
-        for (k, seg) in segments.iter().enumerate() {
-            seg.validate(&format!("segments[{k}]"))?;
+        for seg in segments {
             let widths = seg.widths()?;
             let mut x = start;
             let n = widths.len();

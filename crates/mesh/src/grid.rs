@@ -8,7 +8,7 @@ use std::fmt;
 
 use serde::{Deserialize, Serialize};
 
-use crate::axis::{Axis, Segment};
+use crate::axis::{total_cells, Axis, Segment};
 use crate::MeshError;
 
 /// A side of the rectangular domain.
@@ -118,6 +118,12 @@ impl AxisSpec {
     /// Builds the axis.
     pub fn build(&self) -> Result<Axis, MeshError> {
         Axis::from_segments(self.origin, &self.segments)
+    }
+
+    /// The number of cells, computed without building the axis; an error for an invalid
+    /// segment (its path `segments[k]`) or more than [`crate::MAX_AXIS_CELLS`] cells.
+    pub fn cell_count(&self) -> Result<usize, MeshError> {
+        total_cells(&self.segments)
     }
 
     /// The same axis with cells `factor` times wider (see [`Segment::coarsened`]).

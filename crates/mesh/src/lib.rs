@@ -9,11 +9,13 @@
 
 mod axis;
 mod grid;
+mod number;
 #[cfg(feature = "proptest")]
 pub mod strategies;
 
-pub use axis::{Axis, Segment};
+pub use axis::{Axis, Segment, MAX_AXIS_CELLS};
 pub use grid::{AxisSpec, Grid, GridSummary, Side, Sides};
+pub use number::short;
 
 /// Errors building a grid.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

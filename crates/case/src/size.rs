@@ -1,0 +1,127 @@
+//! Cells, unknowns and memory of a case, computed without building its grid, and the
+//! memory the machine has: `runout check` prints them, `runout run` compares them.
+
+use runout_mesh::MeshError;
+
+use crate::schema::Case;
+
+/// Peak memory per cell of the gas (single-phase) solver [bytes]. Measured as the peak
+/// resident set (`/usr/bin/time -f %M`, the kernel's VmHWM) of `runout run --end-time 0.02`
+/// on examples/cavity-re100.ron at 64², 256² and 512² cells: 9 960, 64 056 and 236 612 KiB,
+/// slopes of 902 and 899 B per cell; with a 5 % margin.
+const GAS_BYTES_PER_CELL: u64 = 950;
+
+/// Peak memory per cell added by each solids phase [bytes]. Measured likewise with
+/// `runout run --end-time 2e-4` on cases/mfix-slope/jj.ron (one phase) at 200 × 50,
+/// 400 × 100 and 800 × 200 cells: 26 880, 80 340 and 299 608 KiB, slopes of 1 825 and
+/// 1 871 B per cell for the two-fluid solver, 925..971 B above the gas solver's; with a
+/// margin (the two-fluid estimate is 1 950 B per cell).
+const SOLIDS_PHASE_BYTES_PER_CELL: u64 = 1000;
+
+/// Memory independent of the grid [bytes]: the measured intercepts are 6.2 MiB (gas) and
+/// 8.4 MiB (two-fluid); rounded up.
+const FIXED_BYTES: u64 = 10 << 20;
+
+/// Unknowns per cell of the gas: u, v and the pressure correction.
+const GAS_UNKNOWNS_PER_CELL: u64 = 3;
+
+/// Unknowns per cell of one solids phase: u, v, εs and θ.
+const SOLIDS_UNKNOWNS_PER_CELL: u64 = 4;
+
+/// The size of a case's grid as written (call it on [`Case::at_fidelity`] for a preset).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CaseSize {
+    /// cells in x
+    pub nx: usize,
+    /// cells in y
+    pub ny: usize,
+    /// nx × ny
+    pub cells: u64,
+    /// discrete unknowns: cells × (3 for the gas + 4 per solids phase)
+    pub unknowns: u64,
+    /// estimated peak memory of `runout run` [bytes]
+    pub memory_bytes: u64,
+}
+
+/// The size of `case`'s grid, from the segments' cell counts (nothing is allocated); an
+/// error for an axis that does not validate.
+pub fn case_size(case: &Case) -> Result<CaseSize, MeshError> {
+    let nx = case.domain.x.cell_count()?;
+    let ny = case.domain.y.cell_count()?;
+    let cells = (nx as u64).saturating_mul(ny as u64);
+    let phases = case.solids.len() as u64;
+    let unknowns_per_cell =
+        GAS_UNKNOWNS_PER_CELL.saturating_add(SOLIDS_UNKNOWNS_PER_CELL.saturating_mul(phases));
+    Ok(CaseSize {
+        nx,
+        ny,
+        cells,
+        unknowns: cells.saturating_mul(unknowns_per_cell),
+        memory_bytes: bytes_for_cells(cells, phases),
+    })
+}
+
+/// Estimated peak memory of a run on `cells` cells with `phases` solids phases [bytes].
+pub(crate) fn bytes_for_cells(cells: u64, phases: u64) -> u64 {
+    let per_cell =
+        GAS_BYTES_PER_CELL.saturating_add(SOLIDS_PHASE_BYTES_PER_CELL.saturating_mul(phases));
+    cells.saturating_mul(per_cell).saturating_add(FIXED_BYTES)
+}
+
+/// Estimated peak memory of `runout run` on `case` as written [bytes]: 10 MiB plus, per
+/// cell, 950 B for the gas and 1000 B per solids phase (measured, see the constants);
+/// `u64::MAX` when the grid is invalid (it cannot be run).
+pub fn estimated_memory_bytes(case: &Case) -> u64 {
+    case_size(case).map_or(u64::MAX, |s| s.memory_bytes)
+}
+
+/// The memory the kernel says is available for new work (`MemAvailable` of /proc/meminfo)
+/// [bytes]; `None` where that file is missing or unreadable (not Linux).
+pub fn available_memory_bytes() -> Option<u64> {
+    mem_available(&std::fs::read_to_string("/proc/meminfo").ok()?)
+}
+
+/// `MemAvailable` of a /proc/meminfo text [bytes].
+fn mem_available(meminfo: &str) -> Option<u64> {
+    let line = meminfo
+        .lines()
+        .find_map(|l| l.strip_prefix("MemAvailable:"))?;
+    let kib: u64 = line.trim().strip_suffix("kB")?.trim().parse().ok()?;
+    kib.checked_mul(1024)
+}
+
+/// Bytes in a short human form: `9.5 MiB`, `1.9 GiB`.
+pub fn format_bytes(bytes: u64) -> String {
+    const UNITS: [&str; 5] = ["B", "KiB", "MiB", "GiB", "TiB"];
+    let mut v = bytes as f64;
+    let mut unit = 0;
+    while v >= 1024.0 && unit + 1 < UNITS.len() {
+        v /= 1024.0;
+        unit += 1;
+    }
+    if unit == 0 {
+        format!("{bytes} B")
+    } else {
+        format!("{v:.1} {}", UNITS[unit])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn mem_available_reads_kib() {
+        let text = "MemTotal:       24000000 kB\nMemFree:  1 kB\nMemAvailable:   23000000 kB\n";
+        assert_eq!(mem_available(text), Some(23_000_000 * 1024));
+        assert_eq!(mem_available("MemTotal: 1 kB\n"), None);
+        assert_eq!(mem_available("MemAvailable: lots\n"), None);
+    }
+
+    #[test]
+    fn bytes_print_short() {
+        assert_eq!(format_bytes(512), "512 B");
+        assert_eq!(format_bytes(10 << 20), "10.0 MiB");
+        assert_eq!(format_bytes(1_900_000_000_000), "1.7 TiB");
+    }
+}
