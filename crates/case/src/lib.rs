@@ -26,6 +26,9 @@ pub use checker::FieldError;
 pub use load::{case_files, load, load_case, CaseError, Fidelity, Loaded, SourcedCase};
 pub use name::{is_valid_name, run_dir};
 pub use schema::*;
-pub use size::{available_memory_bytes, case_size, estimated_memory_bytes, format_bytes, CaseSize};
+pub use size::{
+    available_memory_bytes, case_size, estimated_memory_bytes, format_bytes, CaseSize,
+    AVAILABLE_MEMORY_VAR,
+};
 pub use sweep::{apply_set, expand, Param, Sweep};
 pub use validate::{validate_analytic, validate_case};

@@ -75,10 +75,38 @@ pub fn estimated_memory_bytes(case: &Case) -> u64 {
     case_size(case).map_or(u64::MAX, |s| s.memory_bytes)
 }
 
-/// The memory the kernel says is available for new work (`MemAvailable` of /proc/meminfo)
-/// [bytes]; `None` where that file is missing or unreadable (not Linux).
+/// The environment variable that sets the memory available to a run [bytes], for a
+/// scheduler's limit that runout cannot read (and for tests).
+pub const AVAILABLE_MEMORY_VAR: &str = "RUNOUT_AVAILABLE_MEMORY";
+
+/// The memory available for new work [bytes]: [`AVAILABLE_MEMORY_VAR`] if set, else the
+/// smaller of the kernel's `MemAvailable` (/proc/meminfo) and the room left under this
+/// process's cgroup (v2) limit, `memory.max − memory.current` (a Slurm job's limit);
+/// `None` where neither can be read (not Linux).
 pub fn available_memory_bytes() -> Option<u64> {
-    mem_available(&std::fs::read_to_string("/proc/meminfo").ok()?)
+    if let Some(v) = std::env::var(AVAILABLE_MEMORY_VAR)
+        .ok()
+        .and_then(|v| v.trim().parse().ok())
+    {
+        return Some(v);
+    }
+    let kernel = std::fs::read_to_string("/proc/meminfo")
+        .ok()
+        .and_then(|t| mem_available(&t));
+    let read = |f: &str| std::fs::read_to_string(format!("/sys/fs/cgroup/{f}")).ok();
+    let cgroup = match (read("memory.max"), read("memory.current")) {
+        (Some(max), Some(current)) => max
+            .trim()
+            .parse::<u64>()
+            .ok()
+            .zip(current.trim().parse::<u64>().ok())
+            .map(|(max, current)| max.saturating_sub(current)),
+        _ => None, // "max" (no limit) or no cgroup v2
+    };
+    match (kernel, cgroup) {
+        (Some(k), Some(c)) => Some(k.min(c)),
+        (k, c) => k.or(c),
+    }
 }
 
 /// `MemAvailable` of a /proc/meminfo text [bytes].

@@ -80,6 +80,9 @@ enum Command {
         /// replace an earlier run in the output folder (its files only) instead of refusing
         #[arg(long, conflicts_with = "restart")]
         overwrite: bool,
+        /// run even if the estimated memory exceeds what the machine has available
+        #[arg(long)]
+        ignore_memory: bool,
         /// also write a checkpoint after every this many minutes of wall time
         #[arg(long, value_name = "MINUTES", value_parser = parse_minutes)]
         checkpoint_every: Option<f64>,
@@ -253,15 +256,47 @@ fn stop_on_signals() -> Arc<AtomicBool> {
 /// The exit status of a run stopped by a signal (128 + SIGINT, as shells report it).
 const EXIT_INTERRUPTED: i32 = 130;
 
-fn run(
-    file: &Path,
-    only: Option<&str>,
+/// What `runout run` runs and where.
+struct Target<'a> {
+    /// the one case of a sweep file to run
+    only: Option<&'a str>,
     fidelity: Fidelity,
-    out: Option<&Path>,
-    quiet: bool,
+    /// the output folder (default runs/<case>/<fidelity>)
+    out: Option<&'a Path>,
+    /// the end time instead of the fidelity's
     end_time: Option<f64>,
-    options: &RunOptions,
-) -> ExitCode {
+    /// run even where the memory estimate exceeds the available memory
+    ignore_memory: bool,
+}
+
+/// Refuses a case whose estimated memory exceeds what the machine has available (before
+/// anything is allocated), unless `ignore`.
+fn memory_fits(file: &Path, case: &runout_case::Case, ignore: bool) -> bool {
+    let need = runout_case::estimated_memory_bytes(case);
+    match runout_case::available_memory_bytes() {
+        Some(available) if need > available && !ignore => {
+            eprintln!(
+                "{}: case `{}` needs about {} of memory, and {} is available: refused before \
+                 allocating (a coarser fidelity, or --ignore-memory to try anyway)",
+                file.display(),
+                case.name,
+                runout_case::format_bytes(need),
+                runout_case::format_bytes(available)
+            );
+            false
+        }
+        _ => true,
+    }
+}
+
+fn run(file: &Path, target: &Target, quiet: bool, options: &RunOptions) -> ExitCode {
+    let Target {
+        only,
+        fidelity,
+        out,
+        end_time,
+        ignore_memory,
+    } = *target;
     let Some(mut cases) = flow_cases(file) else {
         return ExitCode::FAILURE;
     };
@@ -281,6 +316,19 @@ fn run(
             sc.case.run.end_time = t;
             sc.case.fidelity.smoke.end_time = t;
             sc.case.fidelity.coarse.end_time = t;
+            // the intervals and Δt bounds are validated against the end time (profile
+            // times after it are kept: they never fire)
+            let mut checked = sc.case.clone();
+            for p in &mut checked.monitors.profiles {
+                p.times.retain(|&time| time <= t);
+            }
+            checked.monitors.profiles.retain(|p| !p.times.is_empty());
+            if let Err(errors) = runout_case::validate_case(&checked) {
+                for e in errors {
+                    eprintln!("{}: with --end-time {t}: {e}", file.display());
+                }
+                return ExitCode::FAILURE;
+            }
         }
     }
     let mut status = ExitCode::SUCCESS;
@@ -288,8 +336,18 @@ fn run(
         let dir = match out {
             Some(o) if cases.len() == 1 => o.to_path_buf(),
             Some(o) => o.join(&sc.case.name),
-            None => runout_solver::run::default_out_dir(Path::new("."), &sc.case.name, fidelity),
+            None => match runout_case::run_dir(Path::new("."), &sc.case.name, fidelity) {
+                Ok(dir) => dir,
+                Err(e) => {
+                    eprintln!("{}: {e}", file.display());
+                    return ExitCode::FAILURE;
+                }
+            },
         };
+        if !memory_fits(file, &sc.case.at_fidelity(fidelity), ignore_memory) {
+            status = ExitCode::FAILURE;
+            continue;
+        }
         let bar = if quiet {
             ProgressBar::hidden()
         } else {
@@ -377,6 +435,7 @@ fn main() -> ExitCode {
             only,
             restart,
             overwrite,
+            ignore_memory,
             checkpoint_every,
         } => {
             let (out, restart) = match restart {
@@ -391,15 +450,14 @@ fn main() -> ExitCode {
                     .map(|m| std::time::Duration::from_secs_f64(60.0 * m)),
                 stop: Some(stop_on_signals()),
             };
-            run(
-                &file,
-                only.as_deref(),
+            let target = Target {
+                only: only.as_deref(),
                 fidelity,
-                out.as_deref(),
-                quiet,
+                out: out.as_deref(),
                 end_time,
-                &options,
-            )
+                ignore_memory,
+            };
+            run(&file, &target, quiet, &options)
         }
         Command::Closures(args) => match cmd_closures::run(&args) {
             Ok(()) => ExitCode::SUCCESS,

@@ -109,3 +109,34 @@ fn sigterm_checkpoints_and_restart_finishes_the_same_run() {
     assert!(!stopped.join("checkpoints").exists(), "the old run is gone");
     let _ = std::fs::remove_dir_all(&base);
 }
+
+#[test]
+fn run_refuses_a_case_larger_than_the_available_memory_unless_told() {
+    let out = std::env::temp_dir().join(format!("runout-memory-{}", std::process::id()));
+    let args = [
+        "run",
+        "cases/mfix-slope/jj.ron",
+        "--fidelity",
+        "smoke",
+        "--end-time",
+        "0.002",
+        "--quiet",
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    // family M at smoke (40 × 10 cells) needs ~11 MiB; say 1 MiB is available
+    let o = runout(&args)
+        .env(runout_case::AVAILABLE_MEMORY_VAR, "1048576")
+        .output()
+        .unwrap();
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o));
+    assert!(text(&o).contains("--ignore-memory"), "{}", text(&o));
+    assert!(!out.exists(), "refused before anything is written");
+    let o = runout(&args)
+        .arg("--ignore-memory")
+        .env(runout_case::AVAILABLE_MEMORY_VAR, "1048576")
+        .output()
+        .unwrap();
+    assert!(o.status.success(), "{}", text(&o));
+    let _ = std::fs::remove_dir_all(&out);
+}
