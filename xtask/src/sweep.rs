@@ -18,14 +18,16 @@
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
-use std::sync::Mutex;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Mutex};
 use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
 use indicatif::{MultiProgress, ProgressBar, ProgressStyle};
 use runout_case::{case_files, load, Case, Fidelity, Loaded, SourcedCase};
-use runout_output::RunSummary;
-use runout_solver::{run_case, RunError};
+use runout_output::{RunStatus, RunSummary};
+use runout_solver::run::{checkpoint, run_case_with, RunOptions};
+use runout_solver::{Progress, RunError};
 
 use crate::collapse::COLLAPSE_DIR;
 use crate::metrics::{described_speeds, flow_metrics, FlowMetrics};
@@ -113,6 +115,9 @@ enum Outcome {
     Unsupported(String),
     /// the run failed before producing a summary
     Failed(String),
+    /// stopped by a signal with a checkpoint in its `.partial` folder: the next sweep
+    /// continues it
+    Interrupted(RunSummary),
 }
 
 fn read_summary(dir: &Path) -> Option<RunSummary> {
@@ -120,23 +125,48 @@ fn read_summary(dir: &Path) -> Option<RunSummary> {
 }
 
 /// Runs one case into its folder, atomically.
-fn run_one(case: &SourcedCase, fidelity: Fidelity, runs: &Path, bar: &ProgressBar) -> Outcome {
+fn run_one(
+    case: &SourcedCase,
+    fidelity: Fidelity,
+    root: &Path,
+    bar: &ProgressBar,
+    stop: &Arc<AtomicBool>,
+) -> Outcome {
     let name = &case.case.name;
-    let done = runs.join(name).join(fidelity.name());
+    // the folder is checked to lie below runs/ (a name such as `..` cannot pass)
+    let done = match runout_case::run_dir(root, name, fidelity) {
+        Ok(dir) => dir,
+        Err(e) => return Outcome::Failed(e.to_string()),
+    };
     if let Some(summary) = read_summary(&done) {
         return Outcome::Skipped(summary);
     }
-    let partial = runs.join(name).join(format!("{}.partial", fidelity.name()));
-    let _ = std::fs::remove_dir_all(&partial);
-    let result = run_case(&case.case, fidelity, &partial, |p| {
+    let partial = done.with_file_name(format!("{}.partial", fidelity.name()));
+    // an unfinished run continues from its checkpoint; one that cannot (another case,
+    // another runout) starts again
+    let mut options = RunOptions {
+        restart: checkpoint::exists(&partial),
+        replace: true,
+        checkpoint_every: Some(CHECKPOINT_EVERY),
+        stop: Some(stop.clone()),
+    };
+    let show = |p: &Progress| {
         bar.set_position((1000.0 * p.time / p.end_time) as u64);
         bar.set_message(format!(
             "t = {:.3} s, dt = {:.1e} s, {} it",
             p.time, p.dt, p.iterations
         ));
-    });
+    };
+    let mut result = run_case_with(&case.case, fidelity, &partial, &options, show);
+    if let Err(RunError::Checkpoint { source, .. }) = &result {
+        bar.println(format!("{name}: starting again ({source})"));
+        options.restart = false;
+        let _ = std::fs::remove_dir_all(&partial);
+        result = run_case_with(&case.case, fidelity, &partial, &options, show);
+    }
     bar.finish_and_clear();
     match result {
+        Ok(summary) if summary.status == RunStatus::Interrupted => Outcome::Interrupted(summary),
         Ok(summary) => {
             let _ = std::fs::remove_dir_all(&done);
             match std::fs::rename(&partial, &done) {
@@ -154,6 +184,31 @@ fn run_one(case: &SourcedCase, fidelity: Fidelity, runs: &Path, bar: &ProgressBa
         }
         Err(e) => Outcome::Failed(e.to_string()),
     }
+}
+
+/// Checkpoints of the sweep's runs every this much wall time (a killed sweep then loses at
+/// most this much of each run).
+const CHECKPOINT_EVERY: std::time::Duration = std::time::Duration::from_secs(600);
+
+/// A flag that SIGINT and SIGTERM set: every running case stops after its step with a
+/// checkpoint and no new case starts; a second signal exits at once.
+fn stop_on_signals() -> Arc<AtomicBool> {
+    let stop = Arc::new(AtomicBool::new(false));
+    let flag = stop.clone();
+    let installed = ctrlc::set_handler(move || {
+        if flag.swap(true, Ordering::SeqCst) {
+            eprintln!("sweep: second signal: stopping now; the last checkpoints stay");
+            std::process::exit(130);
+        }
+        eprintln!(
+            "sweep: signal received: the running cases stop after their step with a \
+             checkpoint; run the sweep again to continue them (a second signal stops at once)"
+        );
+    });
+    if let Err(e) = installed {
+        eprintln!("sweep: warning: signals will stop the runs without a checkpoint: {e}");
+    }
+    stop
 }
 
 /// Wall time per case of the rows of an earlier `results/summary.csv` at `fidelity` that
@@ -279,6 +334,14 @@ fn csv_row(name: &str, fidelity: Fidelity, outcome: &Outcome, flow: &FlowMetrics
             csv_field(name),
             csv_field(&format!("failed: {why}"))
         ),
+        Outcome::Interrupted(s) => format!(
+            "{},{fidelity},{},,,,{empty_flow}",
+            csv_field(name),
+            csv_field(&format!(
+                "interrupted at t = {} s (a checkpoint: the next sweep continues it)",
+                s.simulated_time
+            ))
+        ),
     }
 }
 
@@ -374,10 +437,14 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
     };
     order.sort_by(|&a, &b| work(b).total_cmp(&work(a)));
     let queue = Mutex::new(order.into_iter());
+    let stop = stop_on_signals();
     let outcomes: Mutex<Vec<(usize, Outcome)>> = Mutex::new(Vec::new());
     std::thread::scope(|scope| {
         for _ in 0..opts.jobs.max(1) {
             scope.spawn(|| loop {
+                if stop.load(Ordering::SeqCst) {
+                    break;
+                }
                 let Some(k) = queue.lock().expect("no poisoned lock").next() else {
                     break;
                 };
@@ -385,7 +452,7 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
                 let bar = progress.add(ProgressBar::new(1000));
                 bar.set_style(style.clone());
                 bar.set_prefix(r.case.name.clone());
-                let outcome = run_one(r, fidelity, &runs_dir, &bar);
+                let outcome = run_one(r, fidelity, root, &bar, &stop);
                 outcomes
                     .lock()
                     .expect("no poisoned lock")
@@ -407,6 +474,7 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
     let described = described_speeds(&root.join("cases").join("flume").join("gates.csv"));
     let mut rows = Vec::new();
     let (mut ran, mut skipped, mut copied, mut unsupported, mut failed) = (0, 0, 0, 0, 0);
+    let mut interrupted = 0;
     for (k, outcome) in &outcomes {
         let name = &selected[*k].case.name;
         let flow = match outcome {
@@ -434,6 +502,13 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
                 failed += 1;
                 println!("  {name:<34} FAILED: {why}");
             }
+            Outcome::Interrupted(s) => {
+                interrupted += 1;
+                println!(
+                    "  {name:<34} interrupted at t = {} s with a checkpoint",
+                    s.simulated_time
+                );
+            }
         }
     }
     let order: Vec<&str> = runs.iter().map(|r| r.case.name.as_str()).collect();
@@ -455,6 +530,12 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
     }
     if failed > 0 {
         bail!("{failed} run(s) failed");
+    }
+    if interrupted > 0 || stop.load(Ordering::SeqCst) {
+        bail!(
+            "interrupted: {interrupted} run(s) keep a checkpoint; `cargo xtask sweep` with the \
+             same options continues them (finished runs are skipped)"
+        );
     }
     Ok(())
 }
