@@ -163,3 +163,66 @@ fn a_stopped_or_killed_run_restarts_to_the_uninterrupted_result() {
         let _ = std::fs::remove_dir_all(dir);
     }
 }
+
+/// A checkpoint of another format version or another runout version is refused, naming
+/// which; a damaged newest checkpoint falls back to the one before.
+#[test]
+fn checkpoints_of_another_version_are_refused_and_damaged_ones_skipped() {
+    let mut case = slide();
+    case.run.checkpoint_interval = Some(0.002);
+    let dir = folder("versions");
+    let first = run(&case, &dir, false, Some(12));
+    assert_eq!(first.status, RunStatus::Interrupted);
+    let ckpts = dir.join(checkpoint::CHECKPOINT_DIR);
+    let mut files: Vec<_> = std::fs::read_dir(&ckpts)
+        .unwrap()
+        .flatten()
+        .map(|e| e.path())
+        .collect();
+    files.sort();
+    let newest = files.last().unwrap().clone();
+    let original = std::fs::read(&newest).unwrap();
+    let restart = |dir: &Path| {
+        let options = RunOptions {
+            restart: true,
+            ..RunOptions::default()
+        };
+        run_case_with(&case, Fidelity::Smoke, dir, &options, |_| {})
+    };
+    // the writer's runout version, as stored (postcard: its length, then its bytes)
+    let version = checkpoint::SOLVER_VERSION.as_bytes();
+    let at = original
+        .windows(version.len())
+        .position(|w| w == version)
+        .expect("the version is stored");
+    let mut other = original.clone();
+    other[at..at + version.len()].copy_from_slice(&b"9.9.99999"[..version.len()]);
+    std::fs::write(&newest, &other).unwrap();
+    let err = restart(&dir).unwrap_err().to_string();
+    assert!(err.contains("written by runout 9.9"), "{err}");
+    // another format version
+    let mut other = original.clone();
+    other[16] = other[16].wrapping_add(1);
+    std::fs::write(&newest, &other).unwrap();
+    for path in &files[..files.len() - 1] {
+        std::fs::remove_file(path).unwrap();
+    }
+    let err = restart(&dir).unwrap_err().to_string();
+    assert!(err.contains("checkpoint format"), "{err}");
+    // damaged (truncated) newest with an intact one before it: the restart uses the older
+    std::fs::write(&newest, &original).unwrap();
+    let again = run(&case, &dir, true, Some(20));
+    assert_eq!(again.status, RunStatus::Interrupted);
+    let mut files: Vec<_> = std::fs::read_dir(&ckpts)
+        .unwrap()
+        .flatten()
+        .map(|e| e.path())
+        .collect();
+    files.sort();
+    let newest = files.last().unwrap();
+    let bytes = std::fs::read(newest).unwrap();
+    std::fs::write(newest, &bytes[..bytes.len() / 2]).unwrap();
+    let done = run(&case, &dir, true, None);
+    assert_eq!(done.status, RunStatus::Completed);
+    let _ = std::fs::remove_dir_all(dir);
+}
