@@ -51,7 +51,7 @@ fn sections(text: &str) -> BTreeSet<String> {
             if rest.len() == line.len() || !rest.starts_with(' ') {
                 return None;
             }
-            let number = rest.trim_start().split_whitespace().next()?;
+            let number = rest.split_whitespace().next()?;
             let number = number.trim_end_matches('.');
             number
                 .split('.')
@@ -112,10 +112,7 @@ fn range(a: &str, b: &str) -> Vec<String> {
 fn cited(after: &str) -> Vec<String> {
     let mut out = Vec::new();
     let mut s = skip_gap(after.strip_prefix('`').unwrap_or(after));
-    loop {
-        let Some(rest) = s.strip_prefix('§') else {
-            break;
-        };
+    while let Some(rest) = s.strip_prefix('§') {
         let Some((a, rest)) = number(rest) else {
             break;
         };
