@@ -96,7 +96,7 @@ pub fn verify(root: &Path) -> Result<()> {
         md,
         "\nWhy the agreement is this close: both codes discretise the same equations on the \
          same cells with the same closures and the same wall conventions (the fluid cell's \
-         values in the floor closure, model-spec §3.1, §3.5–3.6), so at a steady state the \
+         values in the floor closure, docs/model.md §3.1, §3.5–3.6), so at a steady state the \
          2-D column solves the 1-D discrete equations; what differs is the path (time \
          marching with the outer iteration, partial elimination, the εs correction and the \
          gas pressure correction against a Newton solve). The remaining differences are the \

@@ -2,7 +2,7 @@
 //!
 //! Units are SI; angles are in degrees in files (converted to radians inside the solver).
 //! Every struct denies unknown fields, so a typo is an error, never silently ignored.
-//! Defaults are MFIX 21.3.2's (model-spec §5) unless a field says otherwise.
+//! Defaults are MFIX 21.3.2's (docs/model.md §5) unless a field says otherwise.
 
 pub use runout_closures::{Drag, FrictionModel, RadialDistribution};
 use runout_mesh::{short, AxisSpec, Side, Sides};
@@ -104,7 +104,7 @@ fn default_friction_min_packing() -> f64 {
     0.5
 }
 
-/// Closure choices (model-spec §2).
+/// Closure choices (docs/model.md §2).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Models {
@@ -135,7 +135,7 @@ impl Default for Models {
     }
 }
 
-/// Kinetic theory (MFIX `KT_TYPE`, model-spec §2.2).
+/// Kinetic theory (MFIX `KT_TYPE`, docs/model.md §2.2).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub enum KineticTheory {
@@ -189,7 +189,7 @@ pub enum GasWall {
     /// zero tangential stress
     FreeSlip,
     /// face velocity held at `u_w` (a moving wall, e.g. a cavity lid; MFIX PSW without
-    /// `BC_HW_G`, model-spec §3.2)
+    /// `BC_HW_G`, docs/model.md §3.2)
     Moving {
         /// wall velocity along the wall [m s⁻¹]
         u_w: f64,
@@ -204,7 +204,7 @@ pub enum GasWall {
     },
 }
 
-/// Solids condition on a wall: the paper's subject (paper §2.2, model-spec §3).
+/// Solids condition on a wall: the paper's subject (paper §2.2, docs/model.md §3).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub enum SolidsWall {
@@ -214,7 +214,7 @@ pub enum SolidsWall {
     FreeSlip,
     /// User-set partial slip (paper Eqs. 12–13, MFIX PSW with `BC_JJ_PS = 0`):
     /// du/dn + h_u (u − u_w) = 0 and dθ/dn + h_θ (θ − θ_w) = c, both in MFIX's manual
-    /// units (model-spec §3.3): h in m⁻¹, c in m s⁻² (no conductivity factor).
+    /// units (docs/model.md §3.3): h in m⁻¹, c in m s⁻² (no conductivity factor).
     PartialSlip {
         /// h_w^u [m⁻¹] (MFIX `BC_HW_S`)
         h_u: f64,
@@ -229,7 +229,7 @@ pub enum SolidsWall {
         c: f64,
     },
     /// Johnson & Jackson (1987) with a constant specularity (paper Eqs. 14, 18–19;
-    /// model-spec §3.5–3.6).
+    /// docs/model.md §3.5–3.6).
     JohnsonJackson {
         /// specularity coefficient φ [-] (MFIX `PHIP`)
         specularity: f64,
@@ -242,7 +242,7 @@ pub enum SolidsWall {
         u_w: f64,
     },
     /// Johnson–Jackson with Li & Benyahia's (2012) specularity φ(r), the paper's
-    /// "revisited JJ" (paper Eqs. 16–17 as MFIX codes them, model-spec §3.7).
+    /// "revisited JJ" (paper Eqs. 16–17 as MFIX codes them, docs/model.md §3.7).
     RevisitedJohnsonJackson {
         /// particle–wall restitution e_w [-]
         wall_restitution: f64,
@@ -255,7 +255,7 @@ pub enum SolidsWall {
         #[serde(default)]
         u_w: f64,
     },
-    /// Jenkins (1992) small-friction, all-sliding limit (paper Eq. 20, model-spec §3.8).
+    /// Jenkins (1992) small-friction, all-sliding limit (paper Eq. 20, docs/model.md §3.8).
     Jenkins {
         /// particle–wall restitution e_w [-]
         wall_restitution: f64,
@@ -500,7 +500,7 @@ pub struct RunControl {
     pub checkpoint_interval: Option<f64>,
 }
 
-/// Adaptive time-step control (model-spec §4.12).
+/// Adaptive time-step control (docs/model.md §4.12).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct TimeStep {
@@ -534,7 +534,7 @@ fn default_steps_per_change() -> usize {
     5
 }
 
-/// Outer-iteration convergence (model-spec §4.11).
+/// Outer-iteration convergence (docs/model.md §4.11).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Tolerances {
@@ -552,7 +552,7 @@ pub struct Tolerances {
     pub max_iterations: u32,
     /// two-fluid cases: end a step whose momentum and continuity residual sum stops falling
     /// (checked every 5 outer iterations after the 10th) and retry it with a smaller Δt
-    /// (MFIX `DETECT_STALL`, default true; model-spec §4.11; the single-phase core ignores it)
+    /// (MFIX `DETECT_STALL`, default true; docs/model.md §4.11; the single-phase core ignores it)
     #[serde(default = "default_detect_stall")]
     pub detect_stall: bool,
 }
@@ -589,7 +589,7 @@ impl Default for Tolerances {
     }
 }
 
-/// Discretisation settings (model-spec §4.2, §4.10).
+/// Discretisation settings (docs/model.md §4.2, §4.10).
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Numerics {
@@ -604,7 +604,7 @@ pub struct Numerics {
     #[serde(default)]
     pub exact_solids_mass: bool,
     /// how the θ row of a cell is classified dilute (εs ≤ DIL_EP_S: the mean of its dense
-    /// neighbours) or dense (model-spec §4.8): at every outer iteration by the current εs
+    /// neighbours) or dense (docs/model.md §4.8): at every outer iteration by the current εs
     /// (default, MFIX), or so, but dilute for the rest of a step once a cell's class has
     /// changed back (not MFIX; for cells whose εs straddles DIL_EP_S, where the step
     /// otherwise stalls)
@@ -633,7 +633,7 @@ pub enum Convection {
     Superbee,
 }
 
-/// Under-relaxation factors (MFIX `UR_FAC`, model-spec §4.10).
+/// Under-relaxation factors (MFIX `UR_FAC`, docs/model.md §4.10).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Relaxation {

@@ -1,5 +1,5 @@
 //! `runout closures`: the closure calculator (issue 3). Evaluates every closure of
-//! model-spec §2 (and the granular-energy sources of §1.3) at one state with
+//! docs/model.md §2 (and the granular-energy sources of §1.3) at one state with
 //! `runout_closures::evaluate` and prints the result as pretty JSON.
 
 use anyhow::ensure;
@@ -31,9 +31,9 @@ OUTPUT (JSON, SI units):
   closures.k_cp     dP_s/deps_s for the volume-fraction correction [Pa]
   closures.production, .j_vis, .j_slip   granular-energy production, viscous damping,
                     slip production [W m-3]
-Sources: shared/docs/model-spec.md section 2 and 1.3; rustdoc of runout-closures.";
+Sources: docs/model.md §2 and §1.3; rustdoc of runout-closures.";
 
-/// Gas–solids drag law (MFIX `DRAG_TYPE`, model-spec §2.6).
+/// Gas–solids drag law (MFIX `DRAG_TYPE`, docs/model.md §2.6).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum DragChoice {
     /// Syamlal–O'Brien with --drag-c1, --drag-d1 (MFIX default)

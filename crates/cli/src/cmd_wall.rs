@@ -1,5 +1,5 @@
 //! `runout wall`: the wall-condition calculator (issue 4). Evaluates one solids wall model of
-//! model-spec §3 (runout-walls) at one near-wall state and prints the Robin coefficients of
+//! docs/model.md §3 (runout-walls) at one near-wall state and prints the Robin coefficients of
 //! the solids tangential velocity and of θ, with the diagnostics the paper plots
 //! (h_w^u, φ, COL, FRI, slip), as pretty JSON.
 
@@ -34,9 +34,9 @@ OUTPUT (JSON, SI units):
                              branch, theta, kappa, h_theta, c_theta, specularity, slip, p_kin
 The momentum condition uses --eps-s (interpolated at the velocity face) and --eps-s-fluid
 (the fluid cell: dilute skip and friction test); the theta condition uses --eps-s-fluid.
-Sources: shared/docs/model-spec.md section 3; rustdoc of runout-walls.";
+Sources: docs/model.md §3; rustdoc of runout-walls.";
 
-/// Solids wall condition (paper §2.2, model-spec §3).
+/// Solids wall condition (paper §2.2, docs/model.md §3).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum, Serialize)]
 pub enum WallModelChoice {
     /// zero solids velocity on the wall, zero theta flux
@@ -207,7 +207,7 @@ impl WallArgs {
 
     fn params(&self) -> ClosureParams {
         // the drag law is not used by the wall models (they estimate drag with Wen-Yu,
-        // model-spec §2.6)
+        // docs/model.md §2.6)
         self.material.params(Drag::default())
     }
 }

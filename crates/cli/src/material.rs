@@ -10,7 +10,7 @@ use runout_closures::{
 };
 use serde::Serialize;
 
-/// Frictional model (MFIX `FRICTION_MODEL`, model-spec §2.4).
+/// Frictional model (MFIX `FRICTION_MODEL`, docs/model.md §2.4).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum FrictionChoice {
@@ -22,7 +22,7 @@ pub enum FrictionChoice {
     None,
 }
 
-/// Radial distribution function (MFIX `RDF_TYPE`, model-spec §2.1).
+/// Radial distribution function (MFIX `RDF_TYPE`, docs/model.md §2.1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum RadialChoice {
@@ -91,7 +91,7 @@ impl MaterialArgs {
             self.eps_s_min,
             self.eps_s_max
         );
-        // n = sqrt(3)/(2 sin phi) must exceed 1 in dilatation (model-spec §2.4.2)
+        // n = sqrt(3)/(2 sin phi) must exceed 1 in dilatation (docs/model.md §2.4.2)
         ensure!(
             self.phi_internal > 0.0 && self.phi_internal < 60.0,
             "--phi-internal must be in (0, 60) degrees, got {}",

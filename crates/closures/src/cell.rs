@@ -1,4 +1,4 @@
-//! The full closure set of one cell state (model-spec §1.3 and §2), evaluated by one
+//! The full closure set of one cell state (docs/model.md §1.3 and §2), evaluated by one
 //! allocation-free function, [`evaluate`]. Used by the solver, the `runout closures`
 //! calculator and the bench.
 
@@ -33,7 +33,7 @@ impl Default for Particles {
     }
 }
 
-/// Gas properties (constant `RO_G0`, `MU_G0`; model-spec §1.1–1.2).
+/// Gas properties (constant `RO_G0`, `MU_G0`; docs/model.md §1.1–1.2).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Gas {
     /// gas density ρ_g [kg/m³]; 0 means a dry granular flow (no drag, μ* = μ₀, κ* = κ₀)
@@ -43,7 +43,7 @@ pub struct Gas {
 }
 
 impl Default for Gas {
-    /// Paper Table 3: ρ_g = 1.2 kg/m³, μ_g = 1.8e-5 Pa s (constants assumed, model-spec §5).
+    /// Paper Table 3: ρ_g = 1.2 kg/m³, μ_g = 1.8e-5 Pa s (constants assumed, docs/model.md §5).
     fn default() -> Self {
         Self {
             density: 1.2,
@@ -85,7 +85,7 @@ pub struct CellState {
 }
 
 impl Default for CellState {
-    /// The second check state of model-spec §2.2 (εs = 0.55, θ = 0.1 m²/s²), at rest.
+    /// The second check state of docs/model.md §2.2 (εs = 0.55, θ = 0.1 m²/s²), at rest.
     fn default() -> Self {
         Self {
             eps_s: 0.55,
@@ -102,39 +102,39 @@ impl Default for CellState {
 pub struct ClosureSet {
     /// εg = 1 − εs [-]
     pub eps_g: f64,
-    /// g0 [-] (model-spec §2.1)
+    /// g0 [-] (docs/model.md §2.1)
     pub g0: f64,
-    /// dg0/dεs [-] (model-spec §2.1)
+    /// dg0/dεs [-] (docs/model.md §2.1)
     pub dg0_deps: f64,
     /// η = (1 + e)/2 [-]
     pub eta: f64,
-    /// DgA of the bulk drag law [kg m⁻³ s⁻¹] (model-spec §2.6)
+    /// DgA of the bulk drag law [kg m⁻³ s⁻¹] (docs/model.md §2.6)
     pub dga: f64,
-    /// F_gs = εs DgA [kg m⁻³ s⁻¹] (model-spec §2.6)
+    /// F_gs = εs DgA [kg m⁻³ s⁻¹] (docs/model.md §2.6)
     pub f_gs: f64,
     /// drag per unit solids fraction used in μ*, κ* [kg m⁻³ s⁻¹]: DgA, or the single-particle
-    /// value below `DIL_EP_S` (model-spec §2.2); 0 without gas
+    /// value below `DIL_EP_S` (docs/model.md §2.2); 0 without gas
     pub dga_kinetic: f64,
-    /// kinetic-theory values (model-spec §2.2)
+    /// kinetic-theory values (docs/model.md §2.2)
     pub kinetic: KineticStress,
-    /// frictional values (model-spec §2.4)
+    /// frictional values (docs/model.md §2.4)
     pub friction: FrictionalStress,
-    /// summed stress coefficients (model-spec §2.3)
+    /// summed stress coefficients (docs/model.md §2.3)
     pub stress: SolidsStress,
-    /// K_cp = dP_s/dεs \[Pa\] (model-spec §2.5; the solver zeroes it in wall cells)
+    /// K_cp = dP_s/dεs \[Pa\] (docs/model.md §2.5; the solver zeroes it in wall cells)
     pub k_cp: f64,
-    /// shear production Π [W m⁻³] (model-spec §1.3)
+    /// shear production Π [W m⁻³] (docs/model.md §1.3)
     pub production: f64,
-    /// viscous damping J_vis = 3 F_gs θ [W m⁻³] (model-spec §1.3)
+    /// viscous damping J_vis = 3 F_gs θ [W m⁻³] (docs/model.md §1.3)
     pub j_vis: f64,
-    /// slip production J_slip [W m⁻³] (model-spec §1.3)
+    /// slip production J_slip [W m⁻³] (docs/model.md §1.3)
     pub j_slip: f64,
 }
 
-/// Evaluate every closure of model-spec §2 and the granular-energy sources of §1.3 at one
+/// Evaluate every closure of docs/model.md §2 and the granular-energy sources of §1.3 at one
 /// cell state: g0 → drag F_gs → Lun KT (gas-modified μ*, κ*) → friction → additive stress →
 /// K_cp → Π, J_vis, J_slip. Pure and allocation-free. A dry flow (ρ_g = 0) has no drag, no
-/// J_vis and no J_slip, and μ* = μ₀, κ* = κ₀ (model-spec §6, last row).
+/// J_vis and no J_slip, and μ* = μ₀, κ* = κ₀ (docs/model.md §6, last row).
 #[inline]
 pub fn evaluate(state: &CellState, params: &ClosureParams) -> ClosureSet {
     let particles = &params.particles;
@@ -174,7 +174,7 @@ pub fn evaluate(state: &CellState, params: &ClosureParams) -> ClosureSet {
         state.s_ddot_s,
         &params.friction,
     );
-    // K_cp (model-spec §2.5), reusing the Princeton P_f/P_c just computed
+    // K_cp (docs/model.md §2.5), reusing the Princeton P_f/P_c just computed
     let k_cp = match params.friction_model {
         FrictionModel::Princeton => k_cp_from_princeton(eps_s, &friction, &params.friction),
         model => model.k_cp(

@@ -1,4 +1,4 @@
-//! Gas–solids drag (model-spec §2.6; MFIX 21.3.2 `model/drag_gs.f`, `model/drag_mod.f`).
+//! Gas–solids drag (docs/model.md §2.6; MFIX 21.3.2 `model/drag_gs.f`, `model/drag_mod.f`).
 //!
 //! Each law returns the per-particle-volume coefficient DgA [kg m⁻³ s⁻¹]; the Model-A
 //! interphase coefficient is F_gs = εs · DgA ([`Drag::f_gs`]). |v| = |u_g − u_s| is the
@@ -8,34 +8,34 @@ use crate::guards::{LARGE_NUMBER, SMALL_NUMBER};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
-/// Syamlal–O'Brien default `DRAG_C1` = 0.8 [-] (MFIX keyword default, model-spec §2.6, §5).
+/// Syamlal–O'Brien default `DRAG_C1` = 0.8 [-] (MFIX keyword default, docs/model.md §2.6, §5).
 pub const SYAMLAL_OBRIEN_C1: f64 = 0.8;
-/// Syamlal–O'Brien default `DRAG_D1` = 2.65 [-] (MFIX keyword default, model-spec §2.6, §5).
+/// Syamlal–O'Brien default `DRAG_D1` = 2.65 [-] (MFIX keyword default, docs/model.md §2.6, §5).
 pub const SYAMLAL_OBRIEN_D1: f64 = 2.65;
-/// εg at which Syamlal–O'Brien's B switches from c1 εg^1.28 to εg^d1: 0.85 [-] (model-spec §2.6).
+/// εg at which Syamlal–O'Brien's B switches from c1 εg^1.28 to εg^d1: 0.85 [-] (docs/model.md §2.6).
 pub const SYAMLAL_OBRIEN_EPS_G_SWITCH: f64 = 0.85;
-/// Exponent of εg in Syamlal–O'Brien's A = εg^4.14 [-] (model-spec §2.6).
+/// Exponent of εg in Syamlal–O'Brien's A = εg^4.14 [-] (docs/model.md §2.6).
 const SO_EXPONENT_A: f64 = 4.14;
-/// Exponent of εg in Syamlal–O'Brien's dense B = c1 εg^1.28 [-] (model-spec §2.6).
+/// Exponent of εg in Syamlal–O'Brien's dense B = c1 εg^1.28 [-] (docs/model.md §2.6).
 const SO_EXPONENT_B: f64 = 1.28;
-/// Coefficient 0.06 of Re in the terminal-velocity ratio V_r (model-spec §2.6).
+/// Coefficient 0.06 of Re in the terminal-velocity ratio V_r (docs/model.md §2.6).
 const SO_RE_COEFFICIENT: f64 = 0.06;
 /// Dalla Valle (1948) C_d Re/V_r = (0.63 √(Re/V_r) + 4.8)² coefficients (MFIX C_DSXRE_DV).
 const DALLA_VALLE: (f64, f64) = (0.63, 4.8);
-/// Ergun coefficients 150 (viscous) and 1.75 (inertial) (model-spec §2.6, Gidaspow dense branch).
+/// Ergun coefficients 150 (viscous) and 1.75 (inertial) (docs/model.md §2.6, Gidaspow dense branch).
 const ERGUN: (f64, f64) = (150.0, 1.75);
-/// εg separating Gidaspow's Ergun and Wen–Yu branches: 0.8 [-] (model-spec §2.6).
+/// εg separating Gidaspow's Ergun and Wen–Yu branches: 0.8 [-] (docs/model.md §2.6).
 pub const GIDASPOW_EPS_G_SWITCH: f64 = 0.8;
-/// Wen–Yu voidage exponent: DgA ∝ εg^−2.65 (model-spec §2.6).
+/// Wen–Yu voidage exponent: DgA ∝ εg^−2.65 (docs/model.md §2.6).
 const WEN_YU_EXPONENT: f64 = 2.65;
 /// Schiller–Naumann C_d = 24(1 + 0.15 Re^0.687)/Re coefficients (MFIX C_DS_SN).
 const SCHILLER_NAUMANN: (f64, f64, f64) = (24.0, 0.15, 0.687);
-/// Reynolds number above which C_d = 0.44 (Newton regime) (model-spec §2.6).
+/// Reynolds number above which C_d = 0.44 (Newton regime) (docs/model.md §2.6).
 const RE_NEWTON: f64 = 1000.0;
-/// Newton-regime drag coefficient C_d = 0.44 (model-spec §2.6).
+/// Newton-regime drag coefficient C_d = 0.44 (docs/model.md §2.6).
 const CD_NEWTON: f64 = 0.44;
 
-/// Local state a drag law needs (model-spec §2.6).
+/// Local state a drag law needs (docs/model.md §2.6).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct DragInputs {
     /// gas volume fraction εg [-]
@@ -62,7 +62,7 @@ fn reynolds(d_p: f64, slip: f64, density: f64, mu_g: f64) -> f64 {
 }
 
 /// Single-sphere drag coefficient [-]: Schiller–Naumann C_d = 24(1 + 0.15 Re^0.687)/(Re + 1e-15)
-/// for Re ≤ 1000, else 0.44 (model-spec §2.6; MFIX C_DS_SN with `SMALL_NUMBER`).
+/// for Re ≤ 1000, else 0.44 (docs/model.md §2.6; MFIX C_DS_SN with `SMALL_NUMBER`).
 #[inline]
 pub fn cd_schiller_naumann(re: f64) -> f64 {
     let (a, b, exponent) = SCHILLER_NAUMANN;
@@ -73,7 +73,7 @@ pub fn cd_schiller_naumann(re: f64) -> f64 {
     }
 }
 
-/// Syamlal–O'Brien DgA [kg m⁻³ s⁻¹] (model-spec §2.6; MFIX DRAG_SYAM_OBRIEN):
+/// Syamlal–O'Brien DgA [kg m⁻³ s⁻¹] (docs/model.md §2.6; MFIX DRAG_SYAM_OBRIEN):
 /// Re = d|v|ρ_g/μ_g (no εg); A = εg^4.14; B = c1 εg^1.28 if εg ≤ 0.85 else εg^d1;
 /// V_r = ½[A − 0.06Re + √((0.06Re)² + 0.12Re(2B − A) + A²)];
 /// DgA = (3/4) μ_g εg (0.63√(Re/V_r) + 4.8)²/(V_r d²); 0 if Re = 0.
@@ -97,7 +97,7 @@ pub fn dga_syamlal_obrien(x: &DragInputs, c1: f64, d1: f64) -> f64 {
 }
 
 /// Ergun DgA = 150 (1 − εg) μ_g/(εg d²) + 1.75 ρ_g |v|/d [kg m⁻³ s⁻¹]
-/// (Gidaspow dense branch, model-spec §2.6).
+/// (Gidaspow dense branch, docs/model.md §2.6).
 #[inline]
 pub fn dga_ergun(x: &DragInputs) -> f64 {
     let (viscous, inertial) = ERGUN;
@@ -112,7 +112,7 @@ fn wen_yu_branch(x: &DragInputs, re: f64) -> f64 {
         / x.d_p
 }
 
-/// Wen–Yu DgA [kg m⁻³ s⁻¹] (model-spec §2.6, `WEN_YU`; MFIX DRAG_WEN_YU):
+/// Wen–Yu DgA [kg m⁻³ s⁻¹] (docs/model.md §2.6, `WEN_YU`; MFIX DRAG_WEN_YU):
 /// Re = d|v|ρ_g εg/μ_g, DgA = (3/4) C_d |v| ρ_g εg εg^−2.65/d with [`cd_schiller_naumann`];
 /// 0 if Re = 0.
 #[inline]
@@ -124,7 +124,7 @@ pub fn dga_wen_yu(x: &DragInputs) -> f64 {
     wen_yu_branch(x, re)
 }
 
-/// Gidaspow DgA [kg m⁻³ s⁻¹] (model-spec §2.6, `GIDASPOW`; MFIX DRAG_GIDASPOW):
+/// Gidaspow DgA [kg m⁻³ s⁻¹] (docs/model.md §2.6, `GIDASPOW`; MFIX DRAG_GIDASPOW):
 /// [`dga_ergun`] for εg ≤ 0.8, the Wen–Yu form for εg > 0.8; 0 if Re = 0.
 #[inline]
 pub fn dga_gidaspow(x: &DragInputs) -> f64 {
@@ -139,7 +139,7 @@ pub fn dga_gidaspow(x: &DragInputs) -> f64 {
 }
 
 /// Blended Gidaspow DgA = (1 − ψ) Ergun + ψ Wen–Yu [kg m⁻³ s⁻¹],
-/// ψ = atan(150 · 1.75 (εg − 0.8))/π + ½ (model-spec §2.6, `GIDASPOW_BLEND`; MFIX
+/// ψ = atan(150 · 1.75 (εg − 0.8))/π + ½ (docs/model.md §2.6, `GIDASPOW_BLEND`; MFIX
 /// DRAG_GIDASPOW_BLEND); 0 if Re = 0.
 #[inline]
 pub fn dga_gidaspow_blend(x: &DragInputs) -> f64 {
@@ -152,7 +152,7 @@ pub fn dga_gidaspow_blend(x: &DragInputs) -> f64 {
     (1.0 - psi) * dga_ergun(x) + psi * wen_yu_branch(x, re)
 }
 
-/// Wen–Yu estimate used by the wall BC routines (model-spec §2.6 last bullet, §3.5–3.6;
+/// Wen–Yu estimate used by the wall BC routines (docs/model.md §2.6 last bullet, §3.5–3.6;
 /// MFIX `calc_grbdry.f`): Re = εg ρ_g d|v|/μ_g, C_d = 24(1 + 0.15Re^0.687)/(Re + 1e-15) for
 /// Re < 1000 (strict) else 0.44, DgA = 0.75 C_d ρ_g εg |v|/(d εg^2.65) [kg m⁻³ s⁻¹];
 /// DgA = `LARGE_NUMBER` = 1e32 if |v| = 0. Independent of the bulk `DRAG_TYPE`.
@@ -171,7 +171,7 @@ pub fn dga_wall_wen_yu(x: &DragInputs) -> f64 {
 }
 
 /// Single-particle drag per unit solids fraction used in μ*, κ* where εs < `DIL_EP_S`
-/// (model-spec §2.2 notes; MFIX `kintheory_mod.f` KT_DGA): Re = d|v|ρ_g εg/(μ_g + 1e-15),
+/// (docs/model.md §2.2 notes; MFIX `kintheory_mod.f` KT_DGA): Re = d|v|ρ_g εg/(μ_g + 1e-15),
 /// DgA = (3/4) C_d |v| ρ_g εg/d [kg m⁻³ s⁻¹] (Wen–Yu without εg^−2.65);
 /// `LARGE_NUMBER` if |v| = 0.
 #[inline]
@@ -184,8 +184,8 @@ pub fn dga_single_particle(x: &DragInputs) -> f64 {
     0.75 * cd_schiller_naumann(re) * x.slip * bulk_density / x.d_p
 }
 
-/// Choice of gas–solids drag law (MFIX `DRAG_TYPE`, model-spec §2.6). Default: Syamlal–O'Brien
-/// with MFIX's default constants (the paper does not state its drag law, model-spec §7).
+/// Choice of gas–solids drag law (MFIX `DRAG_TYPE`, docs/model.md §2.6). Default: Syamlal–O'Brien
+/// with MFIX's default constants (the paper does not state its drag law, docs/model.md §7).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub enum Drag {
@@ -205,7 +205,7 @@ pub enum Drag {
 }
 
 impl Default for Drag {
-    /// `SYAM_OBRIEN`, c1 = 0.8, d1 = 2.65 (MFIX default, model-spec §5).
+    /// `SYAM_OBRIEN`, c1 = 0.8, d1 = 2.65 (MFIX default, docs/model.md §5).
     fn default() -> Self {
         Self::SyamlalOBrien {
             c1: SYAMLAL_OBRIEN_C1,
@@ -216,7 +216,7 @@ impl Default for Drag {
 
 impl Drag {
     /// DgA [kg m⁻³ s⁻¹] of the chosen law; 0 if εs ≤ 0 or εg = 0 (MFIX `drag_gs.f`,
-    /// model-spec §2.6).
+    /// docs/model.md §2.6).
     #[inline]
     pub fn dga(self, eps_s: f64, x: &DragInputs) -> f64 {
         if eps_s <= 0.0 || x.eps_g == 0.0 {
@@ -230,7 +230,7 @@ impl Drag {
         }
     }
 
-    /// Model-A interphase drag coefficient F_gs = εs · DgA [kg m⁻³ s⁻¹] (model-spec §1.2, §2.6;
+    /// Model-A interphase drag coefficient F_gs = εs · DgA [kg m⁻³ s⁻¹] (docs/model.md §1.2, §2.6;
     /// `UR_F_GS` = 1, i.e. no under-relaxation).
     #[inline]
     pub fn f_gs(self, eps_s: f64, x: &DragInputs) -> f64 {

@@ -1,11 +1,11 @@
-//! Frictional stresses (model-spec §2.4) and the solids-pressure derivative K_cp (§2.5).
+//! Frictional stresses (docs/model.md §2.4) and the solids-pressure derivative K_cp (§2.5).
 //!
-//! - Schaeffer (1987) with MFIX's plastic pressure P* (paper Eq. 8; model-spec §2.4.1;
+//! - Schaeffer (1987) with MFIX's plastic pressure P* (paper Eq. 8; docs/model.md §2.4.1;
 //!   MFIX `calc_mu_s.f` FRICTION_SCHAEFFER, `solids_pressure_mod.f`).
 //! - Princeton / Srivastava & Sundaresan (2003), the paper's model (paper Eqs. 9–10 as MFIX
-//!   computes them; model-spec §2.4.2 and §3.10; MFIX `calc_mu_s.f` FRICTION_PRINCETON).
+//!   computes them; docs/model.md §2.4.2 and §3.10; MFIX `calc_mu_s.f` FRICTION_PRINCETON).
 //!
-//! Where the paper's printed equations differ, this follows MFIX (model-spec §3.10):
+//! Where the paper's printed equations differ, this follows MFIX (docs/model.md §3.10):
 //! the P-Eq. 9 exponent is n − 1 (not 1/(N − 1)); in compaction n = N_Pf = 1.03 (not 0);
 //! with Princeton there is no A(εg* − εg)^10 branch (P* ≡ 0, P_c is linearly extrapolated
 //! above εs,max − δ); and kinetic and frictional stresses are summed, not switched
@@ -15,7 +15,7 @@ use crate::guards::{SMALL_NUMBER, THETA_SMALL, TO_SI};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::SQRT_2;
 
-/// Princeton model constants (MFIX `constant_mod.f` code parameters, model-spec §2.4.2, §5).
+/// Princeton model constants (MFIX `constant_mod.f` code parameters, docs/model.md §2.4.2, §5).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PrincetonConstants {
     /// Fr = 0.5 dyn/cm² = 0.05 Pa (paper Eq. 10 "Fr")
@@ -24,15 +24,15 @@ pub struct PrincetonConstants {
     pub n_pc: f64,
     /// D_Pc = 5 [-], denominator exponent of P_c (paper's "C")
     pub d_pc: f64,
-    /// N_Pf = 1.03 [-], exponent n in compaction (paper Eq. 10 says 0; model-spec §3.10.2)
+    /// N_Pf = 1.03 [-], exponent n in compaction (paper Eq. 10 says 0; docs/model.md §3.10.2)
     pub n_pf: f64,
-    /// δ = 0.01 [-]: P_c is linearised above εs,max − δ (model-spec §2.4.2 step 2)
+    /// δ = 0.01 [-]: P_c is linearised above εs,max − δ (docs/model.md §2.4.2 step 2)
     pub delta: f64,
 }
 
 impl Default for PrincetonConstants {
     /// MFIX 21.3.2 `constant_mod.f` (identical in 2016-1): Fr = 0.5 dyn/cm², N_Pc = 2,
-    /// D_Pc = 5, N_Pf = 1.03, δ = 0.01 (model-spec §2.4.2, §5).
+    /// D_Pc = 5, N_Pf = 1.03, δ = 0.01 (docs/model.md §2.4.2, §5).
     fn default() -> Self {
         Self {
             fr: 0.5 * TO_SI,
@@ -45,10 +45,10 @@ impl Default for PrincetonConstants {
 }
 
 /// Schaeffer plastic-pressure constants (MFIX `solids_pressure_mod.f`, `calc_mu_s.f`;
-/// paper Eq. 8; model-spec §2.4.1, §5).
+/// paper Eq. 8; docs/model.md §2.4.1, §5).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SchaefferConstants {
-    /// A = 1e25 dyn/cm² = 1e24 Pa (paper Eq. 8, correct as printed: model-spec §3.10.7)
+    /// A = 1e25 dyn/cm² = 1e24 Pa (paper Eq. 8, correct as printed: docs/model.md §3.10.7)
     pub a: f64,
     /// exponent of (εg* − εg): 10 [-]
     pub exponent: i32,
@@ -58,7 +58,7 @@ pub struct SchaefferConstants {
 
 impl Default for SchaefferConstants {
     /// A = 1e25 dyn/cm² (`a_ps`), exponent 10 (`b_ps`), μ_max = 1000 poise (`MAX_MU_s`),
-    /// MFIX 21.3.2 (model-spec §2.4.1).
+    /// MFIX 21.3.2 (docs/model.md §2.4.1).
     fn default() -> Self {
         Self {
             a: 1e25 * TO_SI,
@@ -68,7 +68,7 @@ impl Default for SchaefferConstants {
     }
 }
 
-/// Material and model parameters of the frictional closures (model-spec §2.4, §5).
+/// Material and model parameters of the frictional closures (docs/model.md §2.4, §5).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FrictionParams {
     /// εs,max = 1 − `EP_STAR` [-] (paper: 0.65, "ε_s*")
@@ -99,13 +99,13 @@ impl FrictionParams {
 
 impl Default for FrictionParams {
     /// The paper's sensitivity-analysis values (paper Table 3): εs,max = 0.65, εs,min = 0.5,
-    /// φ = 35°; MFIX code constants (model-spec §5).
+    /// φ = 35°; MFIX code constants (docs/model.md §5).
     fn default() -> Self {
         Self::new(0.65, 0.5, 35.0)
     }
 }
 
-/// Frictional stress contributions at one state (model-spec §2.4). Intermediate Princeton
+/// Frictional stress contributions at one state (docs/model.md §2.4). Intermediate Princeton
 /// quantities are reported for diagnostics and the wall BCs; they are 0 when not evaluated.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
 pub struct FrictionalStress {
@@ -130,8 +130,8 @@ pub struct FrictionalStress {
 // ---------------------------------------------------------------- Schaeffer (§2.4.1)
 
 /// Plastic pressure P* = A (εg* − εg)^10 for εg < εg*, else 0 \[Pa\], with εg = 1 − εs,
-/// εg* = 1 − εs,max, A = 1e24 Pa (paper Eq. 8; model-spec §2.4.1; MFIX Neg_H).
-/// Not used with the Princeton model (model-spec §3.10.3).
+/// εg* = 1 − εs,max, A = 1e24 Pa (paper Eq. 8; docs/model.md §2.4.1; MFIX Neg_H).
+/// Not used with the Princeton model (docs/model.md §3.10.3).
 #[inline]
 pub fn p_star(eps_s: f64, p: &FrictionParams) -> f64 {
     let excess = ((1.0 - p.eps_s_max) - (1.0 - eps_s)).max(0.0);
@@ -139,13 +139,13 @@ pub fn p_star(eps_s: f64, p: &FrictionParams) -> f64 {
 }
 
 /// Inverse of [`p_star`]: εg = εg* − (P*/A)^{1/10} [-], used to rebuild εs in packed cells
-/// (model-spec §2.4.1; MFIX INV_H). Valid for P* ≥ 0.
+/// (docs/model.md §2.4.1; MFIX INV_H). Valid for P* ≥ 0.
 #[inline]
 pub fn eps_g_from_p_star(p_star: f64, p: &FrictionParams) -> f64 {
     (1.0 - p.eps_s_max) - (p_star / p.schaeffer.a).powf(1.0 / f64::from(p.schaeffer.exponent))
 }
 
-/// dP*/dεs = 10 A (εs − εs,max)^9 for εs > εs,max, else 0 \[Pa\] (model-spec §2.4.1, §2.5;
+/// dP*/dεs = 10 A (εs − εs,max)^9 for εs > εs,max, else 0 \[Pa\] (docs/model.md §2.4.1, §2.5;
 /// MFIX dPodEP_s, written with εg* − εg like P*). K_cp of the Schaeffer model.
 #[inline]
 pub fn dp_star_deps(eps_s: f64, p: &FrictionParams) -> f64 {
@@ -155,7 +155,7 @@ pub fn dp_star_deps(eps_s: f64, p: &FrictionParams) -> f64 {
 }
 
 /// Schaeffer viscosity μ = min(P* sin²φ / (√(4 sin²φ I₂D) + 1e-15), μ_max) [Pa s]
-/// (≈ P* sinφ/(2√I₂D); model-spec §2.4.1; MFIX FRICTION_SCHAEFFER), μ_max = 100 Pa s.
+/// (≈ P* sinφ/(2√I₂D); docs/model.md §2.4.1; MFIX FRICTION_SCHAEFFER), μ_max = 100 Pa s.
 /// `i2_dev_d` = I₂D [1/s²], second invariant of the deviatoric strain rate (= S:S/2).
 #[inline]
 pub fn mu_schaeffer(p_star: f64, i2_dev_d: f64, p: &FrictionParams) -> f64 {
@@ -164,7 +164,7 @@ pub fn mu_schaeffer(p_star: f64, i2_dev_d: f64, p: &FrictionParams) -> f64 {
         .min(p.schaeffer.mu_max)
 }
 
-/// Schaeffer model at one state (model-spec §2.4.1): P* and μ_Schaeffer with S:S floored at 0 and
+/// Schaeffer model at one state (docs/model.md §2.4.1): P* and μ_Schaeffer with S:S floored at 0 and
 /// I₂D = S:S/2 (I₂D = ½ D':D' and S:S = D':D' for the deviator D' of D), λ = 0, P_fric = 0.
 /// Active only where εg < εg* (P* = 0 elsewhere, so μ = 0).
 #[inline]
@@ -179,7 +179,7 @@ pub fn schaeffer(eps_s: f64, s_ddot_s: f64, p: &FrictionParams) -> FrictionalStr
 
 // ---------------------------------------------------------------- Princeton (§2.4.2)
 
-/// Linearisation point εs,at = εs,max − δ of P_c (model-spec §2.4.2 step 2).
+/// Linearisation point εs,at = εs,max − δ of P_c (docs/model.md §2.4.2 step 2).
 #[inline]
 fn eps_s_at(p: &FrictionParams) -> f64 {
     p.eps_s_max - p.princeton.delta
@@ -206,13 +206,13 @@ fn dpc_at(p: &FrictionParams) -> f64 {
         + c.d_pc * above_min.powf(c.n_pc) / c.delta.powf(c.d_pc + 1.0))
 }
 
-/// Princeton critical pressure P_c(εs) \[Pa\] (paper Eq. 10 middle branch; model-spec §2.4.2
+/// Princeton critical pressure P_c(εs) \[Pa\] (paper Eq. 10 middle branch; docs/model.md §2.4.2
 /// step 2; MFIX FRICTION_PRINCETON):
 /// - εs ≤ εs,min: 0 (friction not evaluated);
 /// - εs ≤ εs,max − δ: P_c = Fr (εs − εs,min)^2/(εs,max − εs)^5;
 /// - above: linear extrapolation P_c = P_c,at + P_c' (εs − εs,at), εs,at = εs,max − δ,
 ///   P_c,at = Fr (εs,at − εs,min)²/δ⁵, P_c' = dP_c/dεs at εs,at
-///   (paper values: 9.8e6 Pa and 5.04e9 Pa). No A(εg* − εg)^10 branch (model-spec §3.10.3).
+///   (paper values: 9.8e6 Pa and 5.04e9 Pa). No A(εg* − εg)^10 branch (docs/model.md §3.10.3).
 #[inline]
 pub fn critical_pressure(eps_s: f64, p: &FrictionParams) -> f64 {
     let c = &p.princeton;
@@ -227,7 +227,7 @@ pub fn critical_pressure(eps_s: f64, p: &FrictionParams) -> f64 {
     }
 }
 
-/// dP_c/dεs \[Pa\] of [`critical_pressure`] (model-spec §2.5; MFIX `calc_k_cp.f`):
+/// dP_c/dεs \[Pa\] of [`critical_pressure`] (docs/model.md §2.5; MFIX `calc_k_cp.f`):
 /// Fr [2(εs − εs,min)/(εs,max − εs)^5 + 5(εs − εs,min)²/(εs,max − εs)^6] up to εs,max − δ,
 /// the constant P_c' beyond, 0 at or below εs,min.
 #[inline]
@@ -244,9 +244,9 @@ pub fn dcritical_pressure_deps(eps_s: f64, p: &FrictionParams) -> f64 {
     }
 }
 
-/// Strain scale ζ = √(θ/d² + S:S) [1/s] (MFIX 21.3.2 SAVAGE = 2, paper Eq. 9; model-spec
+/// Strain scale ζ = √(θ/d² + S:S) [1/s] (MFIX 21.3.2 SAVAGE = 2, paper Eq. 9; docs/model.md
 /// §2.4.2 step 1), S:S = tr(D²) − (tr D)²/3 ≥ 0 from the cell-centred solids strain rate.
-/// θ is floored at [`THETA_SMALL`] (MFIX never has θ below it, model-spec §1.3), so ζ > 0
+/// θ is floored at [`THETA_SMALL`] (MFIX never has θ below it, docs/model.md §1.3), so ζ > 0
 /// and μ_fric = m_f/(2ζ) stays finite when there is neither strain nor fluctuation; S:S is
 /// floored at 0, removing only round-off of tr(D²) − (tr D)²/3.
 #[inline]
@@ -255,8 +255,8 @@ pub fn strain_scale(theta: f64, d_p: f64, s_ddot_s: f64) -> f64 {
 }
 
 /// Exponent n [-]: √3/(2 sinφ) if tr D ≥ 0 (dilatation), N_Pf = 1.03 if tr D < 0
-/// (compaction) (model-spec §2.4.2 step 3; paper Eq. 10 text says 0 in compaction: MFIX
-/// uses 1.03, model-spec §3.10.2). Requires φ < 60° so that n > 1 in dilatation.
+/// (compaction) (docs/model.md §2.4.2 step 3; paper Eq. 10 text says 0 in compaction: MFIX
+/// uses 1.03, docs/model.md §3.10.2). Requires φ < 60° so that n > 1 in dilatation.
 #[inline]
 pub fn princeton_exponent(tr_d: f64, p: &FrictionParams) -> f64 {
     if tr_d >= 0.0 {
@@ -266,7 +266,7 @@ pub fn princeton_exponent(tr_d: f64, p: &FrictionParams) -> f64 {
     }
 }
 
-/// Uncapped P_f/P_c [-] (paper Eq. 9 with exponent n − 1, model-spec §2.4.2 step 4):
+/// Uncapped P_f/P_c [-] (paper Eq. 9 with exponent n − 1, docs/model.md §2.4.2 step 4):
 /// r = tr D/(n √2 sinφ ζ); 0 if r > 1; 1 if tr D = 0 exactly; else (1 − r)^{n−1}.
 #[inline]
 pub fn pf_over_pc_uncapped(tr_d: f64, zeta: f64, n: f64, sin_phi: f64) -> f64 {
@@ -281,14 +281,14 @@ pub fn pf_over_pc_uncapped(tr_d: f64, zeta: f64, n: f64, sin_phi: f64) -> f64 {
 }
 
 /// Upper bound of P_f/P_c, (n/(n − 1))^{n−1} [-] (≈ 1.112 for n = 1.03), beyond which
-/// m_f would be negative (model-spec §2.4.2 step 5).
+/// m_f would be negative (docs/model.md §2.4.2 step 5).
 #[inline]
 pub fn pf_over_pc_max(n: f64) -> f64 {
     (n / (n - 1.0)).powf(n - 1.0)
 }
 
 /// Princeton frictional stress at one state (paper Eqs. 9–10 as MFIX computes them,
-/// model-spec §2.4.2; MFIX FRICTION_PRINCETON with SAVAGE = 2), zero for εs ≤ εs,min:
+/// docs/model.md §2.4.2; MFIX FRICTION_PRINCETON with SAVAGE = 2), zero for εs ≤ εs,min:
 /// ζ = √(θ/d² + S:S); P_f = P_c · (P_f/P_c);
 /// m_f = √2 P_f sinφ [n − (n − 1)(P_f/P_c)^{1/(n−1)}]; if P_f/P_c > (n/(n−1))^{n−1} it is set
 /// to that bound and m_f = 0; μ_fric = m_f/(2ζ) [Pa s] (no upper cap),
@@ -331,7 +331,7 @@ pub fn princeton(
     }
 }
 
-/// K_cp = dP_s/dεs \[Pa\] of the Princeton model (model-spec §2.5; MFIX `calc_k_cp.f`,
+/// K_cp = dP_s/dεs \[Pa\] of the Princeton model (docs/model.md §2.5; MFIX `calc_k_cp.f`,
 /// SAVAGE = 2): (P_f/P_c) · dP_c/dεs for εs > εs,min, else 0. Kinetic pressure is left out
 /// (as in MFIX). P_f/P_c as in [`princeton`], except that its cap always uses N_Pf and is
 /// applied only when tr D ≠ 0 and r ≤ 1 (MFIX code detail).
@@ -369,7 +369,7 @@ pub fn k_cp_from_princeton(eps_s: f64, stress: &FrictionalStress, p: &FrictionPa
     stress.pf_over_pc * dcritical_pressure_deps(eps_s, p)
 }
 
-/// Choice of frictional model (MFIX `FRICTION_MODEL`, model-spec §2.4).
+/// Choice of frictional model (MFIX `FRICTION_MODEL`, docs/model.md §2.4).
 /// Default: Princeton (`SRIVASTAVA`), the paper's model (MFIX's own default is Schaeffer).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -384,7 +384,7 @@ pub enum FrictionModel {
 }
 
 impl FrictionModel {
-    /// Frictional stresses of the chosen model (model-spec §2.4); all zero for `None`.
+    /// Frictional stresses of the chosen model (docs/model.md §2.4); all zero for `None`.
     #[inline]
     pub fn stress(
         self,
@@ -402,7 +402,7 @@ impl FrictionModel {
         }
     }
 
-    /// K_cp = dP_s/dεs \[Pa\] for the solids volume-fraction correction (model-spec §2.5;
+    /// K_cp = dP_s/dεs \[Pa\] for the solids volume-fraction correction (docs/model.md §2.5;
     /// MFIX `calc_k_cp.f`): Princeton [`k_cp_princeton`], Schaeffer [`dp_star_deps`],
     /// `None` 0 (no close-packed pressure). The solver sets K_cp = 0 in wall cells.
     #[inline]

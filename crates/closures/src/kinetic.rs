@@ -1,10 +1,10 @@
 //! Kinetic theory of Lun et al. (1984) as MFIX codes it (`KT_TYPE = 'LUN_1984'`, K. Agrawal's
 //! implementation with the interstitial-gas correction and the (2+α)/3 factor):
-//! model-spec §2.2, MFIX 21.3.2 `model/calc_mu_s.f` GT_PDE_LUN (identical in 2016-1);
-//! collisional dissipation from `model/source_granular_energy.f` (model-spec §1.3).
+//! docs/model.md §2.2, MFIX 21.3.2 `model/calc_mu_s.f` GT_PDE_LUN (identical in 2016-1);
+//! collisional dissipation from `model/source_granular_energy.f` (docs/model.md §1.3).
 //!
 //! One solids phase: ξ = εs g0 stands for MFIX's Σ_k ε_k g0_mk. η = (1 + e)/2.
-//! MFIX stress convention τ = −P I + 2μ D + λ (tr D) I (model-spec §0.3).
+//! MFIX stress convention τ = −P I + 2μ D + λ (tr D) I (docs/model.md §0.3).
 
 use crate::cell::Particles;
 use crate::guards::SMALL_NUMBER;
@@ -13,7 +13,7 @@ use serde::Serialize;
 use std::f64::consts::PI;
 
 /// α = `ALPHA` = 1.6 [-] in the adjustable factor (2 + α)/3 of the shear viscosity
-/// (MFIX `constant_mod.f` parameter, model-spec §2.2 and §5; α = 1 recovers Lun et al.).
+/// (MFIX `constant_mod.f` parameter, docs/model.md §2.2 and §5; α = 1 recovers Lun et al.).
 pub const LUN_ALPHA: f64 = 1.6;
 
 /// The local solids state the kinetic-theory closures need (style A6.2).
@@ -29,13 +29,13 @@ pub struct SolidsState {
     pub d_p: f64,
     /// particle–particle restitution coefficient e [-] (`C_E`)
     pub restitution: f64,
-    /// radial distribution at contact g0(εs) [-] (model-spec §2.1)
+    /// radial distribution at contact g0(εs) [-] (docs/model.md §2.1)
     pub g0: f64,
 }
 
 impl SolidsState {
     /// State at (εs, θ) for the given particles, with g0 from the chosen radial
-    /// distribution (model-spec §2.1).
+    /// distribution (docs/model.md §2.1).
     #[inline]
     pub fn new(eps_s: f64, theta: f64, particles: &Particles, radial: RadialDistribution) -> Self {
         Self {
@@ -48,13 +48,13 @@ impl SolidsState {
         }
     }
 
-    /// η = (1 + e)/2 [-] (model-spec §0.3; MFIX `check_solids_continuum.f`).
+    /// η = (1 + e)/2 [-] (docs/model.md §0.3; MFIX `check_solids_continuum.f`).
     #[inline]
     pub fn eta(&self) -> f64 {
         0.5 * (1.0 + self.restitution)
     }
 
-    /// ξ = εs g0 [-], MFIX's Σ_k ε_k g0 for one solids phase (model-spec §2.2).
+    /// ξ = εs g0 [-], MFIX's Σ_k ε_k g0 for one solids phase (docs/model.md §2.2).
     #[inline]
     pub fn xi(&self) -> f64 {
         self.eps_s * self.g0
@@ -62,13 +62,13 @@ impl SolidsState {
 }
 
 /// How the interstitial gas modifies the dilute viscosity and conductivity μ*, κ*
-/// (MFIX `SWITCH = 1`; model-spec §2.2).
+/// (MFIX `SWITCH = 1`; docs/model.md §2.2).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum GasCoupling {
     /// No gas (ρ_g = 0): μ* = μ₀, κ* = κ₀.
     Dry,
     /// Gas present, with the drag coefficient per unit solids fraction
-    /// DgA = F_gs/εs [kg m⁻³ s⁻¹] (Model A, model-spec §2.6). Below `DIL_EP_S` MFIX passes the
+    /// DgA = F_gs/εs [kg m⁻³ s⁻¹] (Model A, docs/model.md §2.6). Below `DIL_EP_S` MFIX passes the
     /// single-particle drag instead ([`crate::drag::dga_single_particle`]); at walls the
     /// Wen–Yu estimate ([`crate::drag::dga_wall_wen_yu`]).
     Drag(f64),
@@ -76,7 +76,7 @@ pub enum GasCoupling {
 
 impl GasCoupling {
     /// Gas coupling from the drag coefficient F_gs [kg m⁻³ s⁻¹] of a cell with solids
-    /// fraction εs > 0: DgA = F_gs/εs (model-spec §2.2 table, μ* row).
+    /// fraction εs > 0: DgA = F_gs/εs (docs/model.md §2.2 table, μ* row).
     #[inline]
     pub fn from_f_gs(f_gs: f64, eps_s: f64) -> Self {
         Self::Drag(f_gs / eps_s)
@@ -84,19 +84,19 @@ impl GasCoupling {
 }
 
 /// Kinetic solids pressure P_kin = ρs εs θ (1 + 4 η ξ) \[Pa\]
-/// (paper Eq. 6; model-spec §2.2).
+/// (paper Eq. 6; docs/model.md §2.2).
 #[inline]
 pub fn p_kin(s: &SolidsState) -> f64 {
     s.rho_s * s.eps_s * s.theta * (1.0 + 4.0 * s.eta() * s.xi())
 }
 
-/// Dilute viscosity μ₀ = (5/96) ρs d √(π θ) [Pa s] (model-spec §2.2).
+/// Dilute viscosity μ₀ = (5/96) ρs d √(π θ) [Pa s] (docs/model.md §2.2).
 #[inline]
 pub fn mu_dilute(s: &SolidsState) -> f64 {
     5.0 / 96.0 * s.rho_s * s.d_p * (PI * s.theta).sqrt()
 }
 
-/// Bulk viscosity μ_b = (256/(5π)) μ₀ εs ξ [Pa s] (paper Eq. 5 "μ_b"; model-spec §2.2).
+/// Bulk viscosity μ_b = (256/(5π)) μ₀ εs ξ [Pa s] (paper Eq. 5 "μ_b"; docs/model.md §2.2).
 #[inline]
 pub fn mu_bulk(s: &SolidsState) -> f64 {
     256.0 / (5.0 * PI) * mu_dilute(s) * s.eps_s * s.xi()
@@ -119,7 +119,7 @@ fn gas_modified(s: &SolidsState, dilute: f64, drag_factor: f64, gas: GasCoupling
     }
 }
 
-/// Gas-modified dilute viscosity [Pa s] (model-spec §2.2; MFIX GT_PDE_LUN):
+/// Gas-modified dilute viscosity [Pa s] (docs/model.md §2.2; MFIX GT_PDE_LUN):
 /// μ* = ρs εs g0 θ μ₀ / (ρs ξ θ + 2 F_gs μ₀/(ρs εs)) with F_gs/εs = DgA;
 /// μ* = μ₀ if dry (ρ_g = 0); μ* = 0 if θ < `SMALL_NUMBER` (1e-15).
 #[inline]
@@ -127,7 +127,7 @@ pub fn mu_star(s: &SolidsState, gas: GasCoupling) -> f64 {
     gas_modified(s, mu_dilute(s), 2.0, gas)
 }
 
-/// Kinetic shear viscosity [Pa s] (paper Eq. 5 "μ^k"; model-spec §2.2):
+/// Kinetic shear viscosity [Pa s] (paper Eq. 5 "μ^k"; docs/model.md §2.2):
 /// μ_kin = ((2+α)/3) [ μ*/(η(2−η) g0) · (1 + (8/5)ηξ)(1 + (8/5)η(3η−2)ξ) + (3/5) η μ_b ],
 /// α = [`LUN_ALPHA`].
 #[inline]
@@ -141,7 +141,7 @@ pub fn mu_kin(s: &SolidsState, mu_star: f64) -> f64 {
             + 3.0 / 5.0 * eta * mu_bulk(s))
 }
 
-/// Kinetic second viscosity λ_kin = η μ_b − (2/3) μ_kin [Pa s] (model-spec §2.2; the
+/// Kinetic second viscosity λ_kin = η μ_b − (2/3) μ_kin [Pa s] (docs/model.md §2.2; the
 /// paper's (−P + ημ_b ∇·v) I term of Eq. 5 in MFIX's τ = … + λ (tr D) I convention).
 #[inline]
 pub fn lambda_kin(s: &SolidsState, mu_kin: f64) -> f64 {
@@ -149,14 +149,14 @@ pub fn lambda_kin(s: &SolidsState, mu_kin: f64) -> f64 {
 }
 
 /// Dilute granular conductivity κ₀ = 75 ρs d √(π θ) / (48 η (41 − 33η)) [kg m⁻¹ s⁻¹]
-/// (model-spec §2.2).
+/// (docs/model.md §2.2).
 #[inline]
 pub fn kappa_dilute(s: &SolidsState) -> f64 {
     let eta = s.eta();
     75.0 * s.rho_s * s.d_p * (PI * s.theta).sqrt() / (48.0 * eta * (41.0 - 33.0 * eta))
 }
 
-/// Gas-modified dilute conductivity [kg m⁻¹ s⁻¹] (model-spec §2.2; MFIX GT_PDE_LUN):
+/// Gas-modified dilute conductivity [kg m⁻¹ s⁻¹] (docs/model.md §2.2; MFIX GT_PDE_LUN):
 /// κ* = ρs εs g0 θ κ₀ / (ρs ξ θ + (6/5) F_gs κ₀/(ρs εs)) with F_gs/εs = DgA;
 /// κ* = κ₀ if dry; κ* = 0 if θ < `SMALL_NUMBER`.
 #[inline]
@@ -164,7 +164,7 @@ pub fn kappa_star(s: &SolidsState, gas: GasCoupling) -> f64 {
     gas_modified(s, kappa_dilute(s), 6.0 / 5.0, gas)
 }
 
-/// Granular conductivity κ_s [kg m⁻¹ s⁻¹] (model-spec §2.2, §1.3):
+/// Granular conductivity κ_s [kg m⁻¹ s⁻¹] (docs/model.md §2.2, §1.3):
 /// κ_s = (κ*/g0) [ (1 + (12/5)ηξ)(1 + (12/5)η²(4η−3)ξ) + (64/(25π))(41 − 33η) η² ξ² ].
 #[inline]
 pub fn kappa_kin(s: &SolidsState, kappa_star: f64) -> f64 {
@@ -176,7 +176,7 @@ pub fn kappa_kin(s: &SolidsState, kappa_star: f64) -> f64 {
 }
 
 /// Collisional dissipation γ = (48/√π) η(1−η) ρs εs ξ θ^{3/2}/d [W m⁻³]
-/// (= 12(1−e²) ρs εs² g0 θ^{3/2}/(d√π)); model-spec §1.3 and §2.2, MFIX
+/// (= 12(1−e²) ρs εs² g0 θ^{3/2}/(d√π)); docs/model.md §1.3 and §2.2, MFIX
 /// `source_granular_energy.f` (applied implicitly as γ/θ · θ).
 #[inline]
 pub fn dissipation(s: &SolidsState) -> f64 {
@@ -185,7 +185,7 @@ pub fn dissipation(s: &SolidsState) -> f64 {
         / s.d_p
 }
 
-/// Every kinetic-theory value at one state (model-spec §2.2). These are the paper's
+/// Every kinetic-theory value at one state (docs/model.md §2.2). These are the paper's
 /// "P^k" and "μ^k" (Table 2) and the KT parts that enter the granular-energy production.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
 pub struct KineticStress {
@@ -211,7 +211,7 @@ pub struct KineticStress {
     pub dissipation: f64,
 }
 
-/// All Lun (1984) kinetic-theory closures at one state (model-spec §2.2, MFIX GT_PDE_LUN).
+/// All Lun (1984) kinetic-theory closures at one state (docs/model.md §2.2, MFIX GT_PDE_LUN).
 #[inline]
 pub fn lun_1984(s: &SolidsState, gas: GasCoupling) -> KineticStress {
     let mu_star = mu_star(s, gas);

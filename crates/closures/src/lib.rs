@@ -1,5 +1,5 @@
 //! runout-closures: the constitutive closures of the two-fluid model exactly as MFIX 21.3.2
-//! computes them for the paper's cases (`shared/docs/model-spec.md` §2; paper Eqs. 6–10).
+//! computes them for the paper's cases (`docs/model.md` §2; paper Eqs. 6–10).
 //!
 //! Pure, allocation-free `f64` functions of a small state, each citing its equation:
 //! - [`radial`]: g0 (Carnahan–Starling as MFIX codes it, Ma–Ahmadi) and dg0/dεs (§2.1);
@@ -13,7 +13,7 @@
 //! - [`guards`]: the small-value guards of §2.7;
 //! - [`cell`]: the full closure set of one cell state, [`evaluate`].
 //!
-//! Where the paper's printed equations differ from MFIX the code follows MFIX (model-spec
+//! Where the paper's printed equations differ from MFIX the code follows MFIX (docs/model.md
 //! §3.10): stresses are summed, not switched (P-Eq. 5); the P-Eq. 9 exponent is n − 1; the
 //! compaction exponent is 1.03, not 0; there is no A(εg* − εg)^10 branch with Princeton.
 //!
@@ -23,9 +23,9 @@
 //! let params = ClosureParams::default();
 //! let state = CellState { eps_s: 0.6, theta: 0.01, slip: 0.3, tr_d: 0.0, s_ddot_s: 100.0 };
 //! let set = evaluate(&state, &params);
-//! // model-spec §2.4.2 check value: P_f = 1600 Pa at εs = 0.6, tr D = 0
+//! // docs/model.md §2.4.2 check value: P_f = 1600 Pa at εs = 0.6, tr D = 0
 //! assert!((set.friction.p_fric - 1600.0).abs() < 1e-6);
-//! // stresses are summed (model-spec §2.3)
+//! // stresses are summed (docs/model.md §2.3)
 //! assert_eq!(set.stress.mu_s, set.kinetic.mu_kin + set.friction.mu_fric);
 //! ```
 //!

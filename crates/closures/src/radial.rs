@@ -1,26 +1,26 @@
-//! Radial distribution function at contact g0 (model-spec §2.1; MFIX `model/rdf_mod.f`).
+//! Radial distribution function at contact g0 (docs/model.md §2.1; MFIX `model/rdf_mod.f`).
 
 use serde::{Deserialize, Serialize};
 
 /// Ma–Ahmadi packing fraction ε_s,mx = 0.64356 [-] in the denominator of g0
-/// (Ma & Ahmadi 1986; MFIX `rdf_mod.f`, model-spec §2.1).
+/// (Ma & Ahmadi 1986; MFIX `rdf_mod.f`, docs/model.md §2.1).
 pub const MA_AHMADI_EPS_PACKING: f64 = 0.64356;
 
 /// Ma–Ahmadi clip: εs is limited to ≤ 0.643 [-] (~99.9 % of ε_s,mx) before evaluating g0
-/// (MFIX `rdf_mod.f`, model-spec §2.1).
+/// (MFIX `rdf_mod.f`, docs/model.md §2.1).
 pub const MA_AHMADI_EPS_LIMIT: f64 = 0.643;
 
-/// Ma–Ahmadi numerator coefficients 1 + 2.5ε + 4.5094ε² + 4.515439ε³ (model-spec §2.1).
+/// Ma–Ahmadi numerator coefficients 1 + 2.5ε + 4.5094ε² + 4.515439ε³ (docs/model.md §2.1).
 const MA_AHMADI_POLY: [f64; 4] = [1.0, 2.5, 4.5094, 4.515439];
 
-/// Ma–Ahmadi exponent 0.678021 of the denominator (model-spec §2.1).
+/// Ma–Ahmadi exponent 0.678021 of the denominator (docs/model.md §2.1).
 const MA_AHMADI_EXPONENT: f64 = 0.678021;
 
 /// Carnahan–Starling g0 as MFIX codes it for one solids phase,
 /// g0 = (1 − εs/2)/(1 − εs)³ [-] (= 1/(1−εs) + 3εs/(2(1−εs)²) + εs²/(2(1−εs)³)).
 ///
 /// No cap and no dependence on εs,max: finite at packing (g0(0.65) = 15.74), singular only at
-/// εs = 1. Ref: Carnahan & Starling (1969); paper Eq. 6 (g0); model-spec §2.1
+/// εs = 1. Ref: Carnahan & Starling (1969); paper Eq. 6 (g0); docs/model.md §2.1
 /// (MFIX 21.3.2 `rdf_mod.f` G_0, identical in 2016-1). Valid for 0 ≤ εs < 1.
 #[inline]
 pub fn g0_carnahan_starling(eps_s: f64) -> f64 {
@@ -29,7 +29,7 @@ pub fn g0_carnahan_starling(eps_s: f64) -> f64 {
 }
 
 /// dg0/dεs of [`g0_carnahan_starling`]: (2.5 − εs)/(1 − εs)⁴ [-]
-/// (model-spec §2.1; MFIX `rdf_mod.f` DG_0DNU). Valid for 0 ≤ εs < 1.
+/// (docs/model.md §2.1; MFIX `rdf_mod.f` DG_0DNU). Valid for 0 ≤ εs < 1.
 #[inline]
 pub fn dg0_deps_carnahan_starling(eps_s: f64) -> f64 {
     let eps_g = 1.0 - eps_s;
@@ -38,7 +38,7 @@ pub fn dg0_deps_carnahan_starling(eps_s: f64) -> f64 {
 }
 
 /// Ma–Ahmadi g0 = (1 + 2.5ε + 4.5094ε² + 4.515439ε³)/(1 − (ε/0.64356)³)^0.678021 [-],
-/// with ε = min(εs, 0.643) (Ma & Ahmadi 1986; model-spec §2.1; MFIX `rdf_mod.f`).
+/// with ε = min(εs, 0.643) (Ma & Ahmadi 1986; docs/model.md §2.1; MFIX `rdf_mod.f`).
 /// Constant above [`MA_AHMADI_EPS_LIMIT`].
 #[inline]
 pub fn g0_ma_ahmadi(eps_s: f64) -> f64 {
@@ -52,7 +52,7 @@ pub fn g0_ma_ahmadi(eps_s: f64) -> f64 {
 /// dg0/dεs of [`g0_ma_ahmadi`] [-]: (N' + N · 3a ε²/(ε_mx³ − ε³)) / (1 − (ε/ε_mx)³)^a with
 /// N the numerator polynomial and a = 0.678021, for εs ≤ 0.643; 0 above (g0 is clipped there).
 ///
-/// Model-spec §2.1. Differs from MFIX's DG_0DNU above 0.643, which mixes the clipped and the
+/// docs/model.md §2.1. Differs from MFIX's DG_0DNU above 0.643, which mixes the clipped and the
 /// raw εs (and is NaN beyond 0.64356); MFIX uses DG_0DNU only in the disabled Dufour term and
 /// the SAVAGE = 1 K_cp, neither of which the paper's cases evaluate.
 #[inline]
@@ -70,8 +70,8 @@ pub fn dg0_deps_ma_ahmadi(eps_s: f64) -> f64 {
     (dnumerator + numerator * 3.0 * MA_AHMADI_EXPONENT * x * x / (packing3 - x3)) / denominator
 }
 
-/// Choice of radial distribution function (MFIX keyword `RDF_TYPE`, model-spec §2.1).
-/// Default: Carnahan–Starling (what the MFIX GUI sets for one solids phase, model-spec §5).
+/// Choice of radial distribution function (MFIX keyword `RDF_TYPE`, docs/model.md §2.1).
+/// Default: Carnahan–Starling (what the MFIX GUI sets for one solids phase, docs/model.md §5).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub enum RadialDistribution {
@@ -83,7 +83,7 @@ pub enum RadialDistribution {
 }
 
 impl RadialDistribution {
-    /// g0(εs) [-] of the chosen model (model-spec §2.1).
+    /// g0(εs) [-] of the chosen model (docs/model.md §2.1).
     #[inline]
     pub fn g0(self, eps_s: f64) -> f64 {
         match self {
@@ -92,7 +92,7 @@ impl RadialDistribution {
         }
     }
 
-    /// dg0/dεs [-] of the chosen model (model-spec §2.1).
+    /// dg0/dεs [-] of the chosen model (docs/model.md §2.1).
     #[inline]
     pub fn dg0_deps(self, eps_s: f64) -> f64 {
         match self {

@@ -1,7 +1,7 @@
-//! Solids stress assembly (model-spec §2.3; MFIX `calc_mu_s.f` CALC_DEFAULT_MUS).
+//! Solids stress assembly (docs/model.md §2.3; MFIX `calc_mu_s.f` CALC_DEFAULT_MUS).
 //!
 //! Additive, not a switch (paper Eq. 5 shows a switch at εg*; MFIX with a granular-energy
-//! PDE sums the parts, model-spec §3.10.1): μ_s = μ_kin + μ_fric, λ_s = λ_kin + λ_fric,
+//! PDE sums the parts, docs/model.md §3.10.1): μ_s = μ_kin + μ_fric, λ_s = λ_kin + λ_fric,
 //! P_s = P_kin + P_fric. The Schaeffer P* is kept apart: it enters the solids momentum as its
 //! own gradient −∇P*.
 
@@ -9,7 +9,7 @@ use crate::friction::FrictionalStress;
 use crate::kinetic::KineticStress;
 use serde::Serialize;
 
-/// Total solids stress coefficients of one cell (model-spec §2.3), MFIX convention
+/// Total solids stress coefficients of one cell (docs/model.md §2.3), MFIX convention
 /// τ_s = −P_s I + 2 μ_s D + λ_s (tr D) I.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
 pub struct SolidsStress {
@@ -23,7 +23,7 @@ pub struct SolidsStress {
     pub p_star: f64,
 }
 
-/// Sum the kinetic and frictional parts (model-spec §2.3): P_s = P_kin + P_fric,
+/// Sum the kinetic and frictional parts (docs/model.md §2.3): P_s = P_kin + P_fric,
 /// μ_s = μ_kin + μ_fric, λ_s = λ_kin + λ_fric; P* passed through.
 #[inline]
 pub fn assemble(kinetic: &KineticStress, friction: &FrictionalStress) -> SolidsStress {

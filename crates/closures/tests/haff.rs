@@ -1,7 +1,7 @@
 //! Homogeneous cooling (Haff's law) with the crate's collisional dissipation (issue 3 (c)).
 //!
-//! A uniform granular gas at rest, without gas, obeys (model-spec §1.3)
-//! (3/2) ρs εs dθ/dt = −γ(θ), with γ = K θ^{3/2} and (model-spec §2.2, §1.3)
+//! A uniform granular gas at rest, without gas, obeys (docs/model.md §1.3)
+//! (3/2) ρs εs dθ/dt = −γ(θ), with γ = K θ^{3/2} and (docs/model.md §2.2, §1.3)
 //! K = (48/√π) η(1−η) ρs εs² g0 / d = 12 (1 − e²) ρs εs² g0/(√π d).
 //! Try θ = θ0/(1 + t/t0)²: dθ/dt = −2θ0/(t0 (1 + t/t0)³) = −(2/(t0 √θ0)) θ^{3/2}, so
 //! (3/2) ρs εs · 2/(t0 √θ0) = K, i.e. **t0 = 3 ρs εs/(K √θ0)**
@@ -45,7 +45,7 @@ fn state(case: &Case, theta: f64) -> SolidsState {
     }
 }
 
-/// K of γ = K θ^{3/2}, second form of model-spec §1.3 (independent of the crate's γ).
+/// K of γ = K θ^{3/2}, second form of docs/model.md §1.3 (independent of the crate's γ).
 fn k_haff(case: &Case) -> f64 {
     let g0 = g0_carnahan_starling(case.eps_s);
     12.0 * (1.0 - case.restitution.powi(2)) * RHO_S * case.eps_s.powi(2) * g0 / (PI.sqrt() * D_P)

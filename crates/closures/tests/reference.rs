@@ -1,6 +1,6 @@
 //! Closures against independently computed reference values.
 //!
-//! `reference/generate.py` implements model-spec §1.3 and §2 directly from the spec text in
+//! `reference/generate.py` implements docs/model.md §1.3 and §2 directly from the spec text in
 //! plain Python and writes `reference/values.json`; every closure is compared here at a
 //! relative tolerance of 1e-12, at dilute (εs = 0.01), intermediate, dense (εs = 0.6) and
 //! near-packing (0.645, 0.649) states. The model spec's own printed check values (§2.2,
@@ -341,7 +341,7 @@ fn energy_sources_match_reference() {
 /// (name, value as printed in the spec)
 type Printed = &'static [(&'static str, &'static str)];
 
-/// Model-spec §2.2 check values (dry, ρs = 2000, d = 0.5 mm, e = 0.9), to printed precision.
+/// docs/model.md §2.2 check values (dry, ρs = 2000, d = 0.5 mm, e = 0.9), to printed precision.
 #[test]
 fn spec_check_values_kinetic() {
     let printed: [(f64, f64, Printed); 2] = [
@@ -397,7 +397,7 @@ fn spec_check_values_kinetic() {
     }
 }
 
-/// Model-spec §2.4.2 check values (φ = 35°, d = 0.5 mm, θ = 0.01, S:S = 100 s⁻²).
+/// docs/model.md §2.4.2 check values (φ = 35°, d = 0.5 mm, θ = 0.01, S:S = 100 s⁻²).
 #[test]
 fn spec_check_values_princeton() {
     let p = FrictionParams::default();

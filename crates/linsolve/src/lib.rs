@@ -1,6 +1,6 @@
 //! runout-linsolve: sparse linear solvers for the 5-point systems of a structured
 //! (stretched, staggered) 2-D grid — pressure correction, solids volume-fraction
-//! correction, momentum and granular energy (model-spec §4.6–4.8, §4.13).
+//! correction, momentum and granular energy (docs/model.md §4.6–4.8, §4.13).
 //!
 //! # Usage
 //! 1. Describe the block once with a [`Pattern`] (`nx × ny`, cells optionally
@@ -208,7 +208,7 @@ pub enum LinearSolverKind {
 }
 
 /// Defaults per equation, measured in docs/performance.md (table of `linsolve_table`).
-/// Tolerances and caps follow MFIX (model-spec §4.13: LEQ_TOL = 1e-4; LEQ_IT = 20 for P'
+/// Tolerances and caps follow MFIX (docs/model.md §4.13: LEQ_TOL = 1e-4; LEQ_IT = 20 for P'
 /// and ε', 5 for U/V, 15 for θ); our rtol is ‖b − A x‖/‖b‖, MFIX's ‖r‖/‖r₀‖, the same
 /// for the zero initial guess of the correction equations.
 impl LinearSolverKind {

@@ -576,7 +576,7 @@ struct CgWork {
 
 /// Flexible CG (FCG(1), Notay 2000) preconditioned by the aggregation multigrid
 /// K-cycle (or V-cycle). For symmetric positive definite matrices — the pressure
-/// correction (model-spec §4.6); a non-SPD matrix is detected by pᵀAp ≤ 0 and reported.
+/// correction (docs/model.md §4.6); a non-SPD matrix is detected by pᵀAp ≤ 0 and reported.
 pub struct MultigridCg {
     params: MultigridParams,
     work: Option<CgWork>,

@@ -17,7 +17,7 @@ pub enum Precond {
     Ilu0,
     /// Line (block-Jacobi) preconditioner: the tridiagonal system along every y line
     /// (wall-normal, the stretched direction) solved exactly by the Thomas algorithm —
-    /// MFIX's `LEQ_PC = 'LINE'` idea (model-spec §4.13) without the red/black sweeps.
+    /// MFIX's `LEQ_PC = 'LINE'` idea (docs/model.md §4.13) without the red/black sweeps.
     LineY,
     /// One symmetric V-cycle of the aggregation multigrid of [`crate::MultigridCg`]
     /// (a fixed linear operator, as BiCGSTAB's theory assumes).

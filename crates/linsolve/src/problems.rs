@@ -136,9 +136,9 @@ pub fn manufactured_solution(g: &Grid) -> Vec<f64> {
 }
 
 /// Pressure-correction-like SPD system: cell-centred diffusion −∇·(Γ∇p') with a
-/// coefficient Γ varying by a factor 10 (like ρ ε d of model-spec §4.6), Neumann walls on
+/// coefficient Γ varying by a factor 10 (like ρ ε d of docs/model.md §4.6), Neumann walls on
 /// all four sides and the reference cell (nx−1, ny−1) fixed (its value pinned). The
-/// faces use the harmonic mean of Γ (model-spec §4.1). Returns the stencil with b = 0.
+/// faces use the harmonic mean of Γ (docs/model.md §4.1). Returns the stencil with b = 0.
 pub fn pressure_like(g: &Grid) -> Result<Stencil5, LinSolveError> {
     let (nx, ny) = (g.nx(), g.ny());
     let reference = (nx - 1, ny - 1);

@@ -1,7 +1,7 @@
 //! The 5-point structured matrix and its fixed sparsity pattern.
 //!
 //! Cells of an `nx × ny` block are numbered `k = i + nx·j` (x fastest, as MFIX's IJK).
-//! Each row uses MFIX's sign convention (model-spec §4; Patankar 1980 §5.2):
+//! Each row uses MFIX's sign convention (docs/model.md §4; Patankar 1980 §5.2):
 //!
 //! $$ a_P φ_P = a_E φ_E + a_W φ_W + a_N φ_N + a_S φ_S + b, $$
 //!

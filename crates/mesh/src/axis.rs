@@ -3,7 +3,7 @@
 //! MFIX users describe a grid direction as consecutive segments, each with a length and a
 //! cell count plus either an expansion ratio or end widths (keywords `CPX`, `NCX`, `ERX`,
 //! `FIRST_DX`, `LAST_DX`). [`Segment`] covers those forms; [`Axis`] stores the faces as
-//! the truth and caches everything derived from them (model-spec §4.1).
+//! the truth and caches everything derived from them (docs/model.md §4.1).
 
 use serde::{Deserialize, Serialize};
 
@@ -577,9 +577,9 @@ impl Axis {
         let n = faces.len() - 1;
         let widths: Vec<f64> = (0..n).map(|i| faces[i + 1] - faces[i]).collect();
         let centres: Vec<f64> = (0..n).map(|i| 0.5 * (faces[i] + faces[i + 1])).collect();
-        // Centre-to-centre distance across each face (model-spec §4.1, ODX_E); at the two
+        // Centre-to-centre distance across each face (docs/model.md §4.1, ODX_E); at the two
         // domain faces MFIX's ghost cell has the width of the adjacent fluid cell
-        // (model-spec §3.1), so the distance is that cell's width.
+        // (docs/model.md §3.1), so the distance is that cell's width.
         let mut face_spacing = Vec::with_capacity(n + 1);
         face_spacing.push(widths[0]);
         face_spacing.extend((1..n).map(|i| 0.5 * (widths[i - 1] + widths[i])));
@@ -661,7 +661,7 @@ impl Axis {
 
     /// Distance between the centres on either side of face k (k = 0..=len()) [m]:
     /// (Δx_{k−1} + Δx_k)/2 inside, the adjacent cell's width at the two ends (MFIX ghost
-    /// cells have the width of their fluid neighbour, model-spec §3.1).
+    /// cells have the width of their fluid neighbour, docs/model.md §3.1).
     pub fn face_spacing(&self) -> &[f64] {
         &self.face_spacing
     }
@@ -682,7 +682,7 @@ impl Axis {
     }
 
     /// Linear-interpolation weight of cell i at its upper face i+½ (MFIX AVG_X,
-    /// model-spec §4.1): f = w φ_i + (1 − w) φ_{i+1} with w = Δx_{i+1}/(Δx_i + Δx_{i+1}).
+    /// docs/model.md §4.1): f = w φ_i + (1 − w) φ_{i+1} with w = Δx_{i+1}/(Δx_i + Δx_{i+1}).
     /// Valid for i + 1 < len().
     pub fn interpolation_weight(&self, i: usize) -> f64 {
         self.widths[i + 1] / (self.widths[i] + self.widths[i + 1])

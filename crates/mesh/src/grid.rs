@@ -1,4 +1,4 @@
-//! The 2-D staggered (MAC) grid of MFIX (model-spec §4.1).
+//! The 2-D staggered (MAC) grid of MFIX (docs/model.md §4.1).
 //!
 //! Scalars (ε, P, θ) live at cell centres (i, j); u at east faces (i+½, j); v at north
 //! faces (i, j+½). x runs down the channel, y is wall-normal, the floor is y = y0.
@@ -29,7 +29,7 @@ impl Side {
     pub const ALL: [Side; 4] = [Side::West, Side::East, Side::South, Side::North];
 
     /// Unit normal pointing out of the domain (from the fluid into the wall, MFIX's
-    /// convention for Robin conditions, model-spec §0.3).
+    /// convention for Robin conditions, docs/model.md §0.3).
     pub fn outward_normal(self) -> (f64, f64) {
         match self {
             Side::West => (-1.0, 0.0),
@@ -241,7 +241,7 @@ impl Grid {
     }
 
     /// Volume per unit depth of the u momentum cell at x-face i (it spans centre i−1 to
-    /// centre i, ghost widths at the ends, model-spec §4.1) [m²].
+    /// centre i, ghost widths at the ends, docs/model.md §4.1) [m²].
     pub fn u_cell_volume(&self, i: usize, j: usize) -> f64 {
         self.x.face_spacing()[i] * self.y.widths()[j]
     }
@@ -274,7 +274,7 @@ impl Grid {
 
     /// Size of the face of a boundary cell that lies on `side` (per unit depth) [m], and the
     /// distance from that cell's centre to its ghost neighbour's centre (the cell's own
-    /// width, model-spec §3.1) [m].
+    /// width, docs/model.md §3.1) [m].
     pub fn boundary_face_geometry(&self, side: Side, i: usize, j: usize) -> (f64, f64) {
         match side {
             Side::West | Side::East => (self.y.widths()[j], self.x.widths()[i]),

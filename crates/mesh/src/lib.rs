@@ -3,7 +3,7 @@
 //! A direction is described the way MFIX users do it, as consecutive [`Segment`]s
 //! (length + cell count + growth ratio, or length + end widths); an [`Axis`] stores its
 //! faces and caches centres, widths and centre-to-centre distances; a [`Grid`] pairs two
-//! axes into the staggered (MAC) grid of model-spec §4.1: scalars at cell centres, u on
+//! axes into the staggered (MAC) grid of docs/model.md §4.1: scalars at cell centres, u on
 //! east faces, v on north faces.
 #![deny(missing_docs)]
 

@@ -4,9 +4,9 @@
 //!
 //! Coordinates: x along the slope (downhill), y normal to the floor (floor at y = 0, a lid at
 //! y = H); gravity g = (g sin α, −g cos α). Fully developed: ∂/∂x = 0, v_s = 0. Dry: ρ_g = 0
-//! (no gas phase, no drag, μ* = μ₀, κ* = κ₀; model-spec §2.2). Unknowns per cell: εs, u_s, θ.
+//! (no gas phase, no drag, μ* = μ₀, κ* = κ₀; docs/model.md §2.2). Unknowns per cell: εs, u_s, θ.
 //!
-//! Equations (model-spec §1.2–1.3 reduced to 1-D):
+//! Equations (docs/model.md §1.2–1.3 reduced to 1-D):
 //! - y-momentum: d(P_s + P*)/dy = −εs ρs g cos α, with P_s = P_kin + P_fric (§2.3);
 //! - x-momentum: d/dy(μ_s du/dy) + εs ρs g sin α = 0, μ_s = μ_kin + μ_fric (§2.3);
 //! - granular energy: d/dy(κ_s dθ/dy) + Π − γ = 0 with Π = −P_kin tr D + 2μ_kin tr(D²) +
@@ -17,21 +17,21 @@
 //!   solver conserves on a periodic strip.
 //!
 //! Boundaries: the floor takes any [`SolidsWallModel`] (Johnson–Jackson in issue 7), applied
-//! through [`RobinFace::implicit_parts`] exactly as the 2-D solver does (model-spec §3.2), with
-//! the near-wall states gathered as model-spec §3.5–3.6 prescribe; the lid at y = H is a
+//! through [`RobinFace::implicit_parts`] exactly as the 2-D solver does (docs/model.md §3.2), with
+//! the near-wall states gathered as docs/model.md §3.5–3.6 prescribe; the lid at y = H is a
 //! free-slip wall with zero θ flux (MFIX FSW, runout's [`SolidsWallModel::FreeSlip`]). The
 //! lid carries no equation for εs: as in the staggered 2-D solver, y-momentum holds on the
 //! N − 1 interior faces and the holdup closes the system; the lid's load is a diagnostic
 //! ([`ChuteProfile::lid_pressure`]). A strip of height H with holdup M on a periodic 2-D grid
 //! with the same floor and an FSW lid has exactly these equations.
 //!
-//! Discretisation (model-spec §4.1): finite volumes on the cell centres of a stretched
+//! Discretisation (docs/model.md §4.1): finite volumes on the cell centres of a stretched
 //! [`Axis`]; face transport coefficients are the harmonic means MFIX uses (AVG_H with the
 //! AVG_X weights); the cell-centred strain rate is the difference of the two face velocities
 //! over the cell width (face values linearly interpolated, the wall-face value from the
 //! Robin closure); the body force on a y-momentum face is the volume-weighted mean of the two
 //! cells, so Σ faces gives P_s(0) − P_lid = ρs g cos α Σ εs Δy exactly. The floor closure takes
-//! the fluid cell's μ_s, κ_s and εs ([`WallTreatment::FluidCell`], model-spec §3.1, §3.5–3.6),
+//! the fluid cell's μ_s, κ_s and εs ([`WallTreatment::FluidCell`], docs/model.md §3.1, §3.5–3.6),
 //! which is first-order accurate where they vary at the wall; [`WallTreatment::Extrapolated`]
 //! is the second-order variant used to verify the rest of the scheme.
 //!
@@ -70,7 +70,7 @@ const THETA: usize = 2;
 const STENCIL_REACH: usize = 2;
 /// Relative finite-difference step of the Jacobian, √(machine ε).
 const FD_STEP: f64 = 1.4901161193847656e-8;
-/// MFIX's floor in the harmonic mean's denominator (`fun_avg.inc`, model-spec §4.1).
+/// MFIX's floor in the harmonic mean's denominator (`fun_avg.inc`, docs/model.md §4.1).
 const HARMONIC_FLOOR: f64 = 1e-15;
 /// Fraction-to-boundary factor: a Newton step may consume at most this share of the distance
 /// to εs = 1 (interior-point convention; εs > 0 and θ > 0 hold by the logarithmic unknowns).
@@ -95,14 +95,14 @@ const WALL_FIXED_POINT_MAX: usize = 200;
 /// Bisection steps of the hydrostatic initial guess (interval halved to 2⁻⁶⁰ of its length).
 const BISECTION_STEPS: usize = 60;
 /// Upper end of the εs bracket of the initial guess: below 1, where the Carnahan–Starling g0
-/// is singular (model-spec §2.1).
+/// is singular (docs/model.md §2.1).
 const EPS_S_BRACKET_TOP: f64 = 0.99;
 
 /// Where the floor closure takes its bulk values (the transport coefficient Γ on the wall face,
 /// and εs of the near-wall states).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum WallTreatment {
-    /// As MFIX and the 2-D solver: the fluid cell's own values (model-spec §3.1 for Γ, §3.5–3.6
+    /// As MFIX and the 2-D solver: the fluid cell's own values (docs/model.md §3.1 for Γ, §3.5–3.6
     /// for εs). They sit half a cell from the wall, so where Γ or εs vary at the wall the
     /// closure is first-order accurate.
     #[default]
@@ -137,7 +137,7 @@ pub struct ChuteParams {
     pub gravity: f64,
     /// solids holdup M = ∫₀ᴴ εs dy \[m\] (bed depth at εs = 1), 0 < M < H
     pub holdup: f64,
-    /// floor wall condition at y = 0 (model-spec §3)
+    /// floor wall condition at y = 0 (docs/model.md §3)
     pub floor: SolidsWallModel,
     /// cells across the layer, faces from y = 0 (floor) to y = H (free-slip lid)
     pub grid: Axis,
@@ -192,7 +192,7 @@ impl Default for SolverSettings {
     }
 }
 
-/// Floor values of the converged solution (model-spec §3.5–3.6).
+/// Floor values of the converged solution (docs/model.md §3.5–3.6).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FloorDiagnostics {
     /// h_w^u [m⁻¹ as MFIX codes it] and the other momentum-wall quantities
@@ -214,7 +214,7 @@ pub struct FloorDiagnostics {
     /// P_s + P* at y = 0 \[Pa\], the first cell's value plus the weight of its lower half
     pub pressure: f64,
     /// granular-energy flux into the flow through the floor, −κ_s,1 (θ₁ − θ_G)/Δ \[W/m²\]:
-    /// (κ_s,1/g)(c_θ − h_θ θ_face) with g the wall routine's κ (model-spec §3.2 note)
+    /// (κ_s,1/g)(c_θ − h_θ θ_face) with g the wall routine's κ (docs/model.md §3.2 note)
     pub energy_flux_into_flow: f64,
 }
 
@@ -309,14 +309,14 @@ fn equation_name(row: usize, n: usize) -> &'static str {
 }
 
 /// Harmonic face mean Γ_f = Γ_a Γ_b / max(1e-15, w Γ_a + (1 − w) Γ_b), with w the AVG_X
-/// weight of the lower cell (model-spec §4.1, MFIX AVG_X_H).
+/// weight of the lower cell (docs/model.md §4.1, MFIX AVG_X_H).
 #[inline]
 pub fn harmonic_face_mean(gamma_lower: f64, gamma_upper: f64, weight_lower: f64) -> f64 {
     gamma_lower * gamma_upper
         / (weight_lower * gamma_lower + (1.0 - weight_lower) * gamma_upper).max(HARMONIC_FLOOR)
 }
 
-/// Diffusive fluxes Γ dφ/dy (in +y) on the N + 1 faces of `grid` (model-spec §3.2, §4.1): the
+/// Diffusive fluxes Γ dφ/dy (in +y) on the N + 1 faces of `grid` (docs/model.md §3.2, §4.1): the
 /// floor face from the eliminated Robin closure, `RobinFace::implicit_parts` with the wall
 /// value of Γ (`treatment`; MFIX: the first cell's), flux = a φ₁ − b; interior faces from the
 /// harmonic-mean Γ and the centre difference; the lid face zero (zero gradient). This is the
@@ -393,7 +393,7 @@ pub fn solve_linear_diffusion(
 }
 
 /// The floor closure at one state: both Robin faces and their face values, consistent with
-/// each other (model-spec §3.5–3.6).
+/// each other (docs/model.md §3.5–3.6).
 #[derive(Clone, Copy, Debug)]
 struct FloorClosure {
     momentum: runout_walls::MomentumWall,
@@ -403,7 +403,7 @@ struct FloorClosure {
 }
 
 /// Evaluates the floor's momentum and θ conditions from the wall εs ([`WallTreatment`]), the
-/// first cell's u, θ and width Δ, with the near-wall states of model-spec §3.5–3.6 in 1-D: εs
+/// first cell's u, θ and width Δ, with the near-wall states of docs/model.md §3.5–3.6 in 1-D: εs
 /// interpolated along x is the cell's own (MFIX); θ at the corner point is the mean of ghost and fluid θ (`corner_theta`), θ on
 /// the face `face_theta`; the slip is |u_face − U_w|; the wall strain rate is
 /// du/dy = (u₁ − u_G)/Δ with tr D = 0, S_nn = 0 (`WallStrain::planar_floor`). The ghost
@@ -615,7 +615,7 @@ impl<'a> Problem<'a> {
 
     /// Hydrostatic εs profile for given θ and zero shear (the initial guess): εs of the top
     /// cell is bisected until Σ εs Δy = M, each lower cell's εs bisected so that its y-momentum
-    /// face balances (model-spec §1.2 with ∂/∂x = 0).
+    /// face balances (docs/model.md §1.2 with ∂/∂x = 0).
     fn hydrostatic_eps(&self, theta: &[f64], shear_rate: &[f64]) -> Vec<f64> {
         let n = self.n();
         let dy = self.p.grid.widths();
@@ -1015,7 +1015,7 @@ pub fn solve(
         }
         iterations += 1;
         let mut matrix = jacobian(&problem, &x, &current);
-        // pseudo-transient terms of the momentum and granular-energy rows (model-spec §1.2,
+        // pseudo-transient terms of the momentum and granular-energy rows (docs/model.md §1.2,
         // §1.3: ρs εs ∂u/∂t and (3/2) ρs εs ∂θ/∂t per unit area)
         for j in 0..n {
             // (the θ row's unknown is ln θ: ∂θ/∂ln θ = θ)

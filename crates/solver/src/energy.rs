@@ -1,4 +1,4 @@
-//! The granular-energy equation of one solids phase (model-spec §1.3, §4.8):
+//! The granular-energy equation of one solids phase (docs/model.md §1.3, §4.8):
 //!
 //! (3/2)[∂(εs ρs θ)/∂t + ∇·(εs ρs θ us)] = ∇·(κs ∇θ) + Π − γ − J_vis + J_slip,
 //!
@@ -8,7 +8,7 @@
 //! dissipation γ and the viscous damping J_vis = 3 F_gs θ implicit (γ/θ and 3 F_gs in the
 //! diagonal); the production Π = −P_kin tr D + 2 μ_kin tr(D²) + λ_kin (tr D)² split by sign
 //! (a negative part goes to the diagonal as a multiple of θ, a positive part to the source);
-//! J_slip as a source. Walls close the flux with [`RobinFace`] (model-spec §3.2, §3.3, §3.6).
+//! J_slip as a source. Walls close the flux with [`RobinFace`] (docs/model.md §3.2, §3.3, §3.6).
 
 use runout_linsolve::Stencil5;
 use runout_mesh::{Grid, Sides};
@@ -27,7 +27,7 @@ pub struct EnergyInputs<'a> {
     pub bulk_density_old: &'a [f64],
     /// granular conductivity κs [kg m⁻¹ s⁻¹]
     pub conductivity: &'a [f64],
-    /// P_kin/θ [kg m⁻³] (the kinetic pressure is linear in θ, model-spec §2.2)
+    /// P_kin/θ [kg m⁻³] (the kinetic pressure is linear in θ, docs/model.md §2.2)
     pub p_kin_over_theta: &'a [f64],
     /// μ_kin [Pa s]
     pub mu_kin: &'a [f64],
@@ -47,7 +47,7 @@ pub struct EnergyInputs<'a> {
 
 /// Assembles the θ equation (without relaxation) into `a`, given the solids face velocities
 /// `u` ((nx+1) × ny) and `v` (nx × (ny+1)), the old θ, the wall closures per side (with
-/// per-cell overrides in `wall_cells`, e.g. Johnson–Jackson, model-spec §3.6) and Δt.
+/// per-cell overrides in `wall_cells`, e.g. Johnson–Jackson, docs/model.md §3.6) and Δt.
 #[allow(clippy::too_many_arguments)]
 pub fn assemble_theta(
     grid: &Grid,
@@ -96,7 +96,7 @@ pub fn assemble_theta(
         for i in 0..nx {
             let k = i + nx * j;
             let volume = dx[i] * dy[j];
-            // wall faces: θ closure with the fluid cell's conductivity (model-spec §3.1)
+            // wall faces: θ closure with the fluid cell's conductivity (docs/model.md §3.1)
             let cell_face =
                 |side: &Option<RobinFace>, over: Option<&Vec<RobinFace>>, pos: usize| {
                     over.map(|f| f[pos]).or(*side)
@@ -134,13 +134,13 @@ pub fn assemble_theta(
                     a.b[k] += b * area;
                 }
             }
-            // transient with the old bulk density (model-spec §1.3, §4.3)
+            // transient with the old bulk density (docs/model.md §1.3, §4.3)
             let a0 = 1.5 * inputs.bulk_density_old[k] * volume / dt;
             a.a_p[k] += a0;
             a.b[k] += a0 * theta_old[k];
             // dissipation and viscous damping, implicit
             a.a_p[k] += (inputs.dissipation_over_theta[k] + 3.0 * inputs.drag[k]) * volume;
-            // production split by sign (model-spec §4.8)
+            // production split by sign (docs/model.md §4.8)
             let tr_d = inputs.tr_d[k];
             let compression = -inputs.p_kin_over_theta[k] * tr_d; // coefficient of θ in −P_kin tr D
             if compression >= 0.0 {

@@ -1,10 +1,10 @@
-//! Cell-centred strain rates of a phase from its staggered velocities (model-spec §4.4,
+//! Cell-centred strain rates of a phase from its staggered velocities (docs/model.md §4.4,
 //! "cell-centred strain rate for μ, P_f and production"), as the closures need them:
 //! tr D = ∂u/∂x + ∂v/∂y, tr(D²) = D11² + D22² + 2 D12², and S:S = tr(D²) − (tr D)²/3
-//! (model-spec §0.3, §2.4.2). D12 = ½(∂u/∂y + ∂v/∂x): ∂u/∂y is the difference of u on the
+//! (docs/model.md §0.3, §2.4.2). D12 = ½(∂u/∂y + ∂v/∂x): ∂u/∂y is the difference of u on the
 //! cell's north and south faces (cell-centred u interpolated between rows), and at a wall
 //! the wall face value that MFIX's ghost cell implies (the caller's wall closure supplies
-//! it, model-spec §3.2, §4.4); likewise ∂v/∂x. Without a face value (an outlet) the
+//! it, docs/model.md §3.2, §4.4); likewise ∂v/∂x. Without a face value (an outlet) the
 //! difference is one-sided.
 
 use runout_mesh::Grid;
@@ -21,7 +21,7 @@ pub struct Strain {
 }
 
 /// Face values of the tangential velocity on the four walls, per row or column, used at
-/// the first and last rows/columns (from the wall closures, model-spec §3.2). `None` means
+/// the first and last rows/columns (from the wall closures, docs/model.md §3.2). `None` means
 /// a one-sided difference inside the domain (an outlet).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct WallVelocities<'a> {
@@ -50,7 +50,7 @@ pub fn strain_rates(
     let (x_faces, y_faces) = (grid.x.faces(), grid.y.faces());
     let x_face = |i: usize| x_faces[i];
     let y_face = |j: usize| y_faces[j];
-    // cell-centred velocities: the mean of the two faces (MFIX AVG_X_E, model-spec §4.1)
+    // cell-centred velocities: the mean of the two faces (MFIX AVG_X_E, docs/model.md §4.1)
     let uc = |i: usize, j: usize| 0.5 * (u[i + (nx + 1) * j] + u[i + 1 + (nx + 1) * j]);
     let vc = |i: usize, j: usize| 0.5 * (v[i + nx * j] + v[i + nx * (j + 1)]);
     for j in 0..ny {
@@ -58,7 +58,7 @@ pub fn strain_rates(
             let du_dx = (u[i + 1 + (nx + 1) * j] - u[i + (nx + 1) * j]) / dx[i];
             let dv_dy = (v[i + nx * (j + 1)] - v[i + nx * j]) / dy[j];
             // ∂u/∂y = (u_n − u_s)/Δy with u on the cell's south and north faces interpolated
-            // between row centres (AVG_Y, model-spec §4.4 GET_FACE_VEL_SOLIDS), the wall face
+            // between row centres (AVG_Y, docs/model.md §4.4 GET_FACE_VEL_SOLIDS), the wall face
             // value at a wall (MFIX's ghost/fluid mean, §3.2); one-sided at an outlet
             let du_dy = {
                 let face = |jf: usize| -> Option<f64> {
@@ -99,7 +99,7 @@ pub fn strain_rates(
             };
             let d12 = 0.5 * (du_dy + dv_dx);
             let tr_d = du_dx + dv_dy;
-            // 2-D: D33 = 0 (model-spec §0.3)
+            // 2-D: D33 = 0 (docs/model.md §0.3)
             let tr_d2 = du_dx * du_dx + dv_dy * dv_dy + 2.0 * d12 * d12;
             out[i + nx * j] = Strain {
                 tr_d,

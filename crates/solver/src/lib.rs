@@ -1,10 +1,10 @@
-//! runout-solver: the finite-volume machinery of runout (model-spec §4).
+//! runout-solver: the finite-volume machinery of runout (docs/model.md §4).
 //!
 //! - [`transport`]: upwind/Superbee convection and diffusion on a structured block;
-//! - [`momentum`]: one phase's momentum equations with variable ρε, ε, μ (model-spec §4.4);
+//! - [`momentum`]: one phase's momentum equations with variable ρε, ε, μ (docs/model.md §4.4);
 //! - [`single_phase`]: the incompressible SIMPLE core on a stretched staggered grid;
 //! - [`run`]: the time loop with MFIX's adaptive Δt, output and diagnosis;
-//! - [`two_fluid`]: the first two-fluid model (gas + M solids, model-spec §4.9) built from
+//! - [`two_fluid`]: the first two-fluid model (gas + M solids, docs/model.md §4.9) built from
 //!   [`energy`] (granular energy, §4.8),
 //!   [`kinematics`] (cell strain rates), [`pea`] (partial elimination of drag, §4.5),
 //!   [`volume_fraction`] (the solids volume-fraction correction, §4.7);

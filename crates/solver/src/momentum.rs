@@ -1,11 +1,11 @@
-//! Momentum equations of one phase on the staggered grid (model-spec §4.4), with
+//! Momentum equations of one phase on the staggered grid (docs/model.md §4.4), with
 //! variable bulk density ρε, volume fraction ε and viscosity μ per cell, so that the same
 //! assembly serves the single-phase core (ε = 1, uniform ρ and μ) and every phase of the
 //! two-fluid model.
 //!
 //! u control volumes span from cell centre i−1 to i (half a cell at the domain ends), v
 //! control volumes from row j−1 to j. Per face of a control volume:
-//! - mass flux: the mean of the two adjacent scalar-cell face fluxes (model-spec §4.2), each
+//! - mass flux: the mean of the two adjacent scalar-cell face fluxes (docs/model.md §4.2), each
 //!   ρε_face u A with ρε_face from the convection scheme (upwind or Superbee, as MFIX's
 //!   continuity face densities, [`face_value`]);
 //! - conductance: μ A/δ, with μ of the cell at x-faces of u-cells and the harmonic mean of
@@ -18,7 +18,7 @@
 //! - walls: the eliminated Robin closure of the tangential component (§3.2) with the fluid
 //!   cells' viscosity (§3.1).
 //!
-//! The explicit stress terms of model-spec §4.4 come in as a per-node source
+//! The explicit stress terms of docs/model.md §4.4 come in as a per-node source
 //! ([`PhaseFields::explicit_source`], computed by [`crate::stress`]); the interphase drag is
 //! added by the partial elimination of the two-fluid model.
 
@@ -43,19 +43,19 @@ pub struct PhaseFields<'a> {
     /// the solids pressure P_s of a solids phase [Pa]; `None` for the gas
     pub solids_pressure: Option<&'a [f64]>,
     /// the Schaeffer plastic pressure P* of a solids phase [Pa], its own gradient −∇P*
-    /// (model-spec §2.4.1, §4.4); `None` for the gas and without Schaeffer friction (P* ≡ 0)
+    /// (docs/model.md §2.4.1, §4.4); `None` for the gas and without Schaeffer friction (P* ≡ 0)
     pub plastic_pressure: Option<&'a [f64]>,
     /// explicit stress source per node of the component being assembled, already integrated
-    /// over the control volume [N per m depth] (model-spec §4.4, [`crate::stress`]); `None`
+    /// over the control volume [N per m depth] (docs/model.md §4.4, [`crate::stress`]); `None`
     /// where the viscosity is uniform and the flow incompressible (it vanishes)
     pub explicit_source: Option<&'a [f64]>,
     /// nodes of the component being assembled whose rows the caller replaces (dilute solids
-    /// faces, model-spec §2.7): their rows and the faces between two of them are skipped
+    /// faces, docs/model.md §2.7): their rows and the faces between two of them are skipped
     pub skip: Option<&'a [bool]>,
 }
 
 /// Per-node wall closures that replace a side's single [`SideBc`] (wall models whose
-/// coefficients depend on the local state: Johnson–Jackson, Jenkins, model-spec §3.5). For
+/// coefficients depend on the local state: Johnson–Jackson, Jenkins, docs/model.md §3.5). For
 /// momentum: `south`/`north` hold one closure per u-node (nx + 1), `west`/`east` one per
 /// v-node (ny + 1); for granular energy one per boundary cell (nx or ny).
 #[derive(Clone, Debug, Default)]
@@ -102,7 +102,7 @@ pub struct Context<'a> {
 }
 
 /// Width of the u control volume at x-face i: centre to centre inside, half a cell at the
-/// two ends (model-spec §4.1).
+/// two ends (docs/model.md §4.1).
 pub fn cv_width(widths: &[f64], i: usize) -> f64 {
     let n = widths.len();
     if i == 0 {
@@ -114,7 +114,7 @@ pub fn cv_width(widths: &[f64], i: usize) -> f64 {
     }
 }
 
-/// Harmonic mean with MFIX's guard against a zero denominator (model-spec §4.1, AVG_X_H).
+/// Harmonic mean with MFIX's guard against a zero denominator (docs/model.md §4.1, AVG_X_H).
 pub(crate) fn harmonic(a: f64, b: f64, weight_a: f64) -> f64 {
     a * b / (weight_a * a + (1.0 - weight_a) * b).max(1e-15)
 }
@@ -134,7 +134,7 @@ fn interp_y(grid: &Grid, field: &[f64], i: usize, j: usize) -> f64 {
 }
 
 /// Σ a_nb φ_nb + b of row k: the right-hand side with the current neighbour values (used
-/// for residuals, model-spec §4.11, and the partial elimination, §4.5).
+/// for residuals, docs/model.md §4.11, and the partial elimination, §4.5).
 pub(crate) fn neighbour_sum(a: &Stencil5, phi: &[f64], k: usize) -> f64 {
     let nx = a.pattern().nx();
     let mut r = a.b[k];
@@ -163,7 +163,7 @@ pub(crate) fn fixed_row(a: &mut Stencil5, k: usize, value: f64) {
     a.a_s[k] = 0.0;
 }
 
-/// Adds the eliminated wall-face closure (model-spec §3.2) of a tangential component to row
+/// Adds the eliminated wall-face closure (docs/model.md §3.2) of a tangential component to row
 /// k: Γ h/(g + hΔ/2) to a_P and Γ c/(g + hΔ/2) to b, times the face area. Nothing on an
 /// outlet (zero normal gradient).
 pub(crate) fn add_wall_face(
@@ -341,7 +341,7 @@ pub fn assemble_u(
             let half_volume = |c: Option<usize>, field: &[f64]| {
                 c.map_or(0.0, |c| 0.5 * dx[c] * dy[j] * field[c + nx * j])
             };
-            // walls below and above: the fluid cells' viscosity (model-spec §3.1)
+            // walls below and above: the fluid cells' viscosity (docs/model.md §3.1)
             let mu_wall = |row: usize| -> f64 {
                 match (west, east) {
                     (Some(w), Some(e)) => {
@@ -360,7 +360,7 @@ pub fn assemble_u(
                 let bc = side_closure(&ctx.bcs.north, over.and_then(|w| w.north.as_ref()), i);
                 add_wall_face(a, k, &bc, mu_wall(ny - 1), dy[ny - 1], width);
             }
-            // transient (implicit Euler, model-spec §4.3–4.4)
+            // transient (implicit Euler, docs/model.md §4.3–4.4)
             let a0 = (half_volume(west, phase.bulk_density_old)
                 + half_volume(east, phase.bulk_density_old))
                 / ctx.dt;
@@ -384,7 +384,7 @@ pub fn assemble_u(
             if let (Some(ps), Some(w), Some(e)) = (phase.solids_pressure, west, east) {
                 a.b[k] += (ps[w + nx * j] - ps[e + nx * j]) * dy[j];
             }
-            // −(P*_E − P*_W) A, MFIX's SDPS (model-spec §4.4, §2.4.1)
+            // −(P*_E − P*_W) A, MFIX's SDPS (docs/model.md §4.4, §2.4.1)
             if let (Some(pp), Some(w), Some(e)) = (phase.plastic_pressure, west, east) {
                 a.b[k] += (pp[w + nx * j] - pp[e + nx * j]) * dy[j];
             }
@@ -553,7 +553,7 @@ pub fn assemble_v(
             if let (Some(ps), Some(s), Some(n)) = (phase.solids_pressure, south, north) {
                 a.b[k] += (ps[i + nx * s] - ps[i + nx * n]) * dx[i];
             }
-            // −(P*_N − P*_S) A, MFIX's SDPS (model-spec §4.4, §2.4.1)
+            // −(P*_N − P*_S) A, MFIX's SDPS (docs/model.md §4.4, §2.4.1)
             if let (Some(pp), Some(s), Some(n)) = (phase.plastic_pressure, south, north) {
                 a.b[k] += (pp[i + nx * s] - pp[i + nx * n]) * dx[i];
             }

@@ -1,5 +1,5 @@
 //! Partial elimination of the interphase drag (Spalding's PEA as MFIX applies it,
-//! model-spec §4.5), for the gas and M solids phases coupled by gas–solids drag only.
+//! docs/model.md §4.5), for the gas and M solids phases coupled by gas–solids drag only.
 //!
 //! At one velocity node each phase's assembled equation (without drag) reads
 //! a_k φ_k = r_k, r_k = Σ a_nb φ_nb + b with the current neighbour values. With the drag
@@ -10,7 +10,7 @@
 //!   gas:      (a_g + Σ_m F_m a_m/(a_m + F_m)) φ_g = r_g + Σ_m F_m r_m/(a_m + F_m),
 //!   solids m: (a_m + F_m − F_m²/(a_g + ΣF)) φ_m = r_m + F_m (r_g + Σ_{n≠m} F_n φ_n)/(a_g + ΣF),
 //! with the other solids phases' current values φ_n (exact for M = 1, where the solids
-//! form reduces to model-spec §4.5's a_s + F a_g/(a_g + F), b_s + F r_g/(a_g + F)). The
+//! form reduces to docs/model.md §4.5's a_s + F a_g/(a_g + F), b_s + F r_g/(a_g + F)). The
 //! drag then disappears from the systems, which are solved one phase at a time.
 
 /// One node's coupled equations: centre coefficients `a`, right-hand sides `r`

@@ -1,13 +1,13 @@
-//! Incompressible single-phase SIMPLE on a stretched staggered grid (model-spec §4).
+//! Incompressible single-phase SIMPLE on a stretched staggered grid (docs/model.md §4).
 //!
 //! u lives on x-faces ((nx+1) × ny, faces i = 0 and nx on the domain ends), v on y-faces
 //! (nx × (ny+1)), p at cell centres. Each outer iteration: momentum predictor with the
 //! current pressure (upwind or Superbee by deferred correction, implicit Euler, Patankar
-//! under-relaxation, model-spec §4.2–4.4, §4.10), pressure correction from discrete
+//! under-relaxation, docs/model.md §4.2–4.4, §4.10), pressure correction from discrete
 //! continuity (§4.6 with one phase), velocity and pressure correction, residuals (§4.11).
 //!
 //! Walls impose zero normal velocity and, for the tangential component, the eliminated
-//! Robin closure of model-spec §3.2 ([`RobinFace`]) with the distance from the fluid
+//! Robin closure of docs/model.md §3.2 ([`RobinFace`]) with the distance from the fluid
 //! centre to its ghost (the first cell's width, §3.1). An outlet holds the pressure on its
 //! face and has zero normal gradient of both velocity components.
 
@@ -63,7 +63,7 @@ pub struct Fluid {
     pub viscosity: f64,
 }
 
-/// Iteration settings (MFIX defaults, model-spec §4.10–4.11).
+/// Iteration settings (MFIX defaults, docs/model.md §4.10–4.11).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Settings {
     /// convection scheme
@@ -113,7 +113,7 @@ pub enum SolverError {
     },
 }
 
-/// Normalised residuals of one outer iteration (model-spec §4.11).
+/// Normalised residuals of one outer iteration (docs/model.md §4.11).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Residuals {
     /// u momentum: Σ|b + Σ a_nb u_nb − a_P u_P| / Σ|a_P u_P| (before relaxation)
@@ -285,7 +285,7 @@ impl SinglePhase {
     }
 
     /// Cell-centred velocities (u, v) interleaved, the mean of the two faces of each cell
-    /// (MFIX AVG_X_E, model-spec §4.1), into `out` (length 2 · cells).
+    /// (MFIX AVG_X_E, docs/model.md §4.1), into `out` (length 2 · cells).
     pub fn centre_velocities(&self, out: &mut [f64]) {
         let (nx, ny) = (self.grid.nx(), self.grid.ny());
         for j in 0..ny {
@@ -370,7 +370,7 @@ impl SinglePhase {
     }
 
     /// Relaxes the assembled system and returns the pre-relaxation residual normalised as
-    /// MFIX does (model-spec §4.11): Σ|b + Σ a_nb φ_nb − a_P φ_P| / Σ|a_P| |vel_P|, where
+    /// MFIX does (docs/model.md §4.11): Σ|b + Σ a_nb φ_nb − a_P φ_P| / Σ|a_P| |vel_P|, where
     /// |vel_P| is the speed from both staggered components stored at the same (i, j).
     fn finish_momentum(
         a: &mut Stencil5,
@@ -391,7 +391,7 @@ impl SinglePhase {
             }
             num += r;
             den += a.a_p[k].abs() * speed(k);
-            // Patankar under-relaxation (model-spec §4.10)
+            // Patankar under-relaxation (docs/model.md §4.10)
             let ap = a.a_p[k] / relax;
             a.b[k] += (1.0 - relax) * ap * phi[k];
             a.a_p[k] = ap;
@@ -510,7 +510,7 @@ impl SinglePhase {
         Ok(r)
     }
 
-    /// Pressure correction from cell continuity (model-spec §4.6 for one incompressible
+    /// Pressure correction from cell continuity (docs/model.md §4.6 for one incompressible
     /// phase); corrects u, v and p. Returns the mean |mass imbalance| before correction.
     fn pressure_correction(&mut self) -> Result<(f64, usize), SolverError> {
         let (nx, ny) = (self.grid.nx(), self.grid.ny());
@@ -556,7 +556,7 @@ impl SinglePhase {
                 equation: "pressure correction",
                 source,
             })?;
-        // velocity correction with the full p', pressure with ω_p (model-spec §4.6)
+        // velocity correction with the full p', pressure with ω_p (docs/model.md §4.6)
         let pc = &self.p_corr;
         for j in 0..ny {
             for i in 0..=nx {
@@ -587,10 +587,10 @@ impl SinglePhase {
 
     /// One implicit-Euler time step of size `dt`: outer iterations until the sum of the
     /// normalised residuals (momentum as in [`Residuals`], continuity relative to the first
-    /// iteration's imbalance, model-spec §4.11) is at most `tol`, after at least two
+    /// iteration's imbalance, docs/model.md §4.11) is at most `tol`, after at least two
     /// iterations. A step that does not converge within `max_iterations`, or whose sum
     /// exceeds `diverge`, is undone (fields restored) and reported as not converged, so the
-    /// caller can retry with a smaller Δt (model-spec §4.12).
+    /// caller can retry with a smaller Δt (docs/model.md §4.12).
     pub fn step(
         &mut self,
         dt: f64,

@@ -1,4 +1,4 @@
-//! The explicit parts of a phase's viscous stress (model-spec §4.4, MFIX `calc_trd_s.f`,
+//! The explicit parts of a phase's viscous stress (docs/model.md §4.4, MFIX `calc_trd_s.f`,
 //! `tau_u_s.f`, `tau_v_s.f`).
 //!
 //! The momentum assembly treats μ ∂u_i/∂x_j implicitly (through a_nb); the rest of
@@ -12,7 +12,7 @@
 //! of (μ ∂u/∂x + λ tr D) between the cell centres i and i−1, times the face height; the shear
 //! part as the difference of μ ∂v/∂x between the corners (i, j+1) and (i, j), times the
 //! control-volume width, with μ at a corner the harmonic mean of the four cells around it
-//! (the same as the implicit shear conductance, model-spec §4.1). On a wall the tangential
+//! (the same as the implicit shear conductance, docs/model.md §4.1). On a wall the tangential
 //! derivative of the normal velocity is zero (v = 0 along a floor), so the corner term
 //! vanishes there; on an outlet the corner values of the fluid row are used. The v equation
 //! is the mirror image.

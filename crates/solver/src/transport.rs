@@ -1,15 +1,15 @@
 //! Finite-volume transport assembly on a structured block of control volumes
-//! (model-spec §4.2–4.3): first-order upwind in the matrix, Superbee through deferred
+//! (docs/model.md §4.2–4.3): first-order upwind in the matrix, Superbee through deferred
 //! correction in the source, and diffusion through face conductances.
 //!
 //! The block has `mx × my` nodes, x fastest. Face arrays hold, for every face of the block
 //! including its outer faces, the mass flux F (positive in +x or +y) and the diffusion
 //! conductance D = Γ A / δ. Outer faces must carry D = 0 and their convective effect is the
-//! caller's business (walls have F = 0; outlets are zero-gradient, model-spec §3).
+//! caller's business (walls have F = 0; outlets are zero-gradient, docs/model.md §3).
 
 use runout_linsolve::Stencil5;
 
-/// Convection scheme (MFIX `DISCRETIZE` 0 and 2, model-spec §4.2).
+/// Convection scheme (MFIX `DISCRETIZE` 0 and 2, docs/model.md §4.2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Scheme {
     /// first-order upwind
@@ -62,7 +62,7 @@ impl FaceData {
 }
 
 /// Superbee's limited weight ξ of the downwind value in φ_f = φ_C + ξ (φ_D − φ_C), from the
-/// normalised variable φ̃_C = (φ_C − φ_U)/(φ_D − φ_U) (model-spec §4.2, MFIX
+/// normalised variable φ̃_C = (φ_C − φ_U)/(φ_D − φ_U) (docs/model.md §4.2, MFIX
 /// `discretization_mod.f`): with t = φ̃/(1 − φ̃), ξ = ½ max(0, min(1, 2t), min(2, t));
 /// ξ = 1 at φ̃ = 1 and 0 outside [0, 1).
 #[inline]
@@ -87,7 +87,7 @@ pub fn superbee_weight(up: f64, centre: f64, down: f64) -> f64 {
 /// value, or with Superbee the TVD value φ_C + ξ (φ_D − φ_C) using the far-upwind cell
 /// (`lo_lo` or `hi_hi`; upwind where it does not exist), never above the upwind value.
 /// This is how MFIX forms the face
-/// densities of the continuity equations and of the momentum fluxes (model-spec §4.2,
+/// densities of the continuity equations and of the momentum fluxes (docs/model.md §4.2,
 /// `conv_rop.f`, `DISCRETIZE(1..2)`).
 #[inline]
 pub fn face_value(
@@ -107,7 +107,7 @@ pub fn face_value(
     match (scheme, up) {
         // capped at the upwind value: a face never carries more than its donor cell holds,
         // so the implicit continuity update keeps εs ≥ 0 and no mass is created by clipping
-        // (MFIX clips ρε at 0 instead, model-spec §4.7; the cap only matters where the flow
+        // (MFIX clips ρε at 0 instead, docs/model.md §4.7; the cap only matters where the flow
         // runs into a denser cell, the front sharpening of Superbee is kept)
         (Scheme::Superbee, Some(u)) => {
             (centre + superbee_weight(field[u], centre, down) * (down - centre)).min(centre)
@@ -128,7 +128,7 @@ fn correction(flux: f64, up: Option<f64>, centre: f64, down: f64) -> f64 {
 
 /// Fills a_e, a_w, a_n, a_s (upwind + diffusion) and sets a_p = Σ a_nb and b = the
 /// deferred-correction source (zero for upwind). The continuity-subtracted form of
-/// model-spec §4.3 is used: a_P carries no net-outflow term. Transient, pressure, body
+/// docs/model.md §4.3 is used: a_P carries no net-outflow term. Transient, pressure, body
 /// force and wall terms are added by the caller afterwards.
 pub fn assemble(faces: &FaceData, phi: &[f64], scheme: Scheme, a: &mut Stencil5) {
     assemble_masked(faces, phi, scheme, None, a);

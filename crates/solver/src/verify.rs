@@ -711,14 +711,14 @@ pub const TG_VISCOSITY: f64 = 0.05;
 /// End time of the Taylor–Green runs [s].
 pub const TG_END_TIME: f64 = 0.2;
 /// Convergence tolerance of every Taylor–Green step (sum of the normalised residuals,
-/// model-spec §4.11). Far below the differences the orders are measured from (≥ 1e-5);
+/// docs/model.md §4.11). Far below the differences the orders are measured from (≥ 1e-5);
 /// 1e-11 stalls at the round-off floor of the continuity residual once Δt ≤ 0.005 on 32².
 pub const TG_STEP_TOLERANCE: f64 = 1e-10;
 
 /// The decaying Taylor–Green vortex on [0, 1]², an exact Navier–Stokes solution:
 /// u = sin(πx) cos(πy) F, v = −cos(πx) sin(πy) F, p = −ρF²/4 (cos 2πx + cos 2πy),
 /// F = exp(−2π²νt). Normal velocity and tangential stress vanish on all sides, so
-/// free-slip walls (zero-gradient Robin closure, model-spec §3.2) are exact. Returns (u, v, p).
+/// free-slip walls (zero-gradient Robin closure, docs/model.md §3.2) are exact. Returns (u, v, p).
 pub fn taylor_green_exact(x: f64, y: f64, t: f64) -> (f64, f64, f64) {
     let f = (-2.0 * PI * PI * TG_VISCOSITY / TG_DENSITY * t).exp();
     (

@@ -1,10 +1,10 @@
 //! The solids volume-fraction correction of Syamlal (1998), as MFIX applies it to one
-//! close-packed solids phase (model-spec §4.7).
+//! close-packed solids phase (docs/model.md §4.7).
 //!
 //! The solids face velocities respond to a change ε' of the volume fraction through the
 //! solids pressure: u'_f = −e_f (K_cp,nb ε'_nb − K_cp,P ε'_P) in the direction from P to nb,
 //! with e_f = A_f / a_P,s (the solids momentum centre coefficient before partial
-//! elimination) and K_cp = dP_s/dεs (model-spec §2.5). Linearising the discrete solids
+//! elimination) and K_cp = dP_s/dεs (docs/model.md §2.5). Linearising the discrete solids
 //! continuity with upwind face values around the predicted velocities u* gives, per face of
 //! cell P with outward flux u*·n A:
 //! - outflow: a_nb = ρs εs,P e_f A K_cp,nb; a_P += ρs εs,P e_f A K_cp,P + ρs u*·n A;
@@ -170,7 +170,7 @@ fn faces(
 }
 
 /// Assembles the ε' equation into `a` (cells, x fastest). `imbalance` receives the mass
-/// imbalance of the predicted state (its mean magnitude is the residual, model-spec §4.11).
+/// imbalance of the predicted state (its mean magnitude is the residual, docs/model.md §4.11).
 pub fn assemble_correction(
     grid: &Grid,
     x: &CorrectionInputs<'_>,
@@ -227,7 +227,7 @@ pub fn assemble_correction(
     }
 }
 
-/// Applies the correction ε' (model-spec §4.7): selective under-relaxation where the new
+/// Applies the correction ε' (docs/model.md §4.7): selective under-relaxation where the new
 /// value would exceed `eps_max` with ε' > 0, εs ≥ 0, and the solids face velocities
 /// u ← u − e_f (K_cp,nb ε'_nb − K_cp,P ε'_P). Walls (e = 0) are untouched.
 #[allow(clippy::too_many_arguments)]

@@ -211,7 +211,7 @@ fn diffusion_operator_is_second_order_on_uniform_and_stretched_grids() {
     }
 }
 
-/// The wall face takes the fluid cell's Γ (model-spec §3.1, as MFIX), which is Γ(Δ/2), not
+/// The wall face takes the fluid cell's Γ (docs/model.md §3.1, as MFIX), which is Γ(Δ/2), not
 /// Γ(0): where Γ has a slope at the wall the wall flux, and so the solution, are first order.
 /// This documents the convention's cost; the chute inherits it through μ_s and κ_s.
 #[test]
@@ -239,7 +239,7 @@ fn converged_profile_satisfies_the_integral_balances() {
     // y-momentum: P_s(0) − P_lid = ρs g cos α ∫εs dy
     let weight_n = rho_s * GRAVITY * alpha.cos() * holdup;
     let pressure_error = (p.floor.pressure - p.lid_pressure - weight_n).abs() / weight_n;
-    // the wall shear is the Robin form μ_s,1 h_w^u (u_face − U_w) (model-spec §3.2)
+    // the wall shear is the Robin form μ_s,1 h_w^u (u_face − U_w) (docs/model.md §3.2)
     let robin = p.floor.viscosity * p.floor.momentum.h_u * p.floor.slip;
     let robin_error = (robin - p.floor.shear_stress).abs() / weight_t;
     // granular energy: ∫(Π − γ) dy + flux in through the floor = 0 (zero flux at the lid)

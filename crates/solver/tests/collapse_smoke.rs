@@ -47,7 +47,7 @@ fn a1_smoke_runs_conserves_mass_and_the_front_advances_inside_the_domain() {
     let (case, out, summary) = run_a1("advance");
     assert_eq!(summary.status, RunStatus::Completed);
     // the solids mass is conserved to the per-step continuity tolerance where the column
-    // compacts (the selective relaxation of the ε correction at packing, model-spec §4.7,
+    // compacts (the selective relaxation of the ε correction at packing, docs/model.md §4.7,
     // leaves an imbalance that the converged step keeps): 2.2e-8 here
     assert!(
         summary.solids_mass_change.abs() <= 1e-7,

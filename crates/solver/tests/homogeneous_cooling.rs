@@ -152,7 +152,7 @@ fn haff_law_within_one_percent_and_first_order_in_time() {
 }
 
 /// Steady conduction with constant κ between a flux wall (the manual form dθ/dn = C,
-/// model-spec §3.3, at the floor) and a wall held at θ_top: θ = θ_top + C (H − y), linear,
+/// docs/model.md §3.3, at the floor) and a wall held at θ_top: θ = θ_top + C (H − y), linear,
 /// which the two-point fluxes and the eliminated Robin closures reproduce exactly.
 #[test]
 fn steady_conduction_with_flux_and_dirichlet_walls_is_exact() {

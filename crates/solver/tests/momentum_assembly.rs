@@ -1,7 +1,7 @@
 //! The variable-coefficient momentum assembly (`runout_solver::momentum`) on a problem with
 //! a closed form: steady Couette flow through two layers of different viscosity. The shear
 //! stress is the same in both layers, so u is piecewise linear with slopes τ/μ₁ and τ/μ₂;
-//! with the interface on a cell face and harmonic face viscosities (model-spec §4.1) the
+//! with the interface on a cell face and harmonic face viscosities (docs/model.md §4.1) the
 //! discrete solution is exact up to round-off.
 
 use runout_linsolve::{build, LinearSolverKind, Pattern, Stencil5};

@@ -1,9 +1,9 @@
-//! Packed bed with Schaeffer friction (model-spec §2.4.1): a bed poured at εs = 0.62
+//! Packed bed with Schaeffer friction (docs/model.md §2.4.1): a bed poured at εs = 0.62
 //! (d = 0.5 mm, Gidaspow drag) in a closed box settles under gravity until the plastic
 //! pressure P* = A (εg* − εg)^10 (A = 1e24 Pa) carries its weight. The check is the vertical
 //! momentum balance of the bed at rest: P_s + P* at the bottom cells' centres equals the
 //! weight per area above them within 2 %, and P* carries nearly all of it (θ is forced to
-//! θ_small where εg < εg*, model-spec §1.3, so the kinetic P_s is negligible there). Also:
+//! θ_small where εg < εg*, docs/model.md §1.3, so the kinetic P_s is negligible there). Also:
 //! εs at the bottom above εs,max and every εs below εs,max + 1e-2 (P* ≈ 0.94 kPa at
 //! εs ≈ 0.658), solids mass conserved to 1e-10, every field finite. Without the −∇P* term in
 //! the solids momentum (§4.4) only the εs correction resists the compaction: the steps then

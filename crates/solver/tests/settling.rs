@@ -82,7 +82,7 @@ fn column(steps: usize, dt: f64, verbose: bool) -> (TwoFluid, f64) {
         for it in 0..60 {
             let r = tf.outer_iteration(dt).unwrap();
             last = Some((it, r));
-            // the solids continuity too: the selective relaxation at packing (model-spec
+            // the solids continuity too: the selective relaxation at packing (docs/model.md
             // §4.7) leaves an imbalance that the next iterations remove
             let s0 = *first_imbalance.get_or_insert(r.solids_mass.max(f64::MIN_POSITIVE));
             if it > 1 && r.momentum < 1e-4 && r.theta < 1e-3 && r.solids_mass <= 1e-6 * s0 {

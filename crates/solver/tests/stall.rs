@@ -1,4 +1,4 @@
-//! MFIX's stall detection (`DETECT_STALL`, model-spec §4.11): a step whose momentum and
+//! MFIX's stall detection (`DETECT_STALL`, docs/model.md §4.11): a step whose momentum and
 //! continuity residual sum stops falling fails at the first 5th outer iteration after the
 //! 10th where the sum is not below its value 5 iterations before, instead of iterating to
 //! the cap, and the fields are restored so that the step can be retried with a smaller Δt.

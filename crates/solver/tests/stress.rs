@@ -1,4 +1,4 @@
-//! The explicit stress sources (model-spec §4.4) integrate the exact divergence of the
+//! The explicit stress sources (docs/model.md §4.4) integrate the exact divergence of the
 //! non-implicit stress parts for fields where the discrete differences are exact, on a
 //! stretched grid: a viscosity linear in x with u = a x, a uniform viscosity with v = c x y,
 //! and λ tr D with tr D linear in x.

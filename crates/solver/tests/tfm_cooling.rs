@@ -2,7 +2,7 @@
 //! of uniform solids (εs = 0.3, θ0 = 0.5 m²/s²) in air at rest, no gravity. The full outer
 //! iteration (closures, momentum with partial elimination, ε and p' corrections, θ) must
 //! keep everything at rest and uniform ("no motion appears"), and θ(t) must follow the
-//! cooling law of the granular-energy equation (model-spec §1.3) with these sinks:
+//! cooling law of the granular-energy equation (docs/model.md §1.3) with these sinks:
 //! (3/2) ρs εs dθ/dt = −K θ^{3/2} − 3 F_gs θ, where K θ^{3/2} is the Lun dissipation (Haff's
 //! law alone when F_gs = 0) and 3 F_gs θ the viscous damping by the gas. With s = √θ,
 //! ds/dt = −(a/2) s² − (b/2) s, a = 2K/(3 ρs εs), b = 2 F_gs/(ρs εs), so
@@ -46,7 +46,7 @@ fn exact(t: f64) -> f64 {
     .f_gs;
     let (a, b) = (2.0 * k / (3.0 * rho_eps), 2.0 * f_gs / rho_eps);
     let inv = if b == 0.0 {
-        // Haff's law: the drag vanishes at zero slip (DgA = 0 at Re = 0, model-spec §2.6)
+        // Haff's law: the drag vanishes at zero slip (DgA = 0 at Re = 0, docs/model.md §2.6)
         1.0 / THETA0.sqrt() + 0.5 * a * t
     } else {
         (1.0 / THETA0.sqrt() + a / b) * (0.5 * b * t).exp() - a / b

@@ -1,4 +1,4 @@
-//! The solids volume-fraction correction (model-spec §4.7): with K_cp = 0 it restores
+//! The solids volume-fraction correction (docs/model.md §4.7): with K_cp = 0 it restores
 //! discrete solids continuity exactly; with K_cp > 0 the velocity corrections enter
 //! linearly, so the imbalance left is second order in the correction.
 

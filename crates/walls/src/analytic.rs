@@ -14,7 +14,7 @@
 //! φ_∞ = φ_w + c/h (h > 0);  φ(n) = φ_b + c n (h = 0),
 //!
 //! with (h, φ_w, c) = (h_w^u, U_w, 0) for Eq. 12 and (h_w^θ, θ_w, c_w) for Eq. 13, in MFIX's
-//! manual units (h in m⁻¹, c in m s⁻², model-spec §3.3). Equivalently, φ is the unique
+//! manual units (h in m⁻¹, c in m s⁻², docs/model.md §3.3). Equivalently, φ is the unique
 //! solution of the boundary-value problem
 //!
 //! φ'' = h² (φ − φ_∞) on 0 < n < L,  φ(0) = φ_b,  dφ/dn + h (φ − φ_w) = c at n = L,
@@ -22,7 +22,7 @@
 //! (general solution φ_∞ + A e^{−hn} + B e^{hn}; the Robin condition forces B = 0): a
 //! diffusion layer whose decay length 1/h is the slip length of the wall condition, so Eq. 12
 //! holds at every depth, not only at the wall. [`RobinProfile::discrete`] solves this BVP with
-//! the solver's wall-face closure ([`crate::RobinFace`], model-spec §3.2) on a uniform
+//! the solver's wall-face closure ([`crate::RobinFace`], docs/model.md §3.2) on a uniform
 //! cell-centred grid; it converges to the closed form at second order.
 //!
 //! L = 0.1 m (the case file's `depth`, assumed: Fig. 1's axis range is not in the text) is
@@ -75,7 +75,7 @@ impl RobinProfile {
     }
 
     /// Granular-temperature profile of paper Eq. 13: dθ/dn + h_θ (θ − θ_w) = c from
-    /// θ(0) = `bulk` (manual units, model-spec §3.3).
+    /// θ(0) = `bulk` (manual units, docs/model.md §3.3).
     pub fn temperature(bulk: f64, theta_w: f64, h_theta: f64, c: f64) -> Self {
         Self {
             bulk,
@@ -102,7 +102,7 @@ impl RobinProfile {
 
     /// Solves φ'' = h²(φ − φ_∞) (i.e. −φ'' + h² φ = h c_face) on [0, L] with `cells` uniform
     /// cells, φ = φ_b on the bulk face (a half-cell Dirichlet flux) and the wall face closed
-    /// by [`RobinFace::implicit_parts`] with Γ = 1, Δ = L/cells (model-spec §3.2): the
+    /// by [`RobinFace::implicit_parts`] with Γ = 1, Δ = L/cells (docs/model.md §3.2): the
     /// discretisation the solver uses. Tridiagonal M-matrix, solved by the Thomas algorithm.
     pub fn discrete(&self, depth: f64, cells: usize) -> DiscreteProfile {
         assert!(cells >= 1 && depth > 0.0, "need cells >= 1 and depth > 0");

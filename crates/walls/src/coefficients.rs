@@ -1,8 +1,8 @@
 //! The individual terms of the Johnson–Jackson and Jenkins wall conditions as MFIX computes
-//! them (model-spec §3.5, §3.6, §3.8; paper Table 2, Eqs. 14, 18–20). Pure functions of a
+//! them (docs/model.md §3.5, §3.6, §3.8; paper Table 2, Eqs. 14, 18–20). Pure functions of a
 //! few scalars; the models in [`crate::model`] assemble them.
 //!
-//! Where the paper's printed forms differ, these follow MFIX (model-spec §3.10): Table 2's
+//! Where the paper's printed forms differ, these follow MFIX (docs/model.md §3.10): Table 2's
 //! "(1 − εs*)" is εs,max = 1 − εg*; the JJ θ coefficient carries εs g0 (missing in Table 2);
 //! FRI is a stress, not divided by the slip speed.
 
@@ -10,7 +10,7 @@ use runout_closures::kinetic::SolidsState;
 use std::f64::consts::PI;
 
 /// JJ collisional coefficient COL = φ √(3θ) π ρs εs g0 / (6 εs,max) [kg m⁻² s⁻¹ = Pa s/m]
-/// (paper Table 2 with (1 − εs*) read as εs,max; model-spec §3.5 step 2; MFIX
+/// (paper Table 2 with (1 − εs*) read as εs,max; docs/model.md §3.5 step 2; MFIX
 /// CALC_GRBDRY_COLLISIONAL). The second term of paper Eq. 14 divided by |u_sl|, with JJ's
 /// εs,max[1 − (εs/εs,max)^{1/3}] replaced by εs,max/g0. Linear in φ.
 #[inline]
@@ -19,7 +19,7 @@ pub fn collisional_johnson_jackson(specularity: f64, s: &SolidsState, eps_s_max:
 }
 
 /// Jenkins collisional coefficient COL = tan δ_w P_kin/|u_sl| [Pa s/m], 0 at zero slip
-/// (paper Table 2; model-spec §3.8; MFIX CALC_GRBDRY_COLLISIONAL with `JENKINS`).
+/// (paper Table 2; docs/model.md §3.8; MFIX CALC_GRBDRY_COLLISIONAL with `JENKINS`).
 #[inline]
 pub fn collisional_jenkins(tan_wall_friction: f64, p_kin: f64, slip: f64) -> f64 {
     if slip == 0.0 {
@@ -30,8 +30,8 @@ pub fn collisional_jenkins(tan_wall_friction: f64, p_kin: f64, slip: f64) -> f64
 }
 
 /// Frictional (Coulomb) term FRI = tan δ_w (P_f − 2 μ_f S_nn) \[Pa\] (paper Eq. 14 third
-/// term with the Princeton stress; model-spec §3.5 step 3; MFIX CALC_GRBDRY_FRICTIONAL).
-/// Not divided by |u_sl|: MFIX adds it to COL as coded (model-spec §3.5 step 4, §3.10.5).
+/// term with the Princeton stress; docs/model.md §3.5 step 3; MFIX CALC_GRBDRY_FRICTIONAL).
+/// Not divided by |u_sl|: MFIX adds it to COL as coded (docs/model.md §3.5 step 4, §3.10.5).
 #[inline]
 pub fn frictional(tan_wall_friction: f64, p_fric: f64, mu_fric: f64, s_nn: f64) -> f64 {
     tan_wall_friction * (p_fric - 2.0 * mu_fric * s_nn)
@@ -39,7 +39,7 @@ pub fn frictional(tan_wall_friction: f64, p_fric: f64, mu_fric: f64, s_nn: f64) 
 
 /// JJ granular-energy wall dissipation coefficient
 /// h_θ = (π√3/(4 εs,max)) (1 − e_w²) ρs εs g0 √θ [kg m⁻² s⁻¹], so that h_θ θ is the
-/// dissipation D of paper Eq. 19 in MFIX's form (model-spec §3.6; MFIX `bc_theta.f`
+/// dissipation D of paper Eq. 19 in MFIX's form (docs/model.md §3.6; MFIX `bc_theta.f`
 /// THETA_HW_CW; paper Table 2 lacks the εs g0 factor).
 #[inline]
 pub fn h_theta_johnson_jackson(wall_restitution: f64, s: &SolidsState, eps_s_max: f64) -> f64 {
@@ -52,7 +52,7 @@ pub fn h_theta_johnson_jackson(wall_restitution: f64, s: &SolidsState, eps_s_max
 }
 
 /// JJ slip generation c_θ = (π√3/(6 εs,max)) φ ρs εs g0 √θ |u_sl|² [kg s⁻³]
-/// (u_sl·S_c^b of paper Eq. 18; model-spec §3.6; MFIX THETA_HW_CW).
+/// (u_sl·S_c^b of paper Eq. 18; docs/model.md §3.6; MFIX THETA_HW_CW).
 #[inline]
 pub fn c_theta_johnson_jackson(
     specularity: f64,
@@ -71,7 +71,7 @@ pub fn c_theta_johnson_jackson(
 }
 
 /// Jenkins wall dissipation h_θ = (3/8) √(3θ) (1 − e_w) P_kin/θ [kg m⁻² s⁻¹]
-/// (paper Eq. 20 second term, Table 2; model-spec §3.8). θ > 0.
+/// (paper Eq. 20 second term, Table 2; docs/model.md §3.8). θ > 0.
 #[inline]
 pub fn h_theta_jenkins(wall_restitution: f64, theta: f64, p_kin: f64) -> f64 {
     // P_kin/θ first: P_kin ∝ θ, so the product √θ · P_kin would underflow for tiny θ
@@ -79,7 +79,7 @@ pub fn h_theta_jenkins(wall_restitution: f64, theta: f64, p_kin: f64) -> f64 {
 }
 
 /// Jenkins slip generation c_θ = (21/16) tan²δ_w (1 + e_w) √(3θ) P_kin [kg s⁻³]
-/// (paper Eq. 20 first term, Table 2; model-spec §3.8).
+/// (paper Eq. 20 first term, Table 2; docs/model.md §3.8).
 #[inline]
 pub fn c_theta_jenkins(
     tan_wall_friction: f64,

@@ -1,15 +1,15 @@
-//! The discrete Robin closure on a wall face (model-spec §3.2).
+//! The discrete Robin closure on a wall face (docs/model.md §3.2).
 //!
 //! For a tangential component φ (a velocity of a phase, or θ) MFIX writes one equation per
 //! ghost cell, g (φ_G − φ_F)/Δ + h (φ_G + φ_F)/2 = c: the normal derivative (fluid → wall)
 //! as a two-point difference across the face and the face value as the mean of ghost and
 //! fluid values; Δ is the distance between the ghost and fluid centres, which equals the
-//! fluid cell's width (model-spec §3.1). Eliminating φ_G gives the wall-face flux and face
+//! fluid cell's width (docs/model.md §3.1). Eliminating φ_G gives the wall-face flux and face
 //! value used in the fluid cell's equation, so no ghost unknowns are needed.
 
 /// Robin coefficients of g ∂φ/∂n + h φ_face = c on a wall face (n from the fluid into the
 /// wall). Momentum forms use g = 1, c = h U_w (paper Eq. 12); the Johnson–Jackson θ form uses
-/// g = κ (model-spec §3.6).
+/// g = κ (docs/model.md §3.6).
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct RobinFace {
     /// coefficient of the normal derivative [same units as the conductivity or 1]
@@ -37,7 +37,7 @@ impl RobinFace {
         }
     }
 
-    /// Partial slip du/dn + h (u − U_w) = 0 (paper Eq. 12; model-spec §3.2): g = 1, c = h U_w.
+    /// Partial slip du/dn + h (u − U_w) = 0 (paper Eq. 12; docs/model.md §3.2): g = 1, c = h U_w.
     pub fn partial_slip(h: f64, wall_value: f64) -> RobinFace {
         RobinFace {
             g: 1.0,
@@ -46,7 +46,7 @@ impl RobinFace {
         }
     }
 
-    /// User θ condition dθ/dn + h_θ (θ − θ_w) = C (model-spec §3.3): g = 1, c = C + h_θ θ_w.
+    /// User θ condition dθ/dn + h_θ (θ − θ_w) = C (docs/model.md §3.3): g = 1, c = C + h_θ θ_w.
     pub fn user_theta(h_theta: f64, theta_w: f64, flux: f64) -> RobinFace {
         RobinFace {
             g: 1.0,
@@ -79,7 +79,7 @@ impl RobinFace {
 
     /// Diffusive flux out of the fluid cell through the wall face per unit area,
     /// Γ (φ_F − φ_G)/Δ = Γ (h φ_F − c)/(g + hΔ/2), with Γ the fluid cell's transport
-    /// coefficient (model-spec §3.1).
+    /// coefficient (docs/model.md §3.1).
     #[inline]
     pub fn flux(&self, gamma: f64, phi_fluid: f64, delta: f64) -> f64 {
         let (a, b) = self.implicit_parts(gamma, delta);

@@ -1,21 +1,21 @@
 //! runout-walls: the solid–wall boundary conditions of the paper as Robin coefficients
-//! (`shared/docs/model-spec.md` §3; paper §2.2, Eqs. 12–20, Table 2).
+//! (`docs/model.md` §3; paper §2.2, Eqs. 12–20, Table 2).
 //!
 //! Every wall condition of a tangential quantity φ (a solids velocity component, or θ) is
 //! g ∂φ/∂n + h φ = c with n from the fluid into the wall ([`RobinFace`]); MFIX discretises it
-//! across the wall face as g (φ_G − φ_F)/Δ + h (φ_G + φ_F)/2 = c (model-spec §3.2), and
+//! across the wall face as g (φ_G − φ_F)/Δ + h (φ_G + φ_F)/2 = c (docs/model.md §3.2), and
 //! [`RobinFace`] eliminates the ghost value into the face flux and face value the solver uses.
 //!
 //! The models ([`SolidsWallModel`]):
 //! - no-slip, free-slip (MFIX NSW, FSW with `BC_JJ_PS = 0`);
-//! - user partial slip, paper Eqs. 12–13 in MFIX's manual units (model-spec §3.3);
+//! - user partial slip, paper Eqs. 12–13 in MFIX's manual units (docs/model.md §3.3);
 //! - Johnson & Jackson (1987) with a constant specularity: momentum h_w^u = COL/μ_k or
-//!   (COL + FRI)/(μ_k + μ_f) with the Princeton frictional add-on (model-spec §3.5), θ flux
+//!   (COL + FRI)/(μ_k + μ_f) with the Princeton frictional add-on (docs/model.md §3.5), θ flux
 //!   form κ ∂θ/∂n + h_θ θ = c_θ (§3.6);
 //! - revisited JJ with Li & Benyahia's φ(r) in MFIX's continuous form ([`specularity`], §3.7);
 //! - Jenkins (1992), small-friction all-sliding limit (§3.8).
 //!
-//! Where the paper's printed equations differ from MFIX the code follows MFIX (model-spec
+//! Where the paper's printed equations differ from MFIX the code follows MFIX (docs/model.md
 //! §3.10): Eq. 16's linear branch carries 1/(8k); Table 2's (1 − εs*) is εs,max; the JJ h_θ
 //! carries εs g0; FRI is not divided by the slip speed; the manual θ coefficients are in m⁻¹
 //! and m s⁻².

@@ -1,4 +1,4 @@
-//! The solids wall models of the paper as Robin coefficients (model-spec §3.2–3.8).
+//! The solids wall models of the paper as Robin coefficients (docs/model.md §3.2–3.8).
 //!
 //! Per wall face, each outer iteration, the solver calls
 //! - [`SolidsWallModel::momentum`] with a [`MomentumWallState`] for each solids tangential
@@ -9,7 +9,7 @@
 //!
 //! Closure parameters (particles, gas, εs,max, εs,min, φ, g0 model, friction model) come from
 //! [`ClosureParams`]; its drag law is not used: the wall routines estimate the drag in μ*, κ*
-//! with Wen–Yu (model-spec §2.6 last bullet).
+//! with Wen–Yu (docs/model.md §2.6 last bullet).
 
 use crate::coefficients::{
     c_theta_jenkins, c_theta_johnson_jackson, collisional_jenkins, collisional_johnson_jackson,
@@ -73,9 +73,9 @@ impl Default for WallContact {
 }
 
 /// User-set partial slip (paper Eqs. 12–13; MFIX PSW with `BC_JJ_PS = 0`) in MFIX's manual
-/// units (model-spec §3.3): du/dn + h_u (u − U_w) = 0 and dθ/dn + h_θ (θ − θ_w) = c, with h in
+/// units (docs/model.md §3.3): du/dn + h_u (u − U_w) = 0 and dθ/dn + h_θ (θ − θ_w) = c, with h in
 /// m⁻¹ and c in m s⁻² — no conductivity factor, unlike the JJ flux form whose units the
-/// paper's Table 1 prints (model-spec §3.10.6).
+/// paper's Table 1 prints (docs/model.md §3.10.6).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct UserPartialSlip {
     /// h_w^u [m⁻¹] (MFIX `BC_HW_S`)
@@ -109,7 +109,7 @@ impl UserPartialSlip {
 pub enum Specularity {
     /// a constant φ ∈ [0, 1] (MFIX `PHIP`)
     Constant(f64),
-    /// Li & Benyahia's φ(r), r = |u_sl|/√(3θ) (MFIX `BC_JJ_M`, model-spec §3.7)
+    /// Li & Benyahia's φ(r), r = |u_sl|/√(3θ) (MFIX `BC_JJ_M`, docs/model.md §3.7)
     LiBenyahia(LiBenyahia),
 }
 
@@ -124,26 +124,26 @@ impl Specularity {
     }
 }
 
-/// A solids wall condition (paper §2.2; model-spec §3), parameters validated.
+/// A solids wall condition (paper §2.2; docs/model.md §3), parameters validated.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub enum SolidsWallModel {
     /// MFIX NSW with `BC_JJ_PS = 0`: face velocity 0 (the wall velocity is ignored,
-    /// model-spec §3.2 table); zero θ gradient (runout's case schema: zero granular-energy
+    /// docs/model.md §3.2 table); zero θ gradient (runout's case schema: zero granular-energy
     /// flux)
     NoSlip,
     /// MFIX FSW with `BC_JJ_PS = 0`: zero tangential stress, zero θ gradient
     FreeSlip,
-    /// user-set partial slip, paper Eqs. 12–13 (model-spec §3.3)
+    /// user-set partial slip, paper Eqs. 12–13 (docs/model.md §3.3)
     PartialSlip(UserPartialSlip),
     /// Johnson & Jackson (1987), `BC_JJ_PS = 1`, constant or Li–Benyahia specularity
-    /// (model-spec §3.5–3.7)
+    /// (docs/model.md §3.5–3.7)
     JohnsonJackson {
         /// φ or φ(r)
         specularity: Specularity,
         /// e_w, δ_w, U_w
         contact: WallContact,
     },
-    /// Jenkins (1992) small-friction, all-sliding limit, `JENKINS = .TRUE.` (model-spec §3.8)
+    /// Jenkins (1992) small-friction, all-sliding limit, `JENKINS = .TRUE.` (docs/model.md §3.8)
     Jenkins {
         /// e_w, δ_w, U_w
         contact: WallContact,
@@ -151,7 +151,7 @@ pub enum SolidsWallModel {
 }
 
 impl SolidsWallModel {
-    /// User partial slip (paper Eqs. 12–13, MFIX manual units of model-spec §3.3).
+    /// User partial slip (paper Eqs. 12–13, MFIX manual units of docs/model.md §3.3).
     pub fn partial_slip(
         h_u: f64,
         u_w: f64,
@@ -179,7 +179,7 @@ impl SolidsWallModel {
     }
 
     /// Revisited Johnson–Jackson: Li & Benyahia's φ(r) (paper Eqs. 16–17 in MFIX's continuous
-    /// form, model-spec §3.7), φ₀ from k unless `phi0` is given (MFIX `PHIP0`).
+    /// form, docs/model.md §3.7), φ₀ from k unless `phi0` is given (MFIX `PHIP0`).
     pub fn revisited_johnson_jackson(
         wall_restitution: f64,
         wall_friction_angle: f64,
@@ -194,7 +194,7 @@ impl SolidsWallModel {
         })
     }
 
-    /// Jenkins' small-friction, all-sliding limit (paper Eq. 20, model-spec §3.8).
+    /// Jenkins' small-friction, all-sliding limit (paper Eq. 20, docs/model.md §3.8).
     pub fn jenkins(
         wall_restitution: f64,
         wall_friction_angle: f64,
@@ -218,15 +218,15 @@ impl SolidsWallModel {
     }
 
     /// Robin coefficients of one solids tangential velocity on a wall face, g du/dn +
-    /// h u_face = c (model-spec §3.2), and the diagnostics the paper plots.
+    /// h u_face = c (docs/model.md §3.2), and the diagnostics the paper plots.
     ///
-    /// JJ and Jenkins follow model-spec §3.5 (MFIX `calc_grbdry.f` CALC_GRBDRY):
+    /// JJ and Jenkins follow docs/model.md §3.5 (MFIX `calc_grbdry.f` CALC_GRBDRY):
     /// 0. εs of the fluid cell ≤ `DIL_EP_S` (1e-4): free slip (step 6);
     /// 1. θ ≤ 0 → 1e-8; μ_k, P_k from Lun (1984) at the interpolated εs, θ with the Wen–Yu
     ///    DgA in μ* (dry if ρ_g = 0);
     /// 2. COL: JJ φ √(3θ) π ρs εs g0/(6 εs,max), φ = PHIP or φ(r); Jenkins tan δ_w P_k/|u_sl|;
     /// 3. Princeton friction and fluid-cell εs > εs,min: if the interpolated εs > εs,min too,
-    ///    P_f, μ_f from model-spec §2.4.2 with S:S ≥ 1e-10 and FRI = tan δ_w (P_f − 2 μ_f S_nn),
+    ///    P_f, μ_f from docs/model.md §2.4.2 with S:S ≥ 1e-10 and FRI = tan δ_w (P_f − 2 μ_f S_nn),
     ///    else FRI = μ_f = 0; then h = 0 if |u_sl| = 0 (or ζ = 0), else
     ///    h = (COL + FRI)/(μ_k + μ_f) — FRI not divided by |u_sl|, as coded in MFIX;
     /// 4. otherwise h = COL/μ_k;
@@ -263,12 +263,12 @@ impl SolidsWallModel {
         }
     }
 
-    /// Robin coefficients of θ on a wall face, g ∂θ/∂n + h θ_face = c (model-spec §3.2),
+    /// Robin coefficients of θ on a wall face, g ∂θ/∂n + h θ_face = c (docs/model.md §3.2),
     /// and diagnostics.
     ///
     /// - no-slip, free-slip: zero gradient (g = 1, h = c = 0);
-    /// - user partial slip: g = 1, h = h_θ, c = c_w + h_θ θ_w (model-spec §3.3, manual units);
-    /// - JJ, Jenkins (model-spec §3.6, §3.8; MFIX `bc_theta.f`): zero gradient if the fluid
+    /// - user partial slip: g = 1, h = h_θ, c = c_w + h_θ θ_w (docs/model.md §3.3, manual units);
+    /// - JJ, Jenkins (docs/model.md §3.6, §3.8; MFIX `bc_theta.f`): zero gradient if the fluid
     ///   cell's εs ≤ `DIL_EP_S`; else, with θ ≤ 0 → 1e-8 and the fluid cell's εs, g0:
     ///   g = κ_s (Lun, Wen–Yu DgA in κ*), and
     ///   JJ h_θ = (π√3/(4 εs,max))(1 − e_w²) ρs εs g0 √θ,
@@ -365,7 +365,7 @@ enum Collision {
 }
 
 /// The gas coupling of μ*, κ* at a wall: dry if ρ_g = 0, else the Wen–Yu DgA at the wall
-/// face with εg = 1 − εs (1e32 at zero relative speed) (model-spec §2.6 last bullet, §3.5
+/// face with εg = 1 − εs (1e32 at zero relative speed) (docs/model.md §2.6 last bullet, §3.5
 /// step 1; MFIX CALC_MU_SV_BDRY).
 pub fn wall_gas_coupling(eps_s: f64, gas_slip: f64, params: &ClosureParams) -> GasCoupling {
     if params.gas.density == 0.0 {
@@ -381,7 +381,7 @@ pub fn wall_gas_coupling(eps_s: f64, gas_slip: f64, params: &ClosureParams) -> G
     }
 }
 
-/// JJ / Jenkins momentum coefficient (model-spec §3.5 steps 1–6, §3.8).
+/// JJ / Jenkins momentum coefficient (docs/model.md §3.5 steps 1–6, §3.8).
 fn kinetic_momentum(
     collision: Collision,
     contact: &WallContact,
@@ -495,13 +495,13 @@ pub enum MomentumBranch {
     FreeSlip,
     /// user partial slip
     User,
-    /// JJ/Jenkins next to a cell with εs ≤ `DIL_EP_S`: free slip (model-spec §3.5 step 6)
+    /// JJ/Jenkins next to a cell with εs ≤ `DIL_EP_S`: free slip (docs/model.md §3.5 step 6)
     DiluteFreeSlip,
     /// h = COL/μ_k (no Princeton friction, or fluid-cell εs ≤ εs,min)
     Kinetic,
     /// h = (COL + FRI)/(μ_k + μ_f)
     KineticFrictional,
-    /// frictional branch at zero slip: h = 0 (model-spec §3.5 step 4)
+    /// frictional branch at zero slip: h = 0 (docs/model.md §3.5 step 4)
     ZeroSlip,
 }
 

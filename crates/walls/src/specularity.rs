@@ -1,9 +1,9 @@
 //! Li & Benyahia (2012) variable specularity φ(r), the paper's "revisited Johnson–Jackson"
-//! (paper Eqs. 16–17; model-spec §3.7; MFIX 21.3.2 `bc_theta.f` PHIP_JJ and
+//! (paper Eqs. 16–17; docs/model.md §3.7; MFIX 21.3.2 `bc_theta.f` PHIP_JJ and
 //! `check_data/check_bc_walls.f` for φ₀, identical in 2016-1).
 //!
 //! Paper Eq. 16 prints the linear branch as −7√(6π) φ₀² r + φ₀, which jumps at the switch
-//! (model-spec §3.10.4); MFIX, and this module, use −7√(6π) φ₀² r/(8k) + φ₀, which is
+//! (docs/model.md §3.10.4); MFIX, and this module, use −7√(6π) φ₀² r/(8k) + φ₀, which is
 //! continuous: both branches equal φ₀/2 at r* = 4k/(7√(6π) φ₀).
 
 use crate::error::{check, WallError};
@@ -13,7 +13,7 @@ use std::f64::consts::PI;
 const K_FACTOR: f64 = 3.5;
 
 /// Coefficients c₀…c₆ of the φ₀(k) polynomial, as MFIX codes them to full precision
-/// (model-spec §3.7; `check_bc_walls.f`; paper Eq. 17 prints them rounded).
+/// (docs/model.md §3.7; `check_bc_walls.f`; paper Eq. 17 prints them rounded).
 const PHI0_POLYNOMIAL: [f64; 7] = [
     -0.0012596340709032689,
     0.10645510095633175,
@@ -25,10 +25,10 @@ const PHI0_POLYNOMIAL: [f64; 7] = [
 ];
 
 /// Below (and at) this k, φ₀ = [`PHI0_SMALL_K_SLOPE`] · k instead of the polynomial
-/// (model-spec §3.7; `check_bc_walls.f`).
+/// (docs/model.md §3.7; `check_bc_walls.f`).
 pub const PHI0_SMALL_K: f64 = 0.2;
 
-/// Slope of the small-k branch φ₀ = 0.09094568176225006 k (model-spec §3.7).
+/// Slope of the small-k branch φ₀ = 0.09094568176225006 k (docs/model.md §3.7).
 pub const PHI0_SMALL_K_SLOPE: f64 = 0.09094568176225006;
 
 /// 7√(6π) [-], the constant of both branches of paper Eq. 16.
@@ -36,14 +36,14 @@ fn seven_sqrt_6pi() -> f64 {
     7.0 * (6.0 * PI).sqrt()
 }
 
-/// k = (7/2) tan δ_w (1 + e_w) [-] (paper Eq. 16 text; model-spec §3.7).
+/// k = (7/2) tan δ_w (1 + e_w) [-] (paper Eq. 16 text; docs/model.md §3.7).
 #[inline]
 pub fn k_parameter(wall_restitution: f64, tan_wall_friction: f64) -> f64 {
     K_FACTOR * tan_wall_friction * (1.0 + wall_restitution)
 }
 
 /// φ₀(k) [-]: the sixth-order polynomial of paper Eq. 17 with MFIX's full-precision
-/// coefficients, or 0.09094568176225006 k if k ≤ 0.2 (model-spec §3.7).
+/// coefficients, or 0.09094568176225006 k if k ≤ 0.2 (docs/model.md §3.7).
 #[inline]
 pub fn phi0_from_k(k: f64) -> f64 {
     if k <= PHI0_SMALL_K {
@@ -60,7 +60,7 @@ pub fn normalized_slip(slip: f64, theta: f64) -> f64 {
     slip / (3.0 * theta).sqrt()
 }
 
-/// The Li–Benyahia specularity law of one wall: k and φ₀ (model-spec §3.7).
+/// The Li–Benyahia specularity law of one wall: k and φ₀ (docs/model.md §3.7).
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
 pub struct LiBenyahia {
     /// k = (7/2) tan δ_w (1 + e_w) [-]
@@ -71,7 +71,7 @@ pub struct LiBenyahia {
 
 impl LiBenyahia {
     /// The law for particle–wall restitution e_w ∈ [0, 1], tan δ_w ≥ 0 and an optional φ₀
-    /// override (MFIX `PHIP0`); φ₀ outside [0, 1] is an input error (model-spec §3.7), and so
+    /// override (MFIX `PHIP0`); φ₀ outside [0, 1] is an input error (docs/model.md §3.7), and so
     /// is k = 0 with φ₀ > 0 (the linear branch divides by k).
     pub fn new(
         wall_restitution: f64,
@@ -97,7 +97,7 @@ impl LiBenyahia {
     }
 
     /// Switch point r* = 4k/(7√(6π) φ₀) [-] between the linear and the 1/r branch
-    /// (model-spec §3.7); +∞ when φ₀ = 0 (then φ ≡ 0).
+    /// (docs/model.md §3.7); +∞ when φ₀ = 0 (then φ ≡ 0).
     #[inline]
     pub fn switch_ratio(&self) -> f64 {
         if self.phi0 == 0.0 {
@@ -107,7 +107,7 @@ impl LiBenyahia {
         }
     }
 
-    /// φ(r) [-] (paper Eq. 16 as MFIX codes it, model-spec §3.7):
+    /// φ(r) [-] (paper Eq. 16 as MFIX codes it, docs/model.md §3.7):
     /// φ₀ − (7√(6π) φ₀²/(8k)) r for r ≤ r*, 2k/(7√(6π) r) beyond. Continuous,
     /// non-increasing, in [0, φ₀] for r ≥ 0.
     #[inline]

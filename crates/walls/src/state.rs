@@ -1,5 +1,5 @@
 //! The near-wall states the wall models take, and the small gathering rules MFIX applies when
-//! it builds them (model-spec §3.5 "Where the quantities are evaluated", §3.6 "Evaluation
+//! it builds them (docs/model.md §3.5 "Where the quantities are evaluated", §3.6 "Evaluation
 //! point", §2.7).
 //!
 //! The solver gathers one [`MomentumWallState`] per wall face of a solids tangential velocity
@@ -10,11 +10,11 @@ use runout_closures::guards::{THETA_SMALL, THETA_WALL_FLOOR};
 use serde::Serialize;
 
 /// Floor on S:S at the wall: S:S = max(1e-10, tr(D²) − (tr D)²/3) [1/s²]
-/// (model-spec §3.5 step 3; MFIX `calc_s_ddot_s.f`).
+/// (docs/model.md §3.5 step 3; MFIX `calc_s_ddot_s.f`).
 pub const WALL_S_DDOT_S_FLOOR: f64 = 1e-10;
 
 /// Near-wall state of the solids tangential-momentum condition at one wall face
-/// (model-spec §3.5). For U on a floor: the U-location (x_{i+½}) of the wall face.
+/// (docs/model.md §3.5). For U on a floor: the U-location (x_{i+½}) of the wall face.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct MomentumWallState {
     /// εs of the fluid cell next to the wall (MFIX IJK2) [-]: decides the dilute skip
@@ -30,7 +30,7 @@ pub struct MomentumWallState {
     /// values (the face value of the lagged [`crate::RobinFace`]) and the normal component 0
     pub slip: f64,
     /// gas–solids relative speed |u_g − u_s| at the wall face [m/s], for the Wen–Yu drag in
-    /// μ*, κ* (model-spec §2.6 last bullet)
+    /// μ*, κ* (docs/model.md §2.6 last bullet)
     pub gas_slip: f64,
     /// tr D = ∇·u_s at the wall location [1/s] (MFIX CALC_S_DDOT_S, from ghost and fluid
     /// velocities)
@@ -41,7 +41,7 @@ pub struct MomentumWallState {
     pub s_nn: f64,
 }
 
-/// Near-wall state of the granular-temperature condition at one wall face (model-spec §3.6):
+/// Near-wall state of the granular-temperature condition at one wall face (docs/model.md §3.6):
 /// the fluid cell's own values, no interpolation.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct ThetaWallState {
@@ -57,7 +57,7 @@ pub struct ThetaWallState {
     pub gas_slip: f64,
 }
 
-/// Strain-rate invariants at the wall location (model-spec §3.5 step 3).
+/// Strain-rate invariants at the wall location (docs/model.md §3.5 step 3).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct WallStrain {
     /// tr D [1/s]
@@ -86,9 +86,9 @@ impl WallStrain {
 }
 
 /// θ used by the JJ/Jenkins coefficient routines: values ≤ 0 become 1e-8 m²/s²
-/// (model-spec §2.7 last row, §3.5–3.6; MFIX `calc_grbdry.f` CALC_MU_SV_BDRY, `bc_theta.f`).
+/// (docs/model.md §2.7 last row, §3.5–3.6; MFIX `calc_grbdry.f` CALC_MU_SV_BDRY, `bc_theta.f`).
 /// Positive values below θ_small = 1e-12 m²/s² are raised to θ_small: MFIX never holds such
-/// a θ (`adjust_theta.f` clips every solve, model-spec §2.7), and below `SMALL_NUMBER` κ*
+/// a θ (`adjust_theta.f` clips every solve, docs/model.md §2.7), and below `SMALL_NUMBER` κ*
 /// would vanish, leaving the θ face with g = 0 (and h = 0 for e_w = 1).
 #[inline]
 pub fn wall_theta(theta: f64) -> f64 {
@@ -99,7 +99,7 @@ pub fn wall_theta(theta: f64) -> f64 {
     }
 }
 
-/// θ at the wall-face corner point for the momentum condition (model-spec §3.5; MFIX
+/// θ at the wall-face corner point for the momentum condition (docs/model.md §3.5; MFIX
 /// CALC_BDRY_QOI): the mean of the x-averaged ghost-row and fluid-row values, where a negative
 /// row value is replaced by the other row's value, and θ_small = 1e-12 m²/s² if both are
 /// negative. `ghost_row`, `fluid_row` are the x-averages AVG_X in each row.
@@ -113,7 +113,7 @@ pub fn corner_theta(ghost_row: f64, fluid_row: f64) -> f64 {
     }
 }
 
-/// θ on a wall face for the θ condition (model-spec §3.6; MFIX `bc_theta.f`): the mean of
+/// θ on a wall face for the θ condition (docs/model.md §3.6; MFIX `bc_theta.f`): the mean of
 /// ghost and fluid θ, θ_small = 1e-12 m²/s² if negative.
 #[inline]
 pub fn face_theta(ghost: f64, fluid: f64) -> f64 {

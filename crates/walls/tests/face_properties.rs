@@ -1,4 +1,4 @@
-//! Properties of the discrete wall-face closure (model-spec §3.2) and its convergence to the
+//! Properties of the discrete wall-face closure (docs/model.md §3.2) and its convergence to the
 //! closed-form Robin profiles of family A (paper Eqs. 12–13; `runout_walls::analytic`).
 
 use proptest::prelude::*;

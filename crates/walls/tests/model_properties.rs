@@ -1,4 +1,4 @@
-//! Properties of the wall models (model-spec §3.5–3.8): JJ collisional part linear in φ,
+//! Properties of the wall models (docs/model.md §3.5–3.8): JJ collisional part linear in φ,
 //! h_w^u growing with φ, Li–Benyahia φ(r) shape and the paper's k, φ₀, r*, Jenkins θ
 //! coefficients non-negative, and no NaN or infinity for θ → 0, zero slip and εs → 0.
 
@@ -205,7 +205,7 @@ proptest! {
     }
 }
 
-/// model-spec §3.7: with the paper's e_w = 0.7 and δ_w = 11°, k = 1.1565628,
+/// docs/model.md §3.7: with the paper's e_w = 0.7 and δ_w = 11°, k = 1.1565628,
 /// φ₀ = 0.0776198, switch at r = 1.96114; φ(r) at r = 0.5, 1, 2, 5, 10 from
 /// verification-notes §2a, printed to 4 decimals (±1 in the last digit: 0.06773 is printed
 /// 0.0678 there).
@@ -246,7 +246,7 @@ fn li_benyahia_paper_values() {
     );
 }
 
-/// Model-spec §3.5 steps 4 and 6, and §3.8: the branch rules.
+/// docs/model.md §3.5 steps 4 and 6, and §3.8: the branch rules.
 #[test]
 fn branch_rules() {
     let p = ClosureParams::default();
@@ -267,7 +267,7 @@ fn branch_rules() {
     assert!((d.h_u - (d.col + d.fri) / (d.mu_kin + d.mu_fric)).abs() < 1e-12 * d.h_u);
     // c = h U_w, g = 1
     assert_eq!((m.face.g, m.face.c), (1.0, d.h_u * 2.0));
-    // FRI = tan δ_w P_f at S_nn = 0; P_f = 1600 Pa at εs = 0.6, tr D = 0 (model-spec §2.4.2)
+    // FRI = tan δ_w P_f at S_nn = 0; P_f = 1600 Pa at εs = 0.6, tr D = 0 (docs/model.md §2.4.2)
     assert!((d.fri - DELTA_W.to_radians().tan() * 1600.0).abs() < 1e-6);
     // zero slip in the frictional branch: h = 0 (a resting block stays put)
     let rest = jj.momentum(&MomentumWallState { slip: 0.0, ..dense }, &p);

@@ -1,6 +1,6 @@
 //! Wall coefficients against independently computed reference values.
 //!
-//! `reference/generate.py` implements model-spec §2.2, §2.4.2, §2.6 (wall Wen–Yu) and
+//! `reference/generate.py` implements docs/model.md §2.2, §2.4.2, §2.6 (wall Wen–Yu) and
 //! §3.5–3.8 directly from the spec text in plain Python and writes `reference/values.json`:
 //! the JJ (φ = 1, 0.1, 0.01), revisited-JJ and Jenkins momentum and θ coefficients at dense
 //! sliding, kinetic, near-packing (dilating and compacting), zero-slip, negative-θ, air-cushion

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Independent reference values for runout-closures.
 
-Written directly from the text of shared/docs/model-spec.md §1.3 and §2 (not from the
+Written directly from the text of docs/model.md §1.3 and §2 (not from the
 Rust code), with plain `math`. Run from this directory:
 
     python3 generate.py            # writes values.json next to this script

@@ -171,7 +171,7 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
         ));
     }
     // one phase only: MFIX's P* of several phases uses the mixture εg and εs/Σε_cp weights
-    // (model-spec §2.4.1, §4.4), not implemented
+    // (docs/model.md §2.4.1, §4.4), not implemented
     if case.models.friction == FrictionModel::Schaeffer && case.solids.len() > 1 {
         return Err(unsupported(
             "Schaeffer friction with more than one solids phase is not implemented".into(),

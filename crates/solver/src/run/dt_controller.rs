@@ -1,8 +1,8 @@
-//! MFIX's adaptive time-step controller (model-spec §4.12).
+//! MFIX's adaptive time-step controller (docs/model.md §4.12).
 
 use serde::{Deserialize, Serialize};
 
-/// The adaptive time-step controller of MFIX (model-spec §4.12): after every block of
+/// The adaptive time-step controller of MFIX (docs/model.md §4.12): after every block of
 /// `steps_per_change` converged steps (MFIX `STEPS_MIN` = 5) it compares the outer iterations per simulated second with the previous block and
 /// keeps or reverses the direction of change; a failed step shrinks Δt and resets.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

@@ -1,4 +1,4 @@
-//! Running a case: the time loop with MFIX's adaptive time step (model-spec §4.12) and its
+//! Running a case: the time loop with MFIX's adaptive time step (docs/model.md §4.12) and its
 //! retries, the monitors, checkpoints and restarts, stopping on a signal, and the run
 //! summary.
 //!

@@ -1,6 +1,6 @@
-//! The two-fluid model: gas plus M solids phases (model-spec §1, §4.9), first version.
+//! The two-fluid model: gas plus M solids phases (docs/model.md §1, §4.9), first version.
 //!
-//! One outer iteration follows MFIX's DO_ITERATION (model-spec §4.9):
+//! One outer iteration follows MFIX's DO_ITERATION (docs/model.md §4.9):
 //! 1. closures per cell and phase at the current iterate (runout-closures `evaluate`):
 //!    μ_s, λ_s, P_s (kinetic + frictional, summed), κ_s, K_cp, F_gs and the θ sources;
 //! 2. momentum predictor of every phase ([`crate::momentum`]) with the current P_g and P_s,
@@ -8,18 +8,18 @@
 //! 3. solids volume-fraction correction of each phase ([`crate::volume_fraction`]);
 //!    εg = 1 − Σεs;
 //! 4. gas pressure correction from gas continuity with d_g of the partial elimination
-//!    (model-spec §4.6); the solids velocities are not corrected with P'_g;
+//!    (docs/model.md §4.6); the solids velocities are not corrected with P'_g;
 //! 5. granular energy of each phase ([`crate::energy`]), θ ≥ 10⁻¹² m²/s² (with Schaeffer
-//!    friction a fixed row θ = 10⁻¹² m²/s² where εg < εg*, model-spec §1.3);
-//! 6. residuals (model-spec §4.11).
+//!    friction a fixed row θ = 10⁻¹² m²/s² where εg < εg*, docs/model.md §1.3);
+//! 6. residuals (docs/model.md §4.11).
 //!
-//! Also: the explicit stress terms of model-spec §4.4 once per step ([`crate::stress`]);
+//! Also: the explicit stress terms of docs/model.md §4.4 once per step ([`crate::stress`]);
 //! per-face Johnson–Jackson, revisited-JJ and Jenkins closures with MFIX's near-wall state
 //! (§3.5–3.8, [`TwoFluid::update_walls`]); the wall face velocities in the strain rates of
 //! wall cells (§4.4); the continuity face values of the convection scheme (§4.2); the
 //! DIL_EP_S treatment of dilute faces and cells (§2.7, §4.8).
 //!
-//! Schaeffer friction (model-spec §2.4.1): the plastic pressure P* = A (εg* − εg)^10 is kept
+//! Schaeffer friction (docs/model.md §2.4.1): the plastic pressure P* = A (εg* − εg)^10 is kept
 //! per cell apart from P_s ([`SolidsFields::p_star`]) and enters only the solids momentum, as
 //! its own gradient −∇P* (§4.4); K_cp = dP*/dεs (§2.5); P* is recomputed from the corrected εs
 //! (§4.9 step 5); θ is forced to θ_small where εg < εg* (§1.3; as MFIX, by a fixed row of the
@@ -69,10 +69,10 @@ const PRESSURE_RTOL: f64 = 1e-2;
 /// microseconds, the closures of one cell about 0.1–0.2 µs).
 const PAR_MIN_CELLS: usize = 4096;
 
-/// θ floor after each solve (model-spec §1.3, MFIX `adjust_theta.f`).
+/// θ floor after each solve (docs/model.md §1.3, MFIX `adjust_theta.f`).
 const THETA_SMALL: f64 = runout_closures::guards::THETA_SMALL;
 
-/// Dilute threshold of solids faces and cells (MFIX `DIL_EP_S`, model-spec §2.7).
+/// Dilute threshold of solids faces and cells (MFIX `DIL_EP_S`, docs/model.md §2.7).
 const DIL_EP_S: f64 = runout_closures::guards::DIL_EP_S;
 
 /// One solids phase as the solver needs it.
@@ -88,11 +88,11 @@ pub struct SolidsSpec {
     pub theta_walls: Sides<Option<RobinFace>>,
     /// state-dependent wall models (Johnson–Jackson, revisited JJ, Jenkins) per side; where
     /// given they replace `walls` and `theta_walls` with per-face closures each outer
-    /// iteration (model-spec §3.5, §3.6, §3.8)
+    /// iteration (docs/model.md §3.5, §3.6, §3.8)
     pub wall_models: Sides<Option<SolidsWallModel>>,
 }
 
-/// Iteration settings (MFIX defaults, model-spec §4.10).
+/// Iteration settings (MFIX defaults, docs/model.md §4.10).
 #[derive(Clone, Debug)]
 pub struct TwoFluidSettings {
     /// convection scheme of the momentum and θ equations
@@ -121,7 +121,7 @@ pub struct TwoFluidSettings {
     /// converges by itself keeps MFIX's iteration. Not in MFIX (docs/performance.md,
     /// session 6).
     pub relax_wall_closures_oscillating_only: bool,
-    /// Freeze the class of a cell's θ row (dilute: εs ≤ DIL_EP_S, model-spec §4.8) to
+    /// Freeze the class of a cell's θ row (dilute: εs ≤ DIL_EP_S, docs/model.md §4.8) to
     /// dilute for the rest of the step once it has changed twice within the step
     /// ([`next_dilute_class`]). MFIX reclassifies every outer iteration; a cell whose εs
     /// straddles DIL_EP_S can then flip class every iteration: dense, its θ row heats it
@@ -146,7 +146,7 @@ pub struct TwoFluidSettings {
     /// cost 43 rejected steps and 57 % more steps; restricted to cells with εs > DIL_EP_S it
     /// no longer conserves (the dilute cells carry part of the remainder).
     pub exact_solids_continuity: bool,
-    /// MFIX's `DETECT_STALL` (default true, model-spec §4.11): at every 5th outer iteration
+    /// MFIX's `DETECT_STALL` (default true, docs/model.md §4.11): at every 5th outer iteration
     /// after the 10th, a hydrodynamic residual sum (momentum and continuity) that is not
     /// below its value 5 iterations before ends the step as failed, so it is retried with a
     /// smaller Δt instead of iterating to `max_iterations`.
@@ -171,13 +171,13 @@ impl Default for TwoFluidSettings {
     }
 }
 
-/// The closure values one cell contributes to the solver (model-spec §2), all zero where
+/// The closure values one cell contributes to the solver (docs/model.md §2), all zero where
 /// εs = 0.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct CellClosures {
     /// P_s = P_kin + P_fric [Pa]
     pub p_s: f64,
-    /// Schaeffer plastic pressure P* [Pa], 0 with other friction models (model-spec §2.4.1)
+    /// Schaeffer plastic pressure P* [Pa], 0 with other friction models (docs/model.md §2.4.1)
     pub p_star: f64,
     /// μ_s = μ_kin + μ_fric [Pa s]
     pub mu: f64,
@@ -241,7 +241,7 @@ pub struct SolidsFields {
     rho_eps_old: Vec<f64>,
     /// solids pressure P_s = P_kin + P_fric per cell [Pa]
     pub p_s: Vec<f64>,
-    /// Schaeffer plastic pressure P* per cell [Pa] (model-spec §2.4.1), all 0 with other
+    /// Schaeffer plastic pressure P* per cell [Pa] (docs/model.md §2.4.1), all 0 with other
     /// friction models; in the solids momentum only, as −∇P* (§4.4)
     pub p_star: Vec<f64>,
     mu: Vec<f64>,
@@ -255,16 +255,16 @@ pub struct SolidsFields {
     gamma_over_theta: Vec<f64>,
     j_slip: Vec<f64>,
     strain: Vec<Strain>,
-    /// dilute u and v faces of the current momentum assembly (model-spec §2.7)
+    /// dilute u and v faces of the current momentum assembly (docs/model.md §2.7)
     dilute_u: Vec<bool>,
     dilute_v: Vec<bool>,
     /// closure values per cell (the parallel evaluation's output)
     cells: Vec<CellClosures>,
     /// tangential velocity on the wall faces of the south/north rows (per column) and the
-    /// west/east columns (per row), from the wall closures (model-spec §3.2): what MFIX's
+    /// west/east columns (per row), from the wall closures (docs/model.md §3.2): what MFIX's
     /// ghost cells put into the strain rates of the wall cells (§4.4)
     wall_face_velocity: Sides<Vec<f64>>,
-    /// explicit stress sources of the u and v equations, once per step (model-spec §4.4)
+    /// explicit stress sources of the u and v equations, once per step (docs/model.md §4.4)
     tau_u: Vec<f64>,
     tau_v: Vec<f64>,
     tr_d: Vec<f64>,
@@ -285,7 +285,7 @@ pub struct SolidsFields {
     /// per-cell θ closures of the state-dependent walls
     wall_theta: WallFaces,
     /// the class of each cell's θ row at the last outer iteration (true: dense, a θ
-    /// equation; false: dilute, the mean of its dense neighbours; model-spec §4.8), and how
+    /// equation; false: dilute, the mean of its dense neighbours; docs/model.md §4.8), and how
     /// often it changed within the step ([`TwoFluidSettings::freeze_cycling_dilute_class`])
     theta_dense: Vec<bool>,
     theta_class_changes: Vec<u8>,
@@ -301,7 +301,7 @@ impl SolidsFields {
     }
 }
 
-/// Normalised residuals of one outer iteration (model-spec §4.11).
+/// Normalised residuals of one outer iteration (docs/model.md §4.11).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct TwoFluidResiduals {
     /// momentum of all phases and components, MFIX's normalisation, summed
@@ -478,7 +478,7 @@ pub struct TwoFluid {
     solver_v: Box<dyn LinearSolver>,
     solver_p: Box<dyn LinearSolver>,
     solver_eps: Box<dyn LinearSolver>,
-    /// MFIX's own ε' solver (BiCGSTAB with line relaxation, `LEQ_IT` 20, model-spec §4.13),
+    /// MFIX's own ε' solver (BiCGSTAB with line relaxation, `LEQ_IT` 20, docs/model.md §4.13),
     /// used where the multigrid-preconditioned solve breaks down
     solver_eps_fallback: Box<dyn LinearSolver>,
     solver_theta: Box<dyn LinearSolver>,
@@ -559,7 +559,7 @@ impl TwoFluid {
             pp.fix(0, 0).map_err(lin("p' pattern"))?;
         }
         let pc = Pattern::new(nx, ny).map_err(lin("cell pattern"))?;
-        // Momentum and θ are solved tighter than MFIX's LEQ_TOL = 1e-4 (model-spec §4.13):
+        // Momentum and θ are solved tighter than MFIX's LEQ_TOL = 1e-4 (docs/model.md §4.13):
         // with 1e-4 the normalised residuals of the outer iteration stall near 1e-4, the
         // size of the linear solves' own error, and θ's tolerance (1e-4) is never met.
         let transport = LinearSolverKind::transport_default(1e-8, 100);
@@ -569,7 +569,7 @@ impl TwoFluid {
         // iteration like any other, and on family M (coarse) the results agree with a 1e-4
         // solve to 6 digits at the same outer-iteration count while the solve costs half
         // (docs/performance.md). MFIX's own pressure solves stop near 1e-1 (20 line-relaxed
-        // BiCGSTAB iterations, model-spec §4.13).
+        // BiCGSTAB iterations, docs/model.md §4.13).
         let mut solver_p = build(&LinearSolverKind::MultigridCg(MultigridParams {
             rtol: PRESSURE_RTOL,
             max_iter: 20,
@@ -810,7 +810,7 @@ impl TwoFluid {
             for k in 0..nx * ny {
                 let c = s.cells[k];
                 s.p_s[k] = c.p_s;
-                s.p_star[k] = c.p_star; // P* from the current εs (model-spec §2.4.1)
+                s.p_star[k] = c.p_star; // P* from the current εs (docs/model.md §2.4.1)
                 s.mu[k] = c.mu;
                 s.lambda[k] = c.lambda;
                 s.kappa[k] = c.kappa;
@@ -828,8 +828,8 @@ impl TwoFluid {
     }
 
     /// Per-face closures of the state-dependent walls from the current iterate (lagged one
-    /// outer iteration, model-spec §3.5 last line), with the near-wall state gathered as MFIX
-    /// does (model-spec §3.5, §3.6; `calc_grbdry.f`, `calc_s_ddot_s.f`, `bc_theta.f`). The
+    /// outer iteration, docs/model.md §3.5 last line), with the near-wall state gathered as MFIX
+    /// does (docs/model.md §3.5, §3.6; `calc_grbdry.f`, `calc_s_ddot_s.f`, `bc_theta.f`). The
     /// ghost values MFIX stores are those the previous closures imply ([`RobinFace::ghost`]):
     /// - momentum, at each tangential-velocity node of the wall: εs interpolated between the
     ///   two fluid cells; θ the mean of the ghost- and fluid-row means over those cells
@@ -1113,7 +1113,7 @@ impl TwoFluid {
             &mut self.a_vg,
         );
         for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
-            // dilute faces (interpolated εs ≤ DIL_EP_S, model-spec §2.7): their rows are
+            // dilute faces (interpolated εs ≤ DIL_EP_S, docs/model.md §2.7): their rows are
             // replaced below, so the assembly skips them (most of a slide's domain)
             dilute_faces(
                 grid,
@@ -1145,7 +1145,7 @@ impl TwoFluid {
                 volume_fraction: &s.eps,
                 viscosity: &s.mu,
                 solids_pressure: Some(&s.p_s),
-                // −∇P* only with Schaeffer (model-spec §4.4); none with Princeton, where MFIX
+                // −∇P* only with Schaeffer (docs/model.md §4.4); none with Princeton, where MFIX
                 // never computes P* (§2.4.2)
                 plastic_pressure: (spec.params.friction_model == FrictionModel::Schaeffer)
                     .then_some(&s.p_star[..]),
@@ -1232,7 +1232,7 @@ impl TwoFluid {
                             (&s.a_v, &s.v)
                         };
                         // a face whose interpolated εs ≤ DIL_EP_S carries no solids momentum
-                        // (MFIX `source_u_s.f`, model-spec §2.7): its velocity is set below
+                        // (MFIX `source_u_s.f`, docs/model.md §2.7): its velocity is set below
                         dilute[p] = if dir == 0 {
                             s.dilute_u[k]
                         } else {
@@ -1297,7 +1297,7 @@ impl TwoFluid {
                     );
                     // area of the node's face for d and e
                     let area = if dir == 0 { dy[j] } else { dx[i] };
-                    // relaxed centre coefficients, d_g (model-spec §4.6), e_s (§4.7)
+                    // relaxed centre coefficients, d_g (docs/model.md §4.6), e_s (§4.7)
                     let gas_ap = a_out[0] / relax;
                     let eps_face_g = face_mean(&self.eps_g, c0, c1);
                     let mut numerator = eps_face_g;
@@ -1474,7 +1474,7 @@ impl TwoFluid {
                 &s.e_v,
                 &s.k_cp,
             );
-            // (Schaeffer only) P* from the corrected εs (model-spec §4.9 step 5)
+            // (Schaeffer only) P* from the corrected εs (docs/model.md §4.9 step 5)
             if spec.params.friction_model == FrictionModel::Schaeffer {
                 for (p, &e) in s.p_star.iter_mut().zip(&s.eps) {
                     *p = p_star(e, &spec.params.friction);
@@ -1485,7 +1485,7 @@ impl TwoFluid {
         Ok(total)
     }
 
-    /// Step 4: gas pressure correction from gas continuity (model-spec §4.6).
+    /// Step 4: gas pressure correction from gas continuity (docs/model.md §4.6).
     fn pressure_correction(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
         let grid = &self.grid;
         let (nx, ny) = (grid.nx(), grid.ny());
@@ -1493,7 +1493,7 @@ impl TwoFluid {
         let rho = self.gas.density;
         let eps = &self.eps_g;
         let scheme = self.settings.scheme;
-        // face εg (MFIX `DISCRETIZE(1)`, model-spec §4.2): upwind or Superbee between the
+        // face εg (MFIX `DISCRETIZE(1)`, docs/model.md §4.2): upwind or Superbee between the
         // cells lo and hi, `stride` apart; the inside cell's on the domain boundary
         let face = |vel: f64, lo: Option<usize>, hi: Option<usize>, stride: usize| -> f64 {
             match (lo, hi) {
@@ -1600,7 +1600,7 @@ impl TwoFluid {
         Ok(total / (nx * ny) as f64)
     }
 
-    /// Step 5: granular energy of each solids phase (model-spec §4.8).
+    /// Step 5: granular energy of each solids phase (docs/model.md §4.8).
     fn granular_energy(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
         let mut worst_theta = (0.0, 0);
         let relax = self.settings.relax_theta;
@@ -1651,20 +1651,20 @@ impl TwoFluid {
             }
             let a = &mut s.a_theta;
             let (mut num, mut den) = (0.0, 0.0);
-            // Schaeffer: θ = θ_small where εg < εg* (model-spec §1.3), as a fixed row before
+            // Schaeffer: θ = θ_small where εg < εg* (docs/model.md §1.3), as a fixed row before
             // the residual and not relaxed (MFIX `solve_granular_energy.f`, `under_relax.f`)
             let eps_g_star = (spec.params.friction_model == FrictionModel::Schaeffer)
                 .then_some(1.0 - spec.params.friction.eps_s_max);
             for k in 0..s.theta.len() {
                 if !s.theta_dense[k] {
                     // the mean θ of the neighbours with εs > DIL_EP_S, or kept if none
-                    // (model-spec §4.8, MFIX `source_phi.f`)
+                    // (docs/model.md §4.8, MFIX `source_phi.f`)
                     dilute_cell_row(a, k, s.theta[k], &s.theta_dense, nx);
                     continue;
                 }
                 let forced = eps_g_star.is_some_and(|star| self.eps_g[k] < star);
                 if forced {
-                    fixed_row(a, k, THETA_SMALL); // model-spec §1.3 (Schaeffer)
+                    fixed_row(a, k, THETA_SMALL); // docs/model.md §1.3 (Schaeffer)
                 }
                 let nb = neighbour_sum(a, &s.theta, k) - a.a_p[k] * s.theta[k];
                 num += nb.abs();
@@ -1775,7 +1775,7 @@ pub struct TwoFluidStep {
 }
 
 impl TwoFluid {
-    /// One implicit-Euler step of size `dt` (model-spec §4.9, §4.11): outer iterations until
+    /// One implicit-Euler step of size `dt` (docs/model.md §4.9, §4.11): outer iterations until
     /// the momentum residuals plus the gas and solids continuity residuals (each relative to
     /// its first iteration) sum to at most `tol` and the θ residual is at most `tol_theta`,
     /// after at least two iterations. A step that does not converge within `max_iterations`,
@@ -1861,7 +1861,7 @@ impl TwoFluid {
                 break;
             }
             // stall detection before the convergence test, as MFIX's check_convergence.f
-            // (model-spec §4.11): the step is then retried with a smaller Δt (§4.12)
+            // (docs/model.md §4.11): the step is then retried with a smaller Δt (§4.12)
             let nit = it + 1;
             if self.settings.detect_stall && nit % 5 == 0 {
                 if nit > 10 && sum5 <= out.residual {
@@ -1895,7 +1895,7 @@ impl TwoFluid {
     /// εs⁰ − Δt/V Σ (εs,face u·n A) with the step's final face fluxes, i.e. the imbalance
     /// the outer iteration left within its tolerance is removed where it sits. Without it
     /// that remainder accumulates where solids compact, because the selective relaxation of
-    /// positive ε' beyond εs,max (model-spec §4.7) leaves every step's imbalance with the
+    /// positive ε' beyond εs,max (docs/model.md §4.7) leaves every step's imbalance with the
     /// same sign (3e-7 of the solids over family M, 2e-5 over ST-schaeffer, 1e-7 over a
     /// coarse column collapse). The change is of the size of the step tolerance (MFIX keeps
     /// the remainder). Internal fluxes cancel in
@@ -1940,7 +1940,7 @@ impl TwoFluid {
     }
 
     /// The explicit stress sources of every solids phase from the current velocities and
-    /// closures (model-spec §4.4: once per step, at its start).
+    /// closures (docs/model.md §4.4: once per step, at its start).
     fn update_stress_sources(&mut self) {
         let fixed_u = self.a_ug.pattern().fixed_mask();
         let fixed_v = self.a_vg.pattern().fixed_mask();
@@ -2038,7 +2038,7 @@ fn solve_keeping_preconditioner(
 }
 
 /// Fills `s.wall_face_velocity` with the tangential solids velocity on each wall face (the
-/// face value of the wall closure, model-spec §3.2: per-node closures of a state-dependent
+/// face value of the wall closure, docs/model.md §3.2: per-node closures of a state-dependent
 /// wall, else the side's fixed closure), averaged from the two velocity nodes of each
 /// boundary cell to its centre (MFIX AVG_X_E). Returns which sides are walls.
 fn wall_face_velocities(grid: &Grid, spec: &SolidsSpec, s: &mut SolidsFields) -> Sides<bool> {
@@ -2094,7 +2094,7 @@ fn wall_face_velocities(grid: &Grid, spec: &SolidsSpec, s: &mut SolidsFields) ->
 
 /// Marks the dilute velocity nodes of a solids phase, component `dir` (0: u on x-faces,
 /// 1: v on y-faces): εs interpolated to the face (AVG_X / AVG_Y; the one cell's value on a
-/// boundary face) ≤ DIL_EP_S (model-spec §2.7, MFIX `source_u_s.f`). Fixed (wall) nodes are
+/// boundary face) ≤ DIL_EP_S (docs/model.md §2.7, MFIX `source_u_s.f`). Fixed (wall) nodes are
 /// not dilute: their rows are fixed anyway.
 fn dilute_faces(grid: &Grid, eps: &[f64], fixed: &[bool], dir: usize, out: &mut [bool]) {
     let (nx, ny) = (grid.nx(), grid.ny());
@@ -2133,7 +2133,7 @@ fn dilute_faces(grid: &Grid, eps: &[f64], fixed: &[bool], dir: usize, out: &mut 
     }
 }
 
-/// The row of a dilute solids velocity node k (model-spec §2.7, MFIX `source_u_s.f`): the
+/// The row of a dilute solids velocity node k (docs/model.md §2.7, MFIX `source_u_s.f`): the
 /// mean of its neighbour nodes whose test cell — the neighbour of the node's low-side cell
 /// `cell` in that direction (MFIX's IJK) — holds εs > DIL_EP_S, and of its own current
 /// value; with no such neighbour the node keeps `current`. Neighbours on fixed (wall) nodes do not count. `(mx, my)` is
@@ -2248,7 +2248,7 @@ fn next_dilute_class(dense_now: bool, dense: &mut bool, changes: &mut u8) {
 }
 
 /// The θ row of a dilute cell k: the plain mean of its neighbour cells of the dense class
-/// (εs > DIL_EP_S), or `current` if there are none (model-spec §4.8).
+/// (εs > DIL_EP_S), or `current` if there are none (docs/model.md §4.8).
 fn dilute_cell_row(a: &mut Stencil5, k: usize, current: f64, dense_class: &[bool], nx: usize) {
     let n = dense_class.len();
     let (i, j) = (k % nx, k / nx);

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Independent reference values for runout-walls.
 
-Written directly from the text of shared/docs/model-spec.md §2.2, §2.4.2, §2.6 (wall Wen-Yu)
+Written directly from the text of docs/model.md §2.2, §2.4.2, §2.6 (wall Wen-Yu)
 and §3.5-3.8 (not from the Rust code), with plain `math`. Run from this directory:
 
     python3 generate.py            # writes values.json next to this script
@@ -18,7 +18,7 @@ import os
 
 PI = math.pi
 
-# ---- the paper's sensitivity-analysis values (paper Table 3, model-spec §5) ----------------
+# ---- the paper's sensitivity-analysis values (paper Table 3, docs/model.md §5) ----------------
 D_P = 5e-4            # particle diameter [m]
 RHO_S = 2000.0        # solids density [kg/m3]
 E = 0.9               # particle-particle restitution
@@ -47,7 +47,7 @@ def g0_cs(es):
 
 
 def dga_wen_yu_wall(es, vrel):
-    """model-spec §2.6 last bullet: Re = eps_g rho_g d |v|/mu_g, DgA = 0.75 Cd rho_g eps_g |v|/(d eps_g^2.65)."""
+    """docs/model.md §2.6 last bullet: Re = eps_g rho_g d |v|/mu_g, DgA = 0.75 Cd rho_g eps_g |v|/(d eps_g^2.65)."""
     if vrel == 0.0:
         return LARGE
     eg = 1.0 - es
@@ -57,7 +57,7 @@ def dga_wen_yu_wall(es, vrel):
 
 
 def lun(es, th, vrel, gas=True):
-    """model-spec §2.2 table with F_gs/eps_s = DgA."""
+    """docs/model.md §2.2 table with F_gs/eps_s = DgA."""
     g0 = g0_cs(es)
     xi = es * g0
     mu0 = 5.0 / 96.0 * RHO_S * D_P * math.sqrt(PI * th)
@@ -80,7 +80,7 @@ def lun(es, th, vrel, gas=True):
 
 
 def princeton(es, th, trd, sdds):
-    """model-spec §2.4.2 steps 1-5 (SAVAGE = 2)."""
+    """docs/model.md §2.4.2 steps 1-5 (SAVAGE = 2)."""
     zeta = math.sqrt(th / D_P ** 2 + sdds)
     at = EPS_MAX - DELTA
     if es > at:
