@@ -13,7 +13,7 @@ mod dt_controller;
 mod monitors;
 pub mod out_dir;
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
@@ -48,7 +48,7 @@ pub enum RunError {
         /// the mesh error
         source: runout_mesh::MeshError,
     },
-    /// The solver failed outright (not a retryable non-convergence).
+    /// The solver could not be built (an error during a step is a failed step, retried).
     #[error("case `{case}`: {source}")]
     Solver {
         /// case name
@@ -592,8 +592,3 @@ fn run_solver(
 
 #[cfg(test)]
 mod tests;
-
-/// The default output folder of a case: `runs/<case>/<fidelity>`.
-pub fn default_out_dir(root: &Path, case: &str, fidelity: Fidelity) -> PathBuf {
-    root.join("runs").join(case).join(fidelity.name())
-}
