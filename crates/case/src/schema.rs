@@ -384,7 +384,51 @@ pub enum Gravity {
         /// (assumed; the paper does not define "impact")
         #[serde(default = "default_contact_eps_s")]
         contact_eps_s: f64,
+        /// what counts as the impact (default `FloorCell`: a floor cell with ε_s at or
+        /// above `contact_eps_s`; the other criteria ignore `contact_eps_s`)
+        #[serde(default, skip_serializing_if = "ImpactCriterion::is_floor_cell")]
+        criterion: ImpactCriterion,
     },
+}
+
+/// When a [`Gravity::TiltOnImpact`] schedule tilts gravity (docs/impact.md). The paper tilts
+/// at "the instant of impacting" without defining it.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub enum ImpactCriterion {
+    /// The first floor cell with ε_s ≥ `contact_eps_s`. First-order upwind smears the
+    /// block's lower edge over cells, so on a coarse grid a dilute precursor fires it early
+    /// (coarse S slide: t ≈ 0.19 s against a free fall of 0.286 s): grid dependent.
+    #[default]
+    FloorCell,
+    /// The dense part of the block reaching the floor: the first floor cell with ε_s ≥
+    /// `fraction` × the largest ε_s of the initial regions (summed over phases), so the
+    /// smeared dilute edge does not fire it.
+    DenseContact {
+        /// fraction of the release's ε_s, in (0, 1] [-]
+        fraction: f64,
+    },
+    /// The solids' centre of mass has fallen by h, the height of the lowest initial
+    /// region's bottom above the floor: where a rigid block would touch the floor. Upwind
+    /// smearing spreads the block about its centre of mass without moving it, so this
+    /// follows the fall (with the gas's drag) nearly independently of the grid.
+    CentroidDrop,
+    /// At the free-fall time t = sqrt(2 h / g) of the lowest initial region's bottom, h
+    /// above the floor: independent of the grid by construction (it ignores the gas).
+    FreeFall,
+    /// At a given time [s].
+    At {
+        /// time of the tilt [s]
+        time: f64,
+    },
+}
+
+impl ImpactCriterion {
+    /// Whether this is the default criterion (it is then not written to resolved cases, so
+    /// that cases and run folders from before the criterion existed are unchanged).
+    pub fn is_floor_cell(&self) -> bool {
+        *self == ImpactCriterion::FloorCell
+    }
 }
 
 fn default_gravity() -> f64 {
