@@ -768,7 +768,7 @@ impl Default for Relaxation {
     }
 }
 
-/// The cheaper fidelities of a case; both change only the grid and the end time.
+/// The cheaper fidelities of a case; they change only the grid and the end time.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct FidelityPresets {
@@ -776,16 +776,48 @@ pub struct FidelityPresets {
     pub smoke: Preset,
     /// minutes to run: the README's default sweep
     pub coarse: Preset,
+    /// the wall layer resolved: the paper's cells in y, coarsened in x (docs/impact.md);
+    /// default [`FidelityPresets::default_wall`]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub wall: Option<Preset>,
+}
+
+impl FidelityPresets {
+    /// The `wall` preset: as written, or else the coarse preset's coarsening in x and end
+    /// time with the paper's cells in y (`coarsen_y: 1`).
+    pub fn wall_preset(&self) -> Preset {
+        self.wall.clone().unwrap_or_else(|| self.default_wall())
+    }
+
+    /// The `wall` preset of a case that writes none.
+    pub fn default_wall(&self) -> Preset {
+        Preset {
+            coarsen: self.coarse.coarsen,
+            coarsen_y: Some(1),
+            end_time: self.coarse.end_time,
+        }
+    }
 }
 
 /// A fidelity preset.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Preset {
-    /// cells are this many times wider in each direction [-]
+    /// cells are this many times wider in each direction (in x only when `coarsen_y` is
+    /// given) [-]
     pub coarsen: u32,
+    /// cells are this many times taller in y (default: `coarsen`) [-]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub coarsen_y: Option<u32>,
     /// simulated end time [s]
     pub end_time: f64,
+}
+
+impl Preset {
+    /// The coarsening factor in y.
+    pub fn factor_y(&self) -> u32 {
+        self.coarsen_y.unwrap_or(self.coarsen)
+    }
 }
 
 /// Family A of cases.md: closed-form profiles of paper Eqs. 12–13 (no flow solver).

@@ -353,12 +353,21 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
     // Fidelity presets: coarsening ≥ 1, end times in the band and ≤ the paper end time
     // (their grids are checked with the domain's).
     for (name, preset) in [
-        ("smoke", &case.fidelity.smoke),
-        ("coarse", &case.fidelity.coarse),
+        ("smoke", Some(&case.fidelity.smoke)),
+        ("coarse", Some(&case.fidelity.coarse)),
+        ("wall", case.fidelity.wall.as_ref()),
     ] {
+        let Some(preset) = preset else { continue };
         let p = format!("fidelity.{name}");
         if preset.coarsen < 1 {
             c.fail(format!("{p}.coarsen"), preset.coarsen, "an integer >= 1");
+        }
+        if preset.coarsen_y.is_some_and(|f| f < 1) {
+            c.fail(
+                format!("{p}.coarsen_y"),
+                preset.factor_y(),
+                "an integer >= 1",
+            );
         }
         c.band_and_range(
             format!("{p}.end_time"),

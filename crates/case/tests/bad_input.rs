@@ -752,3 +752,38 @@ fn the_default_criterion_is_not_written_so_resolved_cases_are_unchanged() {
     let text = ron::ser::to_string(&cases[0].case).unwrap();
     assert!(text.contains("criterion:FreeFall"), "{text}");
 }
+
+#[test]
+fn per_axis_coarsening_is_bounded() {
+    let base = sensitivity_base();
+    let ok = replace_once(
+        &base,
+        "coarse: (coarsen: 4, end_time: 1.25),",
+        "coarse: (coarsen: 4, end_time: 1.25),\n        wall: (coarsen: 4, coarsen_y: 2, end_time: 0.5),",
+    );
+    let (_, r) = load_text("wall-ok.ron", &ok);
+    assert!(r.is_ok(), "{:?}", r.err());
+    rejected(
+        "coarsen-y0.ron",
+        &replace_once(&ok, "coarsen_y: 2", "coarsen_y: 0"),
+        &["fidelity.wall.coarsen_y", ">= 1"],
+    );
+    rejected(
+        "wall-late.ron",
+        &replace_once(
+            &ok,
+            "coarsen_y: 2, end_time: 0.5",
+            "coarsen_y: 2, end_time: 5.0",
+        ),
+        &["fidelity.wall.end_time"],
+    );
+    rejected(
+        "smoke-y0.ron",
+        &replace_once(
+            &base,
+            "smoke: (coarsen: 10, end_time: 0.4)",
+            "smoke: (coarsen: 10, coarsen_y: 0, end_time: 0.4)",
+        ),
+        &["fidelity.smoke.coarsen_y"],
+    );
+}
