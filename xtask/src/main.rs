@@ -55,7 +55,7 @@ enum Task {
     /// are skipped (a killed sweep resumes); its rows are merged into results/summary.csv (the
     /// rows of other cases and fidelities are kept; shards may write at once, under a lock).
     Sweep {
-        /// smoke, coarse (default) or paper
+        /// smoke, coarse (default), wall or paper
         #[arg(long, default_value = "coarse")]
         fidelity: String,
         /// run only the cases whose name contains this
@@ -145,7 +145,7 @@ enum Task {
         /// what to report: results (default) or analytic
         #[arg(default_value = "results")]
         what: String,
-        /// read only runs of this fidelity (smoke, coarse or paper); default: the best
+        /// read only runs of this fidelity (smoke, coarse, wall or paper); default: the best
         /// finished run of each case
         #[arg(long)]
         fidelity: Option<String>,

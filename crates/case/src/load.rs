@@ -116,6 +116,8 @@ pub enum Fidelity {
     Smoke,
     /// minutes: the README's default sweep
     Coarse,
+    /// the wall layer resolved: the paper's cells in y, x coarsened (preset `wall`)
+    Wall,
     /// the paper's grids and times
     Paper,
 }
@@ -126,6 +128,7 @@ impl Fidelity {
         match self {
             Fidelity::Smoke => "smoke",
             Fidelity::Coarse => "coarse",
+            Fidelity::Wall => "wall",
             Fidelity::Paper => "paper",
         }
     }
@@ -143,27 +146,29 @@ impl FromStr for Fidelity {
         match s {
             "smoke" => Ok(Fidelity::Smoke),
             "coarse" => Ok(Fidelity::Coarse),
+            "wall" => Ok(Fidelity::Wall),
             "paper" => Ok(Fidelity::Paper),
             _ => Err(format!(
-                "unknown fidelity `{s}`: expected smoke, coarse or paper"
+                "unknown fidelity `{s}`: expected smoke, coarse, wall or paper"
             )),
         }
     }
 }
 
 impl Case {
-    /// This case at a fidelity: the grid coarsened and the end time set by the preset
-    /// (`Paper` returns the case as written). Monitor times after the end are kept; they
+    /// This case at a fidelity: the grid coarsened (per axis where the preset says) and the
+    /// end time set by the preset (`Paper` returns the case as written). Monitor times after the end are kept; they
     /// simply never fire.
     pub fn at_fidelity(&self, fidelity: Fidelity) -> Case {
         let preset = match fidelity {
             Fidelity::Paper => return self.clone(),
-            Fidelity::Smoke => &self.fidelity.smoke,
-            Fidelity::Coarse => &self.fidelity.coarse,
+            Fidelity::Smoke => self.fidelity.smoke.clone(),
+            Fidelity::Coarse => self.fidelity.coarse.clone(),
+            Fidelity::Wall => self.fidelity.wall_preset(),
         };
         let mut case = self.clone();
         case.domain.x = self.domain.x.coarsened(preset.coarsen);
-        case.domain.y = self.domain.y.coarsened(preset.coarsen);
+        case.domain.y = self.domain.y.coarsened(preset.factor_y());
         case.run.end_time = preset.end_time;
         case
     }

@@ -345,6 +345,31 @@ pub struct Block {
     pub y: (f64, f64),
     /// one entry per solids phase
     pub solids: Vec<BlockSolids>,
+    /// which cells the block fills and how much (default `CellCentre`)
+    #[serde(default, skip_serializing_if = "Fill::is_cell_centre")]
+    pub fill: Fill,
+}
+
+/// How an initial block fills the grid's cells.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Fill {
+    /// every cell whose centre lies in the block (edges included) takes the block's state:
+    /// the released mass depends on the grid (S slide: 117.8 / 149.8 / 131.8 kg/m at smoke
+    /// / coarse / paper against 120 kg/m)
+    #[default]
+    CellCentre,
+    /// every cell takes the block's ε_s times the fraction of its area inside the block
+    /// (exact rectangle overlap) over what it held before, so the released mass is the
+    /// block's area × ε_s × ρ_s on every grid; a cell it overlaps at all takes the block's
+    /// velocity and its θ weighted by ε_s
+    CoveredFraction,
+}
+
+impl Fill {
+    /// Whether this is the default fill (then not written to resolved cases).
+    pub fn is_cell_centre(&self) -> bool {
+        *self == Fill::CellCentre
+    }
 }
 
 /// The state of one solids phase inside a block.
@@ -384,7 +409,51 @@ pub enum Gravity {
         /// (assumed; the paper does not define "impact")
         #[serde(default = "default_contact_eps_s")]
         contact_eps_s: f64,
+        /// what counts as the impact (default `FloorCell`: a floor cell with ε_s at or
+        /// above `contact_eps_s`; the other criteria ignore `contact_eps_s`)
+        #[serde(default, skip_serializing_if = "ImpactCriterion::is_floor_cell")]
+        criterion: ImpactCriterion,
     },
+}
+
+/// When a [`Gravity::TiltOnImpact`] schedule tilts gravity (docs/impact.md). The paper tilts
+/// at "the instant of impacting" without defining it.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub enum ImpactCriterion {
+    /// The first floor cell with ε_s ≥ `contact_eps_s`. First-order upwind smears the
+    /// block's lower edge over cells, so on a coarse grid a dilute precursor fires it early
+    /// (coarse S slide: t ≈ 0.19 s against a free fall of 0.286 s): grid dependent.
+    #[default]
+    FloorCell,
+    /// The dense part of the block reaching the floor: the first floor cell with ε_s ≥
+    /// `fraction` × the largest ε_s of the initial regions (summed over phases), so the
+    /// smeared dilute edge does not fire it.
+    DenseContact {
+        /// fraction of the release's ε_s, in (0, 1] [-]
+        fraction: f64,
+    },
+    /// The solids' centre of mass has fallen by h, the height of the lowest initial
+    /// region's bottom above the floor: where a rigid block would touch the floor. Upwind
+    /// smearing spreads the block about its centre of mass without moving it, so this
+    /// follows the fall (with the gas's drag) nearly independently of the grid.
+    CentroidDrop,
+    /// At the free-fall time t = sqrt(2 h / g) of the lowest initial region's bottom, h
+    /// above the floor: independent of the grid by construction (it ignores the gas).
+    FreeFall,
+    /// At a given time [s].
+    At {
+        /// time of the tilt [s]
+        time: f64,
+    },
+}
+
+impl ImpactCriterion {
+    /// Whether this is the default criterion (it is then not written to resolved cases, so
+    /// that cases and run folders from before the criterion existed are unchanged).
+    pub fn is_floor_cell(&self) -> bool {
+        *self == ImpactCriterion::FloorCell
+    }
 }
 
 fn default_gravity() -> f64 {
@@ -699,7 +768,7 @@ impl Default for Relaxation {
     }
 }
 
-/// The cheaper fidelities of a case; both change only the grid and the end time.
+/// The cheaper fidelities of a case; they change only the grid and the end time.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct FidelityPresets {
@@ -707,16 +776,48 @@ pub struct FidelityPresets {
     pub smoke: Preset,
     /// minutes to run: the README's default sweep
     pub coarse: Preset,
+    /// the wall layer resolved: the paper's cells in y, coarsened in x (docs/impact.md);
+    /// default [`FidelityPresets::default_wall`]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub wall: Option<Preset>,
+}
+
+impl FidelityPresets {
+    /// The `wall` preset: as written, or else the coarse preset's coarsening in x and end
+    /// time with the paper's cells in y (`coarsen_y: 1`).
+    pub fn wall_preset(&self) -> Preset {
+        self.wall.clone().unwrap_or_else(|| self.default_wall())
+    }
+
+    /// The `wall` preset of a case that writes none.
+    pub fn default_wall(&self) -> Preset {
+        Preset {
+            coarsen: self.coarse.coarsen,
+            coarsen_y: Some(1),
+            end_time: self.coarse.end_time,
+        }
+    }
 }
 
 /// A fidelity preset.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Preset {
-    /// cells are this many times wider in each direction [-]
+    /// cells are this many times wider in each direction (in x only when `coarsen_y` is
+    /// given) [-]
     pub coarsen: u32,
+    /// cells are this many times taller in y (default: `coarsen`) [-]
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub coarsen_y: Option<u32>,
     /// simulated end time [s]
     pub end_time: f64,
+}
+
+impl Preset {
+    /// The coarsening factor in y.
+    pub fn factor_y(&self) -> u32 {
+        self.coarsen_y.unwrap_or(self.coarsen)
+    }
 }
 
 /// Family A of cases.md: closed-form profiles of paper Eqs. 12–13 (no flow solver).

@@ -143,6 +143,7 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
             magnitude,
             slope,
             contact_eps_s,
+            criterion,
         } => {
             c.range(
                 "gravity.contact_eps_s",
@@ -150,6 +151,7 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
                 B::Open(0.0),
                 B::Open(1.0),
             );
+            check_impact_criterion(&mut c, criterion, case);
             (*magnitude, *slope)
         }
     };
@@ -351,12 +353,21 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
     // Fidelity presets: coarsening ≥ 1, end times in the band and ≤ the paper end time
     // (their grids are checked with the domain's).
     for (name, preset) in [
-        ("smoke", &case.fidelity.smoke),
-        ("coarse", &case.fidelity.coarse),
+        ("smoke", Some(&case.fidelity.smoke)),
+        ("coarse", Some(&case.fidelity.coarse)),
+        ("wall", case.fidelity.wall.as_ref()),
     ] {
+        let Some(preset) = preset else { continue };
         let p = format!("fidelity.{name}");
         if preset.coarsen < 1 {
             c.fail(format!("{p}.coarsen"), preset.coarsen, "an integer >= 1");
+        }
+        if preset.coarsen_y.is_some_and(|f| f < 1) {
+            c.fail(
+                format!("{p}.coarsen_y"),
+                preset.factor_y(),
+                "an integer >= 1",
+            );
         }
         c.band_and_range(
             format!("{p}.end_time"),
@@ -368,6 +379,47 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
     }
 
     c.into_result()
+}
+
+/// The impact criterion of a tilt-on-impact schedule: its numbers in range, and a release
+/// to measure from where the criterion needs one (docs/impact.md).
+fn check_impact_criterion(c: &mut Checker, criterion: &ImpactCriterion, case: &Case) {
+    let p = "gravity.criterion";
+    let has_release = case
+        .initial
+        .regions
+        .iter()
+        .any(|b| b.solids.iter().any(|s| s.eps_s > 0.0));
+    let needs_release = |c: &mut Checker, what: &str| {
+        if !has_release {
+            c.fail(
+                p,
+                what,
+                "FloorCell or At(time) when no initial region holds solids (this criterion \
+                 is measured from the release)",
+            );
+        }
+    };
+    match criterion {
+        ImpactCriterion::FloorCell => {}
+        ImpactCriterion::DenseContact { fraction } => {
+            c.range(
+                format!("{p}.fraction"),
+                *fraction,
+                B::Open(0.0),
+                B::Closed(1.0),
+            );
+            needs_release(c, "DenseContact");
+        }
+        ImpactCriterion::FreeFall => needs_release(c, "FreeFall"),
+        ImpactCriterion::CentroidDrop => needs_release(c, "CentroidDrop"),
+        ImpactCriterion::At { time } => c.range(
+            format!("{p}.time"),
+            *time,
+            B::Closed(0.0),
+            B::Closed(case.run.end_time),
+        ),
+    }
 }
 
 /// A block's εs (or the sum over phases) strictly below the packing limit: at εs,max the

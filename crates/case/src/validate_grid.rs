@@ -17,21 +17,24 @@ pub(crate) fn check_grids(c: &mut Checker, case: &Case) {
     if !(x_ok && y_ok) {
         return;
     }
+    let wall = case.fidelity.wall_preset();
     let presets = [
-        ("smoke", case.fidelity.smoke.coarsen),
-        ("coarse", case.fidelity.coarse.coarsen),
+        ("smoke", &case.fidelity.smoke),
+        ("coarse", &case.fidelity.coarse),
+        ("wall", &wall),
     ];
     // the presets only once the grid as written passed, so that one fault is one error
     if !check_fidelity_grid(c, None, &case.domain.x, &case.domain.y) {
         return;
     }
-    for (name, coarsen) in presets {
-        if coarsen >= 1 {
+    for (name, preset) in presets {
+        let (fx, fy) = (preset.coarsen, preset.factor_y());
+        if fx >= 1 && fy >= 1 {
             check_fidelity_grid(
                 c,
-                Some((name, coarsen)),
-                &case.domain.x.coarsened(coarsen),
-                &case.domain.y.coarsened(coarsen),
+                Some((name, fx.max(fy))),
+                &case.domain.x.coarsened(fx),
+                &case.domain.y.coarsened(fy),
             );
         }
     }

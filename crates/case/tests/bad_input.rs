@@ -670,3 +670,120 @@ fn a_sweep_of_more_than_1000_cases_is_refused_before_expanding() {
         "{e}"
     );
 }
+
+fn sensitivity_base() -> String {
+    shipped("sensitivity/base.ron")
+}
+
+/// The base's gravity with an impact criterion (docs/impact.md).
+fn with_criterion(criterion: &str) -> String {
+    replace_once(
+        &sensitivity_base(),
+        "contact_eps_s: 0.01)",
+        &format!("contact_eps_s: 0.01, criterion: {criterion})"),
+    )
+}
+
+#[test]
+fn impact_criteria_are_accepted_and_bounded() {
+    for ok in [
+        "FloorCell",
+        "DenseContact(fraction: 0.5)",
+        "DenseContact(fraction: 1.0)",
+        "FreeFall",
+        "CentroidDrop",
+        "At(time: 0.2856)",
+    ] {
+        let (_, r) = load_text("criterion-ok.ron", &with_criterion(ok));
+        assert!(r.is_ok(), "{ok}: {:?}", r.err());
+    }
+    rejected(
+        "fraction0.ron",
+        &with_criterion("DenseContact(fraction: 0.0)"),
+        &["gravity.criterion.fraction", "(0, 1]"],
+    );
+    rejected(
+        "fraction2.ron",
+        &with_criterion("DenseContact(fraction: 1.5)"),
+        &["gravity.criterion.fraction", "1.5", "(0, 1]"],
+    );
+    rejected(
+        "at-late.ron",
+        &with_criterion("At(time: 2.0)"),
+        &["gravity.criterion.time", "[0, 1.25]"],
+    );
+    rejected(
+        "at-nan.ron",
+        &with_criterion("At(time: NaN)"),
+        &["gravity.criterion.time", "NaN"],
+    );
+    rejected(
+        "criterion-typo.ron",
+        &with_criterion("FreeFal"),
+        &["FreeFal", "FloorCell"],
+    );
+    // the free fall and the dense contact are measured from a release
+    for needs in ["FreeFall", "CentroidDrop", "DenseContact(fraction: 0.5)"] {
+        let t = replace_once(
+            &with_criterion(needs),
+            "regions: [(x: (5.0, 5.5), y: (0.40, 0.60), solids: [(eps_s: 0.60, theta: 1e-5)])],",
+            "regions: [],",
+        );
+        rejected(
+            "no-release.ron",
+            &t,
+            &["gravity.criterion", "no initial region holds solids"],
+        );
+    }
+}
+
+#[test]
+fn the_default_criterion_is_not_written_so_resolved_cases_are_unchanged() {
+    let Ok(runout_case::Loaded::Cases(cases)) = load_text("base.ron", &sensitivity_base()).1 else {
+        panic!("the base loads")
+    };
+    let text = ron::ser::to_string(&cases[0].case).unwrap();
+    assert!(!text.contains("criterion"), "{text}");
+    let Ok(runout_case::Loaded::Cases(cases)) =
+        load_text("free.ron", &with_criterion("FreeFall")).1
+    else {
+        panic!("the free-fall case loads")
+    };
+    let text = ron::ser::to_string(&cases[0].case).unwrap();
+    assert!(text.contains("criterion:FreeFall"), "{text}");
+}
+
+#[test]
+fn per_axis_coarsening_is_bounded() {
+    let base = sensitivity_base();
+    let ok = replace_once(
+        &base,
+        "coarse: (coarsen: 4, end_time: 1.25),",
+        "coarse: (coarsen: 4, end_time: 1.25),\n        wall: (coarsen: 4, coarsen_y: 2, end_time: 0.5),",
+    );
+    let (_, r) = load_text("wall-ok.ron", &ok);
+    assert!(r.is_ok(), "{:?}", r.err());
+    rejected(
+        "coarsen-y0.ron",
+        &replace_once(&ok, "coarsen_y: 2", "coarsen_y: 0"),
+        &["fidelity.wall.coarsen_y", ">= 1"],
+    );
+    rejected(
+        "wall-late.ron",
+        &replace_once(
+            &ok,
+            "coarsen_y: 2, end_time: 0.5",
+            "coarsen_y: 2, end_time: 5.0",
+        ),
+        &["fidelity.wall.end_time"],
+    );
+    rejected(
+        "smoke-y0.ron",
+        &replace_once(
+            &base,
+            "smoke: (coarsen: 10, end_time: 0.4)",
+            "smoke: (coarsen: 10, coarsen_y: 0, end_time: 0.4)",
+        ),
+        &["fidelity.smoke.coarsen_y"],
+    );
+}

@@ -179,3 +179,42 @@ fn the_bands_table_of_the_docs_is_the_code_s() {
         "docs/input-validation.md lacks the table of runout_case::limits; it is:\n{table}"
     );
 }
+
+#[test]
+fn the_wall_fidelity_keeps_the_papers_cells_in_y() {
+    let case = load_cases("sensitivity/base.ron").remove(0).case;
+    // no `wall` preset written: the coarse preset's x and end time, the paper's y
+    assert_eq!(case.fidelity.wall, None);
+    let wall = case.at_fidelity(Fidelity::Wall);
+    let (g, paper, coarse) = (
+        wall.grid().unwrap(),
+        case.grid().unwrap(),
+        case.at_fidelity(Fidelity::Coarse).grid().unwrap(),
+    );
+    assert_eq!((g.nx(), g.ny()), (250, 90));
+    assert_eq!(g.x, coarse.x);
+    assert_eq!(g.y, paper.y);
+    assert!((g.y.width_range().0 - 0.005).abs() < 1e-12);
+    assert_eq!(wall.run.end_time, case.fidelity.coarse.end_time);
+    let mut c = wall.clone();
+    c.domain = case.domain.clone();
+    c.run.end_time = case.run.end_time;
+    assert_eq!(c, case);
+    // an explicit preset with per-axis factors
+    let mut written = case.clone();
+    written.fidelity.wall = Some(runout_case::Preset {
+        coarsen: 2,
+        coarsen_y: Some(3),
+        end_time: 0.5,
+    });
+    let g = written.at_fidelity(Fidelity::Wall).grid().unwrap();
+    assert_eq!((g.nx(), g.ny()), (500, 30));
+    assert_eq!(written.at_fidelity(Fidelity::Wall).run.end_time, 0.5);
+    // the existing presets and resolved cases are unchanged: nothing new is written
+    let text = ron::ser::to_string(&case).unwrap();
+    assert!(
+        !text.contains("wall:(") && !text.contains("coarsen_y"),
+        "{text}"
+    );
+    assert_eq!("wall".parse::<Fidelity>().unwrap(), Fidelity::Wall);
+}

@@ -50,7 +50,7 @@ enum Command {
     Mesh {
         /// a case or sweep file
         file: PathBuf,
-        /// smoke, coarse or paper
+        /// smoke, coarse, wall (the paper's cells in y, x coarsened) or paper
         #[arg(long, default_value = "paper", value_parser = parse_fidelity)]
         fidelity: Fidelity,
     },
@@ -59,7 +59,7 @@ enum Command {
     Run {
         /// a case or sweep file
         file: PathBuf,
-        /// smoke, coarse or paper
+        /// smoke, coarse, wall (the paper's cells in y, x coarsened) or paper
         #[arg(long, default_value = "paper", value_parser = parse_fidelity)]
         fidelity: Fidelity,
         /// output folder (default runs/<case>/<fidelity>)
@@ -128,10 +128,15 @@ fn check(paths: &[PathBuf]) -> ExitCode {
                 let available = runout_case::available_memory_bytes();
                 for sc in &cases {
                     total += 1;
-                    let sizes: Vec<String> = [Fidelity::Smoke, Fidelity::Coarse, Fidelity::Paper]
-                        .into_iter()
-                        .map(|f| fidelity_size(&sc.case, f, available))
-                        .collect();
+                    let sizes: Vec<String> = [
+                        Fidelity::Smoke,
+                        Fidelity::Coarse,
+                        Fidelity::Wall,
+                        Fidelity::Paper,
+                    ]
+                    .into_iter()
+                    .map(|f| fidelity_size(&sc.case, f, available))
+                    .collect();
                     println!("  {}  [{}]", sc.case.name, sizes.join("; "));
                 }
             }
@@ -316,6 +321,9 @@ fn run(file: &Path, target: &Target, quiet: bool, options: &RunOptions) -> ExitC
             sc.case.run.end_time = t;
             sc.case.fidelity.smoke.end_time = t;
             sc.case.fidelity.coarse.end_time = t;
+            if let Some(wall) = &mut sc.case.fidelity.wall {
+                wall.end_time = t;
+            }
             // the intervals and Δt bounds are validated against the end time (profile
             // times after it are kept: they never fire)
             let mut checked = sc.case.clone();

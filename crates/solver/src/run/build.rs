@@ -2,8 +2,8 @@
 //! for a case with solids, with their initial state and boundary conditions.
 
 use runout_case::{
-    Boundary, Case, Convection, FrictionModel, GasWall, Gravity, InitialPressure, KineticTheory,
-    OutletPressure, SolidsWall,
+    Block, Boundary, Case, Convection, Fill, FrictionModel, GasWall, Gravity, InitialPressure,
+    KineticTheory, OutletPressure, SolidsWall,
 };
 use runout_closures::{ClosureParams, FrictionParams, Gas, Particles};
 use runout_mesh::{Grid, Sides};
@@ -154,6 +154,14 @@ pub fn single_phase_solver(case: &Case) -> Result<SinglePhase, RunError> {
         }
     }
     Ok(s)
+}
+
+/// The fraction of the area of cell (i, j) inside `block` [-] (exact rectangle overlap).
+pub(super) fn covered_fraction(grid: &Grid, i: usize, j: usize, block: &Block) -> f64 {
+    let overlap = |faces: &[f64], k: usize, (lo, hi): (f64, f64)| {
+        (faces[k + 1].min(hi) - faces[k].max(lo)).max(0.0) / (faces[k + 1] - faces[k])
+    };
+    overlap(grid.x.faces(), i, block.x) * overlap(grid.y.faces(), j, block.y)
 }
 
 /// Builds the two-fluid solver of a case with solids, or says what it still lacks.
@@ -353,16 +361,42 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
             let k = i + nx * j;
             tf.p_g[k] = initial_gas_pressure(case, gas, gravity, &grid, x, y);
             for block in &case.initial.regions {
-                if x >= block.x.0 && x <= block.x.1 && y >= block.y.0 && y <= block.y.1 {
-                    for (s, bs) in tf.solids.iter_mut().zip(&block.solids) {
+                // the part of the cell the block fills: all or nothing by the centre, or
+                // the covered fraction of its area
+                let covered = match block.fill {
+                    Fill::CellCentre => {
+                        let inside =
+                            x >= block.x.0 && x <= block.x.1 && y >= block.y.0 && y <= block.y.1;
+                        if inside {
+                            1.0
+                        } else {
+                            0.0
+                        }
+                    }
+                    Fill::CoveredFraction => covered_fraction(&grid, i, j, block),
+                };
+                if covered <= 0.0 {
+                    continue;
+                }
+                for (s, bs) in tf.solids.iter_mut().zip(&block.solids) {
+                    let theta_b = bs.theta.max(runout_closures::guards::THETA_SMALL);
+                    if covered >= 1.0 {
                         s.eps[k] = bs.eps_s;
-                        s.theta[k] = bs.theta.max(runout_closures::guards::THETA_SMALL);
-                        for f in [i + (nx + 1) * j, i + 1 + (nx + 1) * j] {
-                            s.u[f] = bs.velocity.0;
+                        s.theta[k] = theta_b;
+                    } else {
+                        // the block replaces the covered part of what the cell held
+                        let kept = s.eps[k] * (1.0 - covered);
+                        let added = bs.eps_s * covered;
+                        if kept + added > 0.0 {
+                            s.theta[k] = (kept * s.theta[k] + added * theta_b) / (kept + added);
                         }
-                        for f in [k, k + nx] {
-                            s.v[f] = bs.velocity.1;
-                        }
+                        s.eps[k] = kept + added;
+                    }
+                    for f in [i + (nx + 1) * j, i + 1 + (nx + 1) * j] {
+                        s.u[f] = bs.velocity.0;
+                    }
+                    for f in [k, k + nx] {
+                        s.v[f] = bs.velocity.1;
                     }
                 }
             }

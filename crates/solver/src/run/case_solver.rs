@@ -1,6 +1,7 @@
 //! The time loop's view of a solver (single phase or two-fluid): one step, the fields and
 //! monitors it writes, and its state for checkpoints.
 
+use runout_case::{Case, Gravity, ImpactCriterion};
 use runout_mesh::Grid;
 use runout_output::{CellField, OutputError, PvdSeries};
 
@@ -24,8 +25,15 @@ pub(super) trait CaseSolver {
     fn step(&mut self, dt: f64, run: &runout_case::RunControl) -> Result<StepReport, RunError>;
     /// Puts back the fields of the start of the step after a step that failed with an error.
     fn restore(&mut self);
-    /// Gravity schedules act here, before each step.
-    fn before_step(&mut self) {}
+    /// Gravity schedules act here, before the step from `time`; true when gravity changed.
+    fn before_step(&mut self, _time: f64) -> bool {
+        false
+    }
+    /// The time of the next scheduled change (a timed gravity tilt), which the time loop
+    /// lands a step on as on the end time; `None` when nothing is scheduled by time.
+    fn next_event(&self) -> Option<f64> {
+        None
+    }
     fn write_fields(&mut self, series: &mut PvdSeries, time: f64) -> Result<(), OutputError>;
     fn profile_header(&self) -> &'static [&'static str];
     fn profile(&self, x: f64, y: f64) -> Vec<f64>;
@@ -158,11 +166,142 @@ impl CaseSolver for SinglePhaseCase {
 /// The state entry saying whether a tilt-on-impact schedule has not tilted yet.
 const TILT_PENDING: &str = "tilt_pending";
 
+/// What fires a tilt-on-impact schedule, resolved from its [`ImpactCriterion`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum ImpactTrigger {
+    /// a floor cell of any phase with εs at or above this
+    FloorEpsS(f64),
+    /// the step starting at or after this time [s]
+    Time(f64),
+    /// the solids' centre of mass at or below this height [m]
+    CentroidBelow(f64),
+}
+
+/// A tilt-on-impact schedule that has not tilted yet.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct PendingTilt {
+    /// |g| [m s⁻²]
+    pub(super) magnitude: f64,
+    /// slope after the tilt [deg]
+    pub(super) slope: f64,
+    pub(super) trigger: ImpactTrigger,
+}
+
+impl PendingTilt {
+    /// The schedule of a case, `None` for constant gravity. The thresholds and times are
+    /// computed from the case (its initial regions), so a checkpoint needs only whether
+    /// the tilt is still pending.
+    pub(super) fn of(case: &Case) -> Option<PendingTilt> {
+        let Gravity::TiltOnImpact {
+            magnitude,
+            slope,
+            contact_eps_s,
+            ref criterion,
+        } = case.gravity
+        else {
+            return None;
+        };
+        let trigger = match *criterion {
+            ImpactCriterion::FloorCell => ImpactTrigger::FloorEpsS(contact_eps_s),
+            ImpactCriterion::DenseContact { fraction } => {
+                ImpactTrigger::FloorEpsS(fraction * release_eps_s(case))
+            }
+            ImpactCriterion::FreeFall => {
+                ImpactTrigger::Time((2.0 * release_height(case) / magnitude).sqrt())
+            }
+            ImpactCriterion::CentroidDrop => {
+                ImpactTrigger::CentroidBelow(release_centroid_y(case) - release_height(case))
+            }
+            ImpactCriterion::At { time } => ImpactTrigger::Time(time),
+        };
+        Some(PendingTilt {
+            magnitude,
+            slope,
+            trigger,
+        })
+    }
+}
+
+/// The height of the centre of mass of all solids phases [m] (0 without solids).
+fn solids_centroid_y(tf: &TwoFluid) -> f64 {
+    let g = tf.grid();
+    let nx = g.nx();
+    let yc = g.y.centres();
+    let (mut num, mut den) = (0.0, 0.0);
+    for (m, s) in tf.solids.iter().enumerate() {
+        let rho = tf.solids_density(m);
+        for (k, &e) in s.eps.iter().enumerate() {
+            let (i, j) = (k % nx, k / nx);
+            let m = rho * e * g.cell_volume(i, j);
+            num += m * yc[j];
+            den += m;
+        }
+    }
+    if den > 0.0 {
+        num / den
+    } else {
+        0.0
+    }
+}
+
+/// The height of the centre of mass of the case's initial regions as written [m] (later
+/// regions overwrite earlier ones where they overlap; the regions of the shipped cases do
+/// not overlap, and this ignores overlaps).
+fn release_centroid_y(case: &Case) -> f64 {
+    let (mut num, mut den) = (0.0, 0.0);
+    for b in &case.initial.regions {
+        let density: f64 = b
+            .solids
+            .iter()
+            .zip(&case.solids)
+            .map(|(s, phase)| s.eps_s * phase.density)
+            .sum();
+        let m = density * (b.x.1 - b.x.0) * (b.y.1 - b.y.0);
+        num += m * 0.5 * (b.y.0 + b.y.1);
+        den += m;
+    }
+    if den > 0.0 {
+        num / den
+    } else {
+        0.0
+    }
+}
+
+/// The largest εs (summed over phases) of the case's initial regions.
+fn release_eps_s(case: &Case) -> f64 {
+    case.initial
+        .regions
+        .iter()
+        .map(|b| b.solids.iter().map(|s| s.eps_s).sum::<f64>())
+        .fold(0.0, f64::max)
+}
+
+/// The height above the floor of the lowest bottom of the initial regions holding solids
+/// [m] (0 without any).
+fn release_height(case: &Case) -> f64 {
+    case.initial
+        .regions
+        .iter()
+        .filter(|b| b.solids.iter().any(|s| s.eps_s > 0.0))
+        .map(|b| b.y.0 - case.domain.y.origin)
+        .reduce(f64::min)
+        .unwrap_or(0.0)
+        .max(0.0)
+}
+
+/// Whether `time` has reached the scheduled time `t`, to within the rounding of a time
+/// summed from steps (1e-12 relative): the step the loop lands on `t` may end an ulp short.
+pub(super) fn at_or_after(time: f64, t: f64) -> bool {
+    time >= t - 1e-12 * t.abs().max(1.0)
+}
+
 /// A two-fluid case: the solver, the gravity schedule and output scratch.
 pub(super) struct TwoFluidCase {
     pub(super) solver: TwoFluid,
-    /// (magnitude, slope in degrees, contact εs) of a tilt-on-impact schedule not yet tilted
-    pub(super) tilt: Option<(f64, f64, f64)>,
+    /// a tilt-on-impact schedule not yet tilted
+    pub(super) tilt: Option<PendingTilt>,
+    /// when this process tilted gravity (logged; not in checkpoints)
+    pub(super) tilted_at: Option<f64>,
     pub(super) scratch: Vec<f64>,
     pub(super) scratch2: Vec<f64>,
 }
@@ -177,6 +316,24 @@ impl TwoFluidCase {
                 out[2 * k] = 0.5 * (u[i + (nx + 1) * j] + u[i + 1 + (nx + 1) * j]);
                 out[2 * k + 1] = 0.5 * (v[k] + v[k + nx]);
             }
+        }
+    }
+}
+
+impl TwoFluidCase {
+    /// Whether the impact has happened by the start of the step from `time` (paper Fig. 3,
+    /// docs/impact.md).
+    fn impacted(&self, trigger: ImpactTrigger, time: f64) -> bool {
+        match trigger {
+            ImpactTrigger::FloorEpsS(eps) => {
+                let nx = self.solver.grid().nx();
+                self.solver
+                    .solids
+                    .iter()
+                    .any(|s| s.eps[..nx].iter().any(|&e| e >= eps))
+            }
+            ImpactTrigger::Time(t) => at_or_after(time, t),
+            ImpactTrigger::CentroidBelow(y) => solids_centroid_y(&self.solver) <= y,
         }
     }
 }
@@ -219,19 +376,30 @@ impl CaseSolver for TwoFluidCase {
         })
     }
 
-    fn before_step(&mut self) {
-        if let Some((magnitude, slope, contact)) = self.tilt {
-            let nx = self.solver.grid().nx();
-            // impact: solids first reach a floor cell (cases.md, paper Fig. 3)
-            if self
-                .solver
-                .solids
-                .iter()
-                .any(|s| s.eps[..nx].iter().any(|&e| e >= contact))
-            {
-                self.solver.set_gravity(gravity_vector(magnitude, slope));
-                self.tilt = None;
-            }
+    fn before_step(&mut self, time: f64) -> bool {
+        let Some(tilt) = self.tilt else {
+            return false;
+        };
+        if !self.impacted(tilt.trigger, time) {
+            return false;
+        }
+        self.solver
+            .set_gravity(gravity_vector(tilt.magnitude, tilt.slope));
+        self.tilt = None;
+        self.tilted_at = Some(time);
+        tracing::info!(
+            time,
+            slope = tilt.slope,
+            trigger = ?tilt.trigger,
+            "gravity tilted on impact at t = {time} s"
+        );
+        true
+    }
+
+    fn next_event(&self) -> Option<f64> {
+        match self.tilt?.trigger {
+            ImpactTrigger::Time(t) => Some(t),
+            ImpactTrigger::FloorEpsS(_) | ImpactTrigger::CentroidBelow(_) => None,
         }
     }
 

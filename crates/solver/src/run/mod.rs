@@ -18,14 +18,14 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-use runout_case::{Case, Fidelity, Gravity, RunControl};
+use runout_case::{Case, Fidelity, RunControl};
 use runout_output::{DtStats, OutputError, RunStatus, RunSummary};
 
 pub use build::{single_phase_solver, two_fluid_solver};
 pub use dt_controller::DtController;
 
 use crate::single_phase::SolverError;
-use case_solver::{CaseSolver, SinglePhaseCase, StepReport, TwoFluidCase};
+use case_solver::{CaseSolver, PendingTilt, SinglePhaseCase, StepReport, TwoFluidCase};
 use checkpoint::Checkpoint;
 use monitors::Monitors;
 
@@ -140,17 +140,13 @@ fn case_solver(case: &Case) -> Result<Box<dyn CaseSolver>, RunError> {
     }
     let tf = two_fluid_solver(case)?;
     let n = tf.grid().cell_count();
-    let tilt = match case.gravity {
-        Gravity::TiltOnImpact {
-            magnitude,
-            slope,
-            contact_eps_s,
-        } => Some((magnitude, slope, contact_eps_s)),
-        Gravity::Constant { .. } => None,
-    };
+    // the tilt's thresholds and times come from the case, so a checkpoint needs only
+    // whether the tilt is still pending
+    let tilt = PendingTilt::of(case);
     Ok(Box::new(TwoFluidCase {
         solver: tf,
         tilt,
+        tilted_at: None,
         scratch: vec![0.0; 2 * n],
         scratch2: vec![0.0; 2 * n],
     }))
@@ -387,7 +383,6 @@ fn attempt_step(
     step_dt: f64,
     run: &RunControl,
 ) -> StepReport {
-    solver.before_step();
     let outcome = solver.step(step_dt, run).unwrap_or_else(|e| {
         solver.restore();
         StepReport {
@@ -456,8 +451,14 @@ fn time_loop(
             return Ok(None);
         }
         let time = standing.time;
-        let step_dt = standing.dt.dt().min(end - time);
+        // a step lands on a scheduled event (a timed tilt) as on the end time
+        let until = match solver.next_event() {
+            Some(t) if !case_solver::at_or_after(time, t) => t.min(end),
+            _ => end,
+        };
+        let step_dt = standing.dt.dt().min(until - time);
         let shortened = step_dt < standing.dt.dt();
+        solver.before_step(time);
         let outcome = attempt_step(solver, time, step_dt, run);
         if !outcome.converged {
             standing.summary.rejected_steps += 1;
@@ -590,5 +591,7 @@ fn run_solver(
     Ok(summary)
 }
 
+#[cfg(test)]
+mod impact_tests;
 #[cfg(test)]
 mod tests;

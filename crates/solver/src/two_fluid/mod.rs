@@ -746,6 +746,11 @@ impl TwoFluid {
         }
     }
 
+    /// Material density ρ_s of phase m [kg m⁻³].
+    pub fn solids_density(&self, m: usize) -> f64 {
+        self.solids_specs[m].params.particles.density
+    }
+
     /// Total solids mass per unit depth of phase m [kg m⁻¹].
     pub fn solids_mass(&self, m: usize) -> f64 {
         let (nx, ny) = (self.grid.nx(), self.grid.ny());
