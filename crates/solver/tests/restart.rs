@@ -3,7 +3,7 @@
 //! field files, the same steps, rejected steps, outer iterations and Δt statistics.
 //!
 //! The case is the paper's Johnson–Jackson slide (S-JJ-phi, φ = 0.1) at smoke fidelity to
-//! 0.3 s: it crosses the tilt on impact (t ≈ 0.19 s), has state-dependent wall closures
+//! 0.3 s: it crosses the tilt on impact (t = 0.152 s at smoke), has state-dependent wall closures
 //! relaxed where they cycle, frozen dilute classes and the bulk, probe and profile
 //! monitors, so every piece of carried-over state is exercised. Two interruptions:
 //! - a stop request (what SIGINT/SIGTERM set) at step 60: the run writes a checkpoint and
