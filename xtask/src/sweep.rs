@@ -26,7 +26,7 @@ use anyhow::{bail, Context, Result};
 use indicatif::{MultiProgress, ProgressBar, ProgressStyle};
 use runout_case::{case_files, load, Case, Fidelity, Loaded, SourcedCase};
 use runout_output::{RunStatus, RunSummary};
-use runout_solver::run::{checkpoint, run_case_with, RunOptions};
+use runout_solver::run::{checkpoint, run_case_with, signals, RunOptions};
 use runout_solver::{Progress, RunError};
 
 use crate::collapse::COLLAPSE_DIR;
@@ -189,27 +189,6 @@ fn run_one(
 /// Checkpoints of the sweep's runs every this much wall time (a killed sweep then loses at
 /// most this much of each run).
 const CHECKPOINT_EVERY: std::time::Duration = std::time::Duration::from_secs(600);
-
-/// A flag that SIGINT and SIGTERM set: every running case stops after its step with a
-/// checkpoint and no new case starts; a second signal exits at once.
-fn stop_on_signals() -> Arc<AtomicBool> {
-    let stop = Arc::new(AtomicBool::new(false));
-    let flag = stop.clone();
-    let installed = ctrlc::set_handler(move || {
-        if flag.swap(true, Ordering::SeqCst) {
-            eprintln!("sweep: second signal: stopping now; the last checkpoints stay");
-            std::process::exit(130);
-        }
-        eprintln!(
-            "sweep: signal received: the running cases stop after their step with a \
-             checkpoint; run the sweep again to continue them (a second signal stops at once)"
-        );
-    });
-    if let Err(e) = installed {
-        eprintln!("sweep: warning: signals will stop the runs without a checkpoint: {e}");
-    }
-    stop
-}
 
 /// Wall time per case of the rows of an earlier `results/summary.csv` at `fidelity` that
 /// have one (empty if there is none).
@@ -437,7 +416,11 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
     };
     order.sort_by(|&a, &b| work(b).total_cmp(&work(a)));
     let queue = Mutex::new(order.into_iter());
-    let stop = stop_on_signals();
+    let stop = signals::stop_on_signals(
+        "sweep",
+        "the running cases stop after their step with a checkpoint; run the sweep again to \
+         continue them",
+    );
     let outcomes: Mutex<Vec<(usize, Outcome)>> = Mutex::new(Vec::new());
     std::thread::scope(|scope| {
         for _ in 0..opts.jobs.max(1) {

@@ -15,14 +15,12 @@ mod material;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::Arc;
 
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use runout_case::{case_files, load, Fidelity, Loaded};
 use runout_output::RunStatus;
-use runout_solver::run::RunOptions;
+use runout_solver::run::{signals, RunOptions};
 use tracing::info;
 
 #[derive(Parser, Debug)]
@@ -237,30 +235,6 @@ fn mesh(file: &Path, fidelity: Fidelity) -> ExitCode {
     ExitCode::SUCCESS
 }
 
-/// A flag that SIGINT and SIGTERM set: the run stops after its current step with a
-/// checkpoint; a second signal exits at once (the last checkpoint stays).
-fn stop_on_signals() -> Arc<AtomicBool> {
-    let stop = Arc::new(AtomicBool::new(false));
-    let flag = stop.clone();
-    let installed = ctrlc::set_handler(move || {
-        if flag.swap(true, Ordering::SeqCst) {
-            eprintln!("runout: second signal: stopping now; the last checkpoint stays");
-            std::process::exit(EXIT_INTERRUPTED);
-        }
-        eprintln!(
-            "runout: signal received: stopping after this step with a checkpoint \
-             (a second signal stops at once)"
-        );
-    });
-    if let Err(e) = installed {
-        eprintln!("runout: warning: signals will stop the run without a checkpoint: {e}");
-    }
-    stop
-}
-
-/// The exit status of a run stopped by a signal (128 + SIGINT, as shells report it).
-const EXIT_INTERRUPTED: i32 = 130;
-
 /// What `runout run` runs and where.
 struct Target<'a> {
     /// the one case of a sweep file to run
@@ -400,7 +374,7 @@ fn run(file: &Path, target: &Target, quiet: bool, options: &RunOptions) -> ExitC
                             file.display(),
                             dir.display()
                         );
-                        return ExitCode::from(EXIT_INTERRUPTED as u8);
+                        return ExitCode::from(signals::EXIT_INTERRUPTED as u8);
                     }
                     RunStatus::Diverged { diagnosis } => {
                         eprintln!("{}: diverged: {diagnosis}", summary.case);
@@ -456,7 +430,10 @@ fn main() -> ExitCode {
                 replace: overwrite,
                 checkpoint_every: checkpoint_every
                     .map(|m| std::time::Duration::from_secs_f64(60.0 * m)),
-                stop: Some(stop_on_signals()),
+                stop: Some(signals::stop_on_signals(
+                    "runout",
+                    "stopping after this step with a checkpoint",
+                )),
             };
             let target = Target {
                 only: only.as_deref(),

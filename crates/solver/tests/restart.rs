@@ -77,6 +77,17 @@ fn files(dir: &Path) -> Vec<(String, Vec<u8>)> {
     out
 }
 
+/// The checkpoint files of a run folder, oldest first.
+fn checkpoint_files(run_dir: &Path) -> Vec<PathBuf> {
+    let mut files: Vec<_> = std::fs::read_dir(run_dir.join(checkpoint::CHECKPOINT_DIR))
+        .unwrap()
+        .flatten()
+        .map(|e| e.path())
+        .collect();
+    files.sort();
+    files
+}
+
 fn same_run(a: &RunSummary, b: &RunSummary) {
     assert_eq!(a.status, RunStatus::Completed);
     assert_eq!(b.status, RunStatus::Completed);
@@ -127,13 +138,7 @@ fn a_stopped_or_killed_run_restarts_to_the_uninterrupted_result() {
     let killed = folder("killed");
     let first = run(&periodic, &killed, false, Some(110));
     assert_eq!(first.status, RunStatus::Interrupted);
-    let ckpts = killed.join(checkpoint::CHECKPOINT_DIR);
-    let mut names: Vec<_> = std::fs::read_dir(&ckpts)
-        .unwrap()
-        .flatten()
-        .map(|e| e.path())
-        .collect();
-    names.sort();
+    let names = checkpoint_files(&killed);
     assert_eq!(names.len(), 2, "the newest two are kept");
     std::fs::remove_file(names.last().unwrap()).unwrap();
     let restarted = run(&periodic, &killed, true, None);
@@ -173,13 +178,7 @@ fn checkpoints_of_another_version_are_refused_and_damaged_ones_skipped() {
     let dir = folder("versions");
     let first = run(&case, &dir, false, Some(12));
     assert_eq!(first.status, RunStatus::Interrupted);
-    let ckpts = dir.join(checkpoint::CHECKPOINT_DIR);
-    let mut files: Vec<_> = std::fs::read_dir(&ckpts)
-        .unwrap()
-        .flatten()
-        .map(|e| e.path())
-        .collect();
-    files.sort();
+    let files = checkpoint_files(&dir);
     let newest = files.last().unwrap().clone();
     let original = std::fs::read(&newest).unwrap();
     let restart = |dir: &Path| {
@@ -213,12 +212,7 @@ fn checkpoints_of_another_version_are_refused_and_damaged_ones_skipped() {
     std::fs::write(&newest, &original).unwrap();
     let again = run(&case, &dir, true, Some(20));
     assert_eq!(again.status, RunStatus::Interrupted);
-    let mut files: Vec<_> = std::fs::read_dir(&ckpts)
-        .unwrap()
-        .flatten()
-        .map(|e| e.path())
-        .collect();
-    files.sort();
+    let files = checkpoint_files(&dir);
     let newest = files.last().unwrap();
     let bytes = std::fs::read(newest).unwrap();
     std::fs::write(newest, &bytes[..bytes.len() / 2]).unwrap();

@@ -4,7 +4,8 @@
 //!
 //! One concept per file: [`build`] turns a case into a solver, [`case_solver`] is the
 //! loop's view of a solver, [`dt_controller`] the Δt rule, [`monitors`] the scheduled
-//! output, [`checkpoint`] the restart files, [`out_dir`] the run folder's protection.
+//! output, [`checkpoint`] the restart files, [`out_dir`] the run folder's protection,
+//! [`signals`] the stop on SIGINT/SIGTERM.
 
 mod build;
 mod case_solver;
@@ -12,6 +13,7 @@ pub mod checkpoint;
 mod dt_controller;
 mod monitors;
 pub mod out_dir;
+pub mod signals;
 
 use std::path::Path;
 use std::sync::atomic::{AtomicBool, Ordering};
