@@ -155,12 +155,6 @@ fn timed(
         .with_context(|| format!("running {what}"))?;
     let cpu = cpu_seconds() - cpu0;
     let wall = wall.elapsed().as_secs_f64();
-    let mut summary = summary;
-    if restart {
-        // the restarted part only: the checkpoint's tallies are subtracted below by the
-        // caller, which knows them
-        summary.wall_time = wall;
-    }
     let (nx, ny) = summary.cells;
     Ok(Row {
         what,
@@ -228,9 +222,9 @@ fn paper_window(root: &Path, opts: &Options, rows: &mut Vec<Row>) -> Result<()> 
         (Fidelity::Paper, opts.after, opts.span)
     };
     let mut case = base.at_fidelity(fidelity);
+    // the window's case: its checkpoint at `after` and the window both run it
+    case.run.end_time = after + span;
     let start = root.join(format!("runs/bench/S-JJ-phi-{}-t{after}", fidelity.name()));
-    case.run.end_time = after;
-    case.run.checkpoint_interval = None;
     let has_checkpoint = start.join("summary.json").exists()
         && std::fs::read_to_string(start.join("summary.json"))
             .is_ok_and(|s| s.contains("\"Interrupted\""));
@@ -246,13 +240,10 @@ fn paper_window(root: &Path, opts: &Options, rows: &mut Vec<Row>) -> Result<()> 
             stop: Some(stop),
             ..RunOptions::default()
         };
-        // run one step past `after` would change the window; instead stop at `after`
-        // exactly: the end time is `after`, and the stop request after the last step
-        // makes the checkpoint
-        case.run.end_time = after + span;
-        let end = after;
+        // a stop request at the first step past `after` makes the checkpoint the window
+        // starts from (a case ending at `after` would be another case to restart)
         run_case_with(&case, Fidelity::Paper, &start, &options, |p| {
-            if p.time >= end {
+            if p.time >= after {
                 flag.store(true, std::sync::atomic::Ordering::SeqCst);
             }
         })
@@ -264,7 +255,6 @@ fn paper_window(root: &Path, opts: &Options, rows: &mut Vec<Row>) -> Result<()> 
     copy_dir(&start, &window_dir)?;
     let before: RunSummary =
         serde_json::from_str(&std::fs::read_to_string(start.join("summary.json"))?)?;
-    case.run.end_time = after + span;
     let what = format!(
         "S-JJ-phi φ = 0.1 {fidelity} grid, t = {:.3}–{:.3} s",
         before.simulated_time,

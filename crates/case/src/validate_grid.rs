@@ -112,16 +112,20 @@ fn check_fidelity_grid(
             format!(" at fidelity.{name}"),
         ),
     };
+    // an axis or grid that does not build, reported on the domain or the preset's factor
+    let unbuildable = |c: &mut Checker, e: &dyn std::fmt::Display| {
+        let factor = preset.map_or(1, |(_, f)| f);
+        c.fail(
+            size_field.clone(),
+            factor,
+            format!("a factor whose grid builds ({e})"),
+        );
+    };
     let counts = x.cell_count().and_then(|nx| Ok((nx, y.cell_count()?)));
     let (nx, ny) = match counts {
         Ok(n) => n,
         Err(e) => {
-            let factor = preset.map_or(1, |(_, f)| f);
-            c.fail(
-                size_field,
-                factor,
-                format!("a factor whose grid builds ({e})"),
-            );
+            unbuildable(c, &e);
             return false;
         }
     };
@@ -141,12 +145,7 @@ fn check_fidelity_grid(
     let grid = match Grid::from_specs(x, y) {
         Ok(g) => g,
         Err(e) => {
-            let factor = preset.map_or(1, |(_, f)| f);
-            c.fail(
-                size_field,
-                factor,
-                format!("a factor whose grid builds ({e})"),
-            );
+            unbuildable(c, &e);
             return false;
         }
     };

@@ -19,7 +19,7 @@ use std::process::ExitCode;
 use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use runout_case::{case_files, load, Fidelity, Loaded};
-use runout_output::RunStatus;
+use runout_output::{RunStatus, RunSummary};
 use runout_solver::run::{signals, RunOptions};
 use tracing::info;
 
@@ -279,6 +279,7 @@ fn run(file: &Path, target: &Target, quiet: bool, options: &RunOptions) -> ExitC
     let Some(mut cases) = flow_cases(file) else {
         return ExitCode::FAILURE;
     };
+    let several = cases.len() > 1;
     if let Some(name) = only {
         cases.retain(|c| c.case.name == name);
         if cases.is_empty() {
@@ -350,43 +351,11 @@ fn run(file: &Path, target: &Target, quiet: bool, options: &RunOptions) -> ExitC
         });
         bar.finish_and_clear();
         match result {
-            Ok(summary) => {
-                println!(
-                    "{}: {:?} at t = {} s, {} steps ({} rejected), {} outer iterations, {:.2} s wall; output in {}",
-                    summary.case,
-                    summary.status,
-                    summary.simulated_time,
-                    summary.steps,
-                    summary.rejected_steps,
-                    summary.outer_iterations,
-                    summary.wall_time,
-                    dir.display()
-                );
-                match &summary.status {
-                    RunStatus::Completed => {}
-                    RunStatus::Interrupted => {
-                        let end = end_time.map_or(String::new(), |t| format!(" --end-time {t}"));
-                        println!(
-                            "{}: interrupted at t = {} s with a checkpoint; continue with:\n  \
-                             runout run {} --fidelity {fidelity}{end} --restart {}",
-                            summary.case,
-                            summary.simulated_time,
-                            file.display(),
-                            dir.display()
-                        );
-                        return ExitCode::from(signals::EXIT_INTERRUPTED as u8);
-                    }
-                    RunStatus::Diverged { diagnosis } => {
-                        eprintln!("{}: diverged: {diagnosis}", summary.case);
-                        status = ExitCode::FAILURE;
-                    }
-                    RunStatus::Failed { reason } => {
-                        eprintln!("{}: failed: {reason}", summary.case);
-                        status = ExitCode::FAILURE;
-                    }
-                    RunStatus::Running => status = ExitCode::FAILURE,
-                };
-            }
+            Ok(summary) => match report(file, target, &dir, &summary, several) {
+                Reported::Completed => {}
+                Reported::Failed => status = ExitCode::FAILURE,
+                Reported::Interrupted => return ExitCode::from(signals::EXIT_INTERRUPTED as u8),
+            },
             Err(e) => {
                 eprintln!("{}: {e}", file.display());
                 status = ExitCode::FAILURE;
@@ -394,6 +363,68 @@ fn run(file: &Path, target: &Target, quiet: bool, options: &RunOptions) -> ExitC
         }
     }
     status
+}
+
+/// How a run ended, for the exit status.
+enum Reported {
+    Completed,
+    Failed,
+    Interrupted,
+}
+
+/// Prints a finished run's summary line and, for a run that did not complete, why (and,
+/// for an interrupted one, the command that continues it; `--only` where the file holds
+/// several cases).
+fn report(
+    file: &Path,
+    target: &Target,
+    dir: &Path,
+    summary: &RunSummary,
+    several: bool,
+) -> Reported {
+    println!(
+        "{}: {:?} at t = {} s, {} steps ({} rejected), {} outer iterations, {:.2} s wall; output in {}",
+        summary.case,
+        summary.status,
+        summary.simulated_time,
+        summary.steps,
+        summary.rejected_steps,
+        summary.outer_iterations,
+        summary.wall_time,
+        dir.display()
+    );
+    match &summary.status {
+        RunStatus::Completed => Reported::Completed,
+        RunStatus::Interrupted => {
+            let end = target
+                .end_time
+                .map_or(String::new(), |t| format!(" --end-time {t}"));
+            let only = if several {
+                format!(" --only {}", summary.case)
+            } else {
+                String::new()
+            };
+            println!(
+                "{}: interrupted at t = {} s with a checkpoint; continue with:\n  \
+                 runout run {}{only} --fidelity {}{end} --restart {}",
+                summary.case,
+                summary.simulated_time,
+                file.display(),
+                target.fidelity,
+                dir.display()
+            );
+            Reported::Interrupted
+        }
+        RunStatus::Diverged { diagnosis } => {
+            eprintln!("{}: diverged: {diagnosis}", summary.case);
+            Reported::Failed
+        }
+        RunStatus::Failed { reason } => {
+            eprintln!("{}: failed: {reason}", summary.case);
+            Reported::Failed
+        }
+        RunStatus::Running => Reported::Failed,
+    }
 }
 
 fn main() -> ExitCode {

@@ -137,23 +137,29 @@ pub fn single_phase_solver(case: &Case) -> Result<SinglePhase, RunError> {
             s.p[g.cell_index(i, j)] = initial_gas_pressure(case, gas, gravity, &g, x, y);
         }
     }
-    // Walls: zero normal velocity on the wall faces.
-    let (nx, ny) = (g.nx(), g.ny());
+    zero_normal_velocity_on_walls(b, &g, &mut s.u, &mut s.v);
+    Ok(s)
+}
+
+/// Zero normal velocity on the wall faces of one phase's face fields (u on x-faces, v on
+/// y-faces); outlets keep theirs.
+fn zero_normal_velocity_on_walls(b: &Sides<Boundary>, grid: &Grid, u: &mut [f64], v: &mut [f64]) {
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let wall = |side: &Boundary| matches!(side, Boundary::Wall { .. });
     for j in 0..ny {
         for (i, side) in [(0, &b.west), (nx, &b.east)] {
-            if matches!(side, Boundary::Wall { .. }) {
-                s.u[i + (nx + 1) * j] = 0.0;
+            if wall(side) {
+                u[i + (nx + 1) * j] = 0.0;
             }
         }
     }
     for i in 0..nx {
         for (j, side) in [(0, &b.south), (ny, &b.north)] {
-            if matches!(side, Boundary::Wall { .. }) {
-                s.v[i + nx * j] = 0.0;
+            if wall(side) {
+                v[i + nx * j] = 0.0;
             }
         }
     }
-    Ok(s)
 }
 
 /// The fraction of the area of cell (i, j) inside `block` [-] (exact rectangle overlap).
@@ -345,7 +351,24 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
     };
     let mut tf = TwoFluid::new(grid.clone(), fluid, gas_walls, specs, gravity, settings)
         .map_err(|e| unsupported(format!("setting up the two-fluid solver: {e}")))?;
-    // initial state: gas, background θ, then the blocks in order
+    fill_initial_state(&mut tf, case, gas, gravity, &grid);
+    zero_normal_velocity_on_walls(b, &grid, &mut tf.u_g, &mut tf.v_g);
+    for s in tf.solids.iter_mut() {
+        zero_normal_velocity_on_walls(b, &grid, &mut s.u, &mut s.v);
+    }
+    tf.sync_volume_fractions();
+    Ok(tf)
+}
+
+/// The initial state of a two-fluid case: the gas velocity and pressure, the background θ,
+/// then each block in order (cells filled by their centre or by their covered fraction).
+fn fill_initial_state(
+    tf: &mut TwoFluid,
+    case: &Case,
+    gas: &runout_case::Gas,
+    gravity: (f64, f64),
+    grid: &Grid,
+) {
     let (nx, ny) = (grid.nx(), grid.ny());
     let (u0, v0) = case.initial.gas_velocity;
     tf.u_g.iter_mut().for_each(|u| *u = u0);
@@ -359,7 +382,7 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
         for i in 0..nx {
             let (x, y) = grid.cell_centre(i, j);
             let k = i + nx * j;
-            tf.p_g[k] = initial_gas_pressure(case, gas, gravity, &grid, x, y);
+            tf.p_g[k] = initial_gas_pressure(case, gas, gravity, grid, x, y);
             for block in &case.initial.regions {
                 // the part of the cell the block fills: all or nothing by the centre, or
                 // the covered fraction of its area
@@ -373,7 +396,7 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
                             0.0
                         }
                     }
-                    Fill::CoveredFraction => covered_fraction(&grid, i, j, block),
+                    Fill::CoveredFraction => covered_fraction(grid, i, j, block),
                 };
                 if covered <= 0.0 {
                     continue;
@@ -402,31 +425,4 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
             }
         }
     }
-    // walls: zero normal velocity of every phase
-    for (side, is_wall) in [
-        (0usize, matches!(b.west, Boundary::Wall { .. })),
-        (nx, matches!(b.east, Boundary::Wall { .. })),
-    ] {
-        if is_wall {
-            for j in 0..ny {
-                tf.u_g[side + (nx + 1) * j] = 0.0;
-                tf.solids
-                    .iter_mut()
-                    .for_each(|s| s.u[side + (nx + 1) * j] = 0.0);
-            }
-        }
-    }
-    for (side, is_wall) in [
-        (0usize, matches!(b.south, Boundary::Wall { .. })),
-        (ny, matches!(b.north, Boundary::Wall { .. })),
-    ] {
-        if is_wall {
-            for i in 0..nx {
-                tf.v_g[i + nx * side] = 0.0;
-                tf.solids.iter_mut().for_each(|s| s.v[i + nx * side] = 0.0);
-            }
-        }
-    }
-    tf.sync_volume_fractions();
-    Ok(tf)
 }
