@@ -73,6 +73,10 @@ enum Task {
         /// case directory
         #[arg(long, default_value = "cases")]
         cases: PathBuf,
+        /// run the sweeps of this study (`Sweep(study: "...")`, e.g. `release`) instead of the
+        /// paper's matrix
+        #[arg(long)]
+        study: Option<String>,
     },
     /// Run the stiff and extreme cases of cases/stability/ (issue 7) and write their table to
     /// docs/stability.md and docs/stability/summary.csv; fails if a run writes a NaN or an
@@ -142,7 +146,8 @@ enum Task {
     /// docs/results.md and docs/results/) or `cargo xtask report analytic` (paper Fig. 1 into
     /// docs/analytic/).
     Report {
-        /// what to report: results (default) or analytic
+        /// what to report: results (default), analytic or release (the release study,
+        /// docs/reports/release.md)
         #[arg(default_value = "results")]
         what: String,
         /// read only runs of this fidelity (smoke, coarse, wall or paper); default: the best
@@ -189,6 +194,7 @@ fn main() -> Result<()> {
             shard,
             list,
             cases,
+            study,
         } => {
             let opts = sweep::SweepOptions {
                 fidelity: fidelity.parse().map_err(anyhow::Error::msg)?,
@@ -197,6 +203,7 @@ fn main() -> Result<()> {
                     .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get())),
                 shard: shard.as_deref().map(parse_shard).transpose()?,
                 list,
+                study,
             };
             let dir = if cases.is_absolute() {
                 cases
@@ -328,7 +335,14 @@ fn main() -> Result<()> {
                     .transpose()
                     .map_err(anyhow::Error::msg)?,
             ),
-            other => bail!("unknown report `{other}` (known: results, analytic)"),
+            "release" => report::release::report(
+                &root(),
+                fidelity
+                    .map(|f| f.parse())
+                    .transpose()
+                    .map_err(anyhow::Error::msg)?,
+            ),
+            other => bail!("unknown report `{other}` (known: results, analytic, release)"),
         },
         Task::Bench { what, args } => match what.as_str() {
             "linsolve" => {

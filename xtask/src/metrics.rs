@@ -127,16 +127,36 @@ pub fn profile_metrics(profile: &[Vec<f64>]) -> FlowMetrics {
     m
 }
 
+/// The paper's t = 1.25 s in a run's clock: the last time of its case's first profile
+/// monitor (for a case whose times count from the impact, the tilt time later,
+/// docs/impact.md §3); [`PROFILE_TIME`] without one.
+pub fn station_time(case: Option<&runout_case::Case>) -> f64 {
+    case.and_then(|c| c.monitors.profiles.first())
+        .and_then(|p| p.times.last().copied())
+        .unwrap_or(PROFILE_TIME)
+}
+
 /// All flow metrics of the run in `dir`; `described` holds (gate number, speed) pairs.
 pub fn flow_metrics(dir: &Path, described: &[(usize, f64)]) -> FlowMetrics {
-    let mut m = find(dir, "profile_")
+    let resolved = runout_case::load_case(&dir.join("resolved.ron")).ok();
+    let at = station_time(resolved.as_ref());
+    // the profile at the station time (the monitors name files by time with `{}`)
+    let at_station = std::fs::read_dir(dir).ok().and_then(|entries| {
+        entries.filter_map(|e| e.ok().map(|e| e.path())).find(|p| {
+            p.file_name()
+                .and_then(|n| n.to_str())
+                .is_some_and(|n| n.starts_with("profile_") && n.ends_with(&format!("_t{at}.csv")))
+        })
+    });
+    let mut m = at_station
+        .or_else(|| find(dir, "profile_"))
         .and_then(|p| rows(&p))
         .map(|r| profile_metrics(&r))
         .unwrap_or_default();
     if let Some(probe) = find(dir, "wall_probe_").and_then(|p| rows(&p)) {
         m.h_wu_probe = probe
             .iter()
-            .rfind(|r| r[0] <= PROFILE_TIME * (1.0 + 1e-9))
+            .rfind(|r| r[0] <= at * (1.0 + 1e-9))
             .map(|r| r[1]);
     }
     if let Some(gates) = rows(&dir.join("gates.csv")) {

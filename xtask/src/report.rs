@@ -16,6 +16,7 @@
 pub mod data;
 mod paper;
 mod plots;
+pub mod release;
 mod sensitivity;
 
 use std::collections::BTreeMap;
@@ -611,8 +612,9 @@ pub fn write_report(paths: &ReportPaths, requested: Option<Fidelity>) -> Result<
     if count(Fidelity::Smoke) > 0 {
         md.push_str(
             "> **Smoke fidelity is a CI-level check, not a reproduction.** Smoke runs use grids \
-             5–10× coarser than the paper's and stop at t = 0.4 s (0.1 s for the MFIX slide), \
-             before the paper's profile time of 1.25 s and before the flume's front reaches a \
+             5–10× coarser than the paper's and stop at t = 0.4 s (0.1 s for the MFIX slide, \
+             0.4 s after the tilt for family S), before the paper's profile time of 1.25 s and \
+             before the flume's front reaches a \
              gate: they show that the case matrix runs and that the report reads every \
              monitor, and their numbers are not comparable with the paper's. Numbers worth \
              comparing need `cargo xtask sweep --fidelity coarse` or `--fidelity paper`.\n\n",
@@ -623,6 +625,13 @@ pub fn write_report(paths: &ReportPaths, requested: Option<Fidelity>) -> Result<
          runout's are computed from the monitor files as defined in xtask/src/metrics.rs (air \
          cushion: floor εs below 0.8 × the profile's peak; flow thickness: top of the highest \
          cell with εs ≥ 0.01; max u_s over cells with εs ≥ 0.01).\n\n",
+    );
+    md.push_str(
+        "Family S's release, impact and clock are assumptions chosen by one criterion stated \
+         before this comparison (docs/impact.md §4; `cargo xtask report release`): the block \
+         of cases.md filled by covered fraction, gravity tilted at the free fall of its bottom \
+         (0.2856 s), and the paper's \"t = 1.25 s\" counted from that tilt, so family S's \
+         profiles and probe readings are at t = 1.5356 s of the run.\n\n",
     );
 
     md.push_str("## Figures\n\n");

@@ -46,6 +46,8 @@ pub struct SweepOptions {
     pub shard: Option<(usize, usize)>,
     /// list the matrix, run nothing
     pub list: bool,
+    /// run this study's sweeps instead of the paper's matrix
+    pub study: Option<String>,
 }
 
 /// The case matrix of a case directory.
@@ -325,20 +327,39 @@ fn csv_row(name: &str, fidelity: Fidelity, outcome: &Outcome, flow: &FlowMetrics
 }
 
 /// The paper's matrix (cases.md families S, F, M and A): every case under `cases_dir` but
-/// the stiff cases of `cargo xtask stability` and the column collapse of `cargo xtask verify
-/// collapse` (issue 7's check, verification-notes §2f).
+/// the stiff cases of `cargo xtask stability`, the column collapse of `cargo xtask verify
+/// collapse` (issue 7's check, verification-notes §2f) and the sweeps of a study.
 pub fn paper_matrix(cases_dir: &Path) -> Result<Matrix> {
     let mut m = matrix(cases_dir)?;
     let stability = cases_dir.join(STABILITY_DIR);
     let collapse = cases_dir.join(COLLAPSE_DIR);
-    m.runs
-        .retain(|r| !r.file.starts_with(&stability) && !r.file.starts_with(&collapse));
+    m.runs.retain(|r| {
+        r.study.is_none() && !r.file.starts_with(&stability) && !r.file.starts_with(&collapse)
+    });
+    Ok(m)
+}
+
+/// The cases of the sweeps of `study` under `cases_dir` (`Sweep(study: "...")`); an error
+/// if there are none.
+pub fn study_matrix(cases_dir: &Path, study: &str) -> Result<Matrix> {
+    let mut m = matrix(cases_dir)?;
+    m.runs.retain(|r| r.study.as_deref() == Some(study));
+    m.analytic.clear();
+    if m.runs.is_empty() {
+        bail!(
+            "no sweep under {} declares `study: \"{study}\"`",
+            cases_dir.display()
+        );
+    }
     Ok(m)
 }
 
 /// Expands, lists and (unless `list`) runs the matrix; writes results/summary.csv.
 pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
-    let Matrix { runs, analytic } = paper_matrix(cases_dir)?;
+    let Matrix { runs, analytic } = match &opts.study {
+        Some(study) => study_matrix(cases_dir, study)?,
+        None => paper_matrix(cases_dir)?,
+    };
     let selected: Vec<&SourcedCase> = runs
         .iter()
         .filter(|r| opts.only.as_deref().is_none_or(|p| r.case.name.contains(p)))
@@ -362,7 +383,7 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
         let g = c.grid()?;
         cells += g.cell_count();
         println!(
-            "  {:<34} {:>5} x {:<4} to {:>5} s   {}",
+            "  {:<34} {:>5} x {:<4} to {:>6.3} s   {}",
             c.name,
             g.nx(),
             g.ny(),
@@ -583,6 +604,7 @@ mod tests {
                 jobs: 1,
                 shard,
                 list: false,
+                study: None,
             };
             sweep(&tmp.0, &cases, &opts).unwrap();
             let text = std::fs::read_to_string(tmp.0.join("results").join("summary.csv")).unwrap();

@@ -10,6 +10,7 @@
 #![deny(missing_docs)]
 
 mod checker;
+mod clock;
 pub mod limits;
 mod load;
 mod name;
@@ -30,5 +31,5 @@ pub use size::{
     available_memory_bytes, case_size, estimated_memory_bytes, format_bytes, CaseSize,
     AVAILABLE_MEMORY_VAR,
 };
-pub use sweep::{apply_set, expand, Param, Sweep};
+pub use sweep::{apply_set, expand, Param, ReleaseBlock, Sweep};
 pub use validate::{validate_analytic, validate_case};

@@ -7,6 +7,7 @@ use std::str::FromStr;
 use runout_mesh::{Grid, MeshError};
 
 use crate::checker::FieldError;
+use crate::name::{allowed_names, is_valid_name};
 use crate::read::read_text;
 use crate::ron_error;
 use crate::schema::{Analytic, Case};
@@ -156,12 +157,13 @@ impl FromStr for Fidelity {
 }
 
 impl Case {
-    /// This case at a fidelity: the grid coarsened (per axis where the preset says) and the
-    /// end time set by the preset (`Paper` returns the case as written). Monitor times after the end are kept; they
-    /// simply never fire.
+    /// This case at a fidelity, resolved for a run: the grid coarsened (per axis where the
+    /// preset says) and the end time set by the preset (`Paper` keeps the case's grid and
+    /// end time), and times counted from the start ([`Case::with_start_clock`]). Monitor
+    /// times after the end are kept; they simply never fire.
     pub fn at_fidelity(&self, fidelity: Fidelity) -> Case {
         let preset = match fidelity {
-            Fidelity::Paper => return self.clone(),
+            Fidelity::Paper => return self.clone().with_start_clock(),
             Fidelity::Smoke => self.fidelity.smoke.clone(),
             Fidelity::Coarse => self.fidelity.coarse.clone(),
             Fidelity::Wall => self.fidelity.wall_preset(),
@@ -170,7 +172,7 @@ impl Case {
         case.domain.x = self.domain.x.coarsened(preset.coarsen);
         case.domain.y = self.domain.y.coarsened(preset.factor_y());
         case.run.end_time = preset.end_time;
-        case
+        case.with_start_clock()
     }
 
     /// The case's grid.
@@ -188,6 +190,8 @@ pub struct SourcedCase {
     pub file: PathBuf,
     /// the base case file of a sweep
     pub base: Option<PathBuf>,
+    /// the study of its sweep file (`None`: the paper's matrix)
+    pub study: Option<String>,
 }
 
 /// What a file holds.
@@ -287,6 +291,7 @@ pub fn load(file: &Path) -> Result<Loaded, CaseError> {
             case: case_from_text(file, &text)?,
             file: file.to_path_buf(),
             base: None,
+            study: None,
         }])),
         "Sweep" => {
             let sweep: Sweep = parse(file, &text)?;
@@ -295,6 +300,12 @@ pub fn load(file: &Path) -> Result<Loaded, CaseError> {
                 field,
                 message,
             };
+            if let Some(study) = sweep.study.as_deref().filter(|s| !is_valid_name(s)) {
+                return Err(sweep_error((
+                    "study".into(),
+                    format!("`{study}`: {}", allowed_names()),
+                )));
+            }
             let base_path = sweep_base(file, &sweep.base).map_err(sweep_error)?;
             let base = load_case(&base_path)?;
             // `set` values are validated even where `vary` overrides them
@@ -317,6 +328,7 @@ pub fn load(file: &Path) -> Result<Loaded, CaseError> {
                         case,
                         file: file.to_path_buf(),
                         base: Some(base_path.clone()),
+                        study: sweep.study.clone(),
                     })
                 })
                 .collect::<Result<Vec<_>, _>>()

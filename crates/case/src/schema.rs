@@ -413,7 +413,31 @@ pub enum Gravity {
         /// above `contact_eps_s`; the other criteria ignore `contact_eps_s`)
         #[serde(default, skip_serializing_if = "ImpactCriterion::is_floor_cell")]
         criterion: ImpactCriterion,
+        /// what the case's end time and profile times count from (default `Start`;
+        /// `Impact` needs a criterion whose time is known in advance, docs/impact.md §3)
+        #[serde(default, skip_serializing_if = "Clock::is_start")]
+        clock: Clock,
     },
+}
+
+/// What the times of a case with a tilt-on-impact gravity count from. The paper reports
+/// its profiles "at a simulation time (t) of 1.25 s" of a run whose gravity was tilted at
+/// the impact, which may be the time since the start or since the tilt (docs/impact.md §3).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Clock {
+    /// from the start of the run (t = 0 at the release)
+    #[default]
+    Start,
+    /// from the tilt: the end time and the profile times are the tilt time later; a run
+    /// resolves them to times from the start ([`crate::Case::at_fidelity`])
+    Impact,
+}
+
+impl Clock {
+    /// Whether this is the default clock (then not written to resolved cases).
+    pub fn is_start(&self) -> bool {
+        *self == Clock::Start
+    }
 }
 
 /// When a [`Gravity::TiltOnImpact`] schedule tilts gravity (docs/impact.md). The paper tilts

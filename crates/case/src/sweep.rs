@@ -14,7 +14,7 @@ use runout_mesh::short;
 use serde::{Deserialize, Serialize};
 
 use crate::limits::MAX_SWEEP_CASES;
-use crate::schema::{Boundary, Case, Gravity, SolidsWall};
+use crate::schema::{Boundary, Case, Clock, Gravity, SolidsWall};
 
 /// A sweep file (`Sweep(...)`).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -33,6 +33,38 @@ pub struct Sweep {
     /// Parameters varied; the sweep is the Cartesian product of their lists.
     #[serde(default)]
     pub vary: Vec<Param>,
+    /// A study apart from the paper's matrix (e.g. `"release"`): its cases run only under
+    /// `cargo xtask sweep --study NAME`, never in the main sweep or its report.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub study: Option<String>,
+}
+
+/// The release block of a sweep's [`Param::Release`]: the case's one initial region becomes
+/// the rectangle x ∈ (front − length, front), y ∈ (bottom, bottom + height).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ReleaseBlock {
+    /// streamwise length [m]
+    pub length: f64,
+    /// height [m]
+    pub height: f64,
+    /// x of the downstream (front) edge [m]
+    pub front: f64,
+    /// height of the bottom above the floor y = 0 [m]
+    pub bottom: f64,
+}
+
+impl ReleaseBlock {
+    /// Label for case names, e.g. `L0.5-H0.2-F5.5-B0.4`.
+    pub fn label(&self) -> String {
+        format!(
+            "L{}-H{}-F{}-B{}",
+            short(self.length),
+            short(self.height),
+            short(self.front),
+            short(self.bottom)
+        )
+    }
 }
 
 /// A sweepable parameter and its values. Each applies to every place of the case where it
@@ -54,6 +86,10 @@ pub enum Param {
     Slope(Vec<f64>),
     /// the solids condition of every wall side
     SolidsWalls(Vec<SolidsWall>),
+    /// the release block (the case's one initial region; its solids state is kept)
+    Release(Vec<ReleaseBlock>),
+    /// what the times of a tilt-on-impact case count from (docs/impact.md §3)
+    Clock(Vec<Clock>),
 }
 
 impl Param {
@@ -67,6 +103,8 @@ impl Param {
             Param::PartialSlipC(_) => "cw",
             Param::Slope(_) => "slope",
             Param::SolidsWalls(_) => "wall",
+            Param::Release(_) => "release",
+            Param::Clock(_) => "clock",
         }
     }
 
@@ -80,6 +118,8 @@ impl Param {
             Param::PartialSlipC(_) => "PartialSlipC",
             Param::Slope(_) => "Slope",
             Param::SolidsWalls(_) => "SolidsWalls",
+            Param::Release(_) => "Release",
+            Param::Clock(_) => "Clock",
         }
     }
 
@@ -93,6 +133,8 @@ impl Param {
             | Param::PartialSlipC(v)
             | Param::Slope(v) => v.len(),
             Param::SolidsWalls(v) => v.len(),
+            Param::Release(v) => v.len(),
+            Param::Clock(v) => v.len(),
         }
     }
 
@@ -112,6 +154,8 @@ impl Param {
             | Param::PartialSlipC(v)
             | Param::Slope(v) => short(v[k]),
             Param::SolidsWalls(v) => v[k].label(),
+            Param::Release(v) => v[k].label(),
+            Param::Clock(v) => format!("{:?}", v[k]),
         }
     }
 
@@ -171,6 +215,27 @@ impl Param {
                 *w = v[k].clone();
                 true
             }),
+            Param::Release(v) => {
+                let n = case.initial.regions.len();
+                let [region] = case.initial.regions.as_mut_slice() else {
+                    return Err(format!(
+                        "the base case has {n} initial regions; a release needs exactly one"
+                    ));
+                };
+                let b = v[k];
+                region.x = (b.front - b.length, b.front);
+                region.y = (b.bottom, b.bottom + b.height);
+                Ok(())
+            }
+            Param::Clock(v) => match &mut case.gravity {
+                Gravity::TiltOnImpact { clock, .. } => {
+                    *clock = v[k];
+                    Ok(())
+                }
+                Gravity::Constant { .. } => {
+                    Err("the base case's gravity does not tilt on impact".into())
+                }
+            },
         }
     }
 }

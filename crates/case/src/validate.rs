@@ -144,6 +144,7 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
             slope,
             contact_eps_s,
             criterion,
+            clock,
         } => {
             c.range(
                 "gravity.contact_eps_s",
@@ -152,6 +153,19 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
                 B::Open(1.0),
             );
             check_impact_criterion(&mut c, criterion, case);
+            if *clock == Clock::Impact
+                && !matches!(
+                    criterion,
+                    ImpactCriterion::FreeFall | ImpactCriterion::At { .. }
+                )
+            {
+                c.fail(
+                    "gravity.clock",
+                    "Impact",
+                    "Start, or Impact with the criterion FreeFall or At(time) (a time from \
+                     the impact needs the impact's time before the run)",
+                );
+            }
             (*magnitude, *slope)
         }
     };

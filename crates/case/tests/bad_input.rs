@@ -675,12 +675,21 @@ fn sensitivity_base() -> String {
     shipped("sensitivity/base.ron")
 }
 
-/// The base's gravity with an impact criterion (docs/impact.md).
+/// The base's gravity with another impact criterion (docs/impact.md).
 fn with_criterion(criterion: &str) -> String {
     replace_once(
         &sensitivity_base(),
-        "contact_eps_s: 0.01)",
+        "criterion: FreeFall, clock: Impact)",
         &format!("contact_eps_s: 0.01, criterion: {criterion})"),
+    )
+}
+
+/// The base's gravity with no criterion given (the default, `FloorCell`).
+fn default_criterion() -> String {
+    replace_once(
+        &sensitivity_base(),
+        ", criterion: FreeFall, clock: Impact)",
+        ")",
     )
 }
 
@@ -726,7 +735,7 @@ fn impact_criteria_are_accepted_and_bounded() {
     for needs in ["FreeFall", "CentroidDrop", "DenseContact(fraction: 0.5)"] {
         let t = replace_once(
             &with_criterion(needs),
-            "regions: [(x: (5.0, 5.5), y: (0.40, 0.60), solids: [(eps_s: 0.60, theta: 1e-5)])],",
+            "regions: [(x: (5.0, 5.5), y: (0.40, 0.60), solids: [(eps_s: 0.60, theta: 1e-5)], fill: CoveredFraction)],",
             "regions: [],",
         );
         rejected(
@@ -738,8 +747,24 @@ fn impact_criteria_are_accepted_and_bounded() {
 }
 
 #[test]
+fn a_clock_from_the_impact_needs_a_time_known_before_the_run() {
+    for ok in ["FreeFall, clock: Impact", "At(time: 0.3), clock: Impact"] {
+        let (_, r) = load_text("clock.ron", &with_criterion(ok));
+        assert!(r.is_ok(), "{ok}: {:?}", r.err().map(|e| e.to_string()));
+    }
+    for field in ["FloorCell", "DenseContact(fraction: 0.5)", "CentroidDrop"] {
+        rejected(
+            "clock.ron",
+            &with_criterion(&format!("{field}, clock: Impact")),
+            &["gravity.clock", "Impact", "FreeFall or At(time)"],
+        );
+    }
+}
+
+#[test]
 fn the_default_criterion_is_not_written_so_resolved_cases_are_unchanged() {
-    let Ok(runout_case::Loaded::Cases(cases)) = load_text("base.ron", &sensitivity_base()).1 else {
+    let Ok(runout_case::Loaded::Cases(cases)) = load_text("base.ron", &default_criterion()).1
+    else {
         panic!("the base loads")
     };
     let text = ron::ser::to_string(&cases[0].case).unwrap();

@@ -149,18 +149,23 @@ fn paper_grids_have_the_papers_cell_sizes() {
 
 #[test]
 fn fidelity_changes_only_grid_and_end_time() {
+    // besides the clock: the base counts its times from the impact, which every fidelity
+    // resolves to times from the start (docs/impact.md §4)
     let case = load_cases("sensitivity/base.ron").remove(0).case;
+    let tilt = case.scheduled_tilt_time().unwrap();
+    let resolved = case.clone().with_start_clock();
+    assert_eq!(resolved.run.end_time, case.run.end_time + tilt);
     for f in [Fidelity::Smoke, Fidelity::Coarse] {
         let mut c = case.at_fidelity(f);
         assert!(c.grid().unwrap().cell_count() < case.grid().unwrap().cell_count());
         // restore the two fields; everything else must be identical
         c.domain = case.domain.clone();
-        c.run.end_time = case.run.end_time;
-        assert_eq!(c, case);
+        c.run.end_time = resolved.run.end_time;
+        assert_eq!(c, resolved);
     }
-    assert_eq!(case.at_fidelity(Fidelity::Paper), case);
+    assert_eq!(case.at_fidelity(Fidelity::Paper), resolved);
     let smoke = case.at_fidelity(Fidelity::Smoke);
-    assert_eq!(smoke.run.end_time, case.fidelity.smoke.end_time);
+    assert_eq!(smoke.run.end_time, case.fidelity.smoke.end_time + tilt);
     // the block must still be resolved on the smoke grid
     let g = smoke.grid().unwrap();
     let b = &smoke.initial.regions[0];
@@ -195,11 +200,13 @@ fn the_wall_fidelity_keeps_the_papers_cells_in_y() {
     assert_eq!(g.x, coarse.x);
     assert_eq!(g.y, paper.y);
     assert!((g.y.width_range().0 - 0.005).abs() < 1e-12);
-    assert_eq!(wall.run.end_time, case.fidelity.coarse.end_time);
+    let tilt = case.scheduled_tilt_time().unwrap();
+    assert_eq!(wall.run.end_time, case.fidelity.coarse.end_time + tilt);
     let mut c = wall.clone();
     c.domain = case.domain.clone();
-    c.run.end_time = case.run.end_time;
-    assert_eq!(c, case);
+    let resolved = case.clone().with_start_clock();
+    c.run.end_time = resolved.run.end_time;
+    assert_eq!(c, resolved);
     // an explicit preset with per-axis factors
     let mut written = case.clone();
     written.fidelity.wall = Some(runout_case::Preset {
@@ -209,7 +216,7 @@ fn the_wall_fidelity_keeps_the_papers_cells_in_y() {
     });
     let g = written.at_fidelity(Fidelity::Wall).grid().unwrap();
     assert_eq!((g.nx(), g.ny()), (500, 30));
-    assert_eq!(written.at_fidelity(Fidelity::Wall).run.end_time, 0.5);
+    assert_eq!(written.at_fidelity(Fidelity::Wall).run.end_time, 0.5 + tilt);
     // the existing presets and resolved cases are unchanged: nothing new is written
     let text = ron::ser::to_string(&case).unwrap();
     assert!(
@@ -217,4 +224,102 @@ fn the_wall_fidelity_keeps_the_papers_cells_in_y() {
         "{text}"
     );
     assert_eq!("wall".parse::<Fidelity>().unwrap(), Fidelity::Wall);
+}
+
+#[test]
+fn the_release_study_moves_only_the_block_one_factor_at_a_time() {
+    // docs/impact.md §4: nine blocks per floor, each differing from base.ron's in one of
+    // length, height, front edge and bottom; everything else is the family's base
+    let mut base = runout_case::load_case(&cases_dir().join("sensitivity/base.ron")).unwrap();
+    if let runout_case::Gravity::TiltOnImpact { clock, .. } = &mut base.gravity {
+        *clock = runout_case::Clock::Start;
+    }
+    let [block] = base.initial.regions.as_slice() else {
+        panic!("base.ron has one release block")
+    };
+    for file in [
+        "release-JEN.ron",
+        "release-JJ.ron",
+        "release-JEN-t0.ron",
+        "release-JJ-t0.ron",
+    ] {
+        let cases = load_cases(&format!("sensitivity/{file}"));
+        assert_eq!(cases.len(), 9, "{file}");
+        for c in &cases {
+            assert_eq!(c.study.as_deref(), Some("release"), "{}", c.case.name);
+            let [r] = c.case.initial.regions.as_slice() else {
+                panic!("{}: one block", c.case.name)
+            };
+            assert_eq!(r.solids, block.solids);
+            assert_eq!(r.fill, block.fill);
+            let differ = differ_at_round_off;
+            let changed = [
+                differ(r.x.1 - r.x.0, block.x.1 - block.x.0),
+                differ(r.y.1 - r.y.0, block.y.1 - block.y.0),
+                differ(r.x.1, block.x.1),
+                differ(r.y.0, block.y.0),
+            ];
+            // a longer block keeps its front edge, so only its length changes
+            assert!(
+                changed.iter().filter(|&&c| c).count() <= 1,
+                "{}: {changed:?}",
+                c.case.name
+            );
+            let mut same = c.case.clone();
+            same.initial.regions = base.initial.regions.clone();
+            same.name = base.name.clone();
+            same.description = base.description.clone();
+            same.boundaries = base.boundaries.clone();
+            same.solids = base.solids.clone();
+            // the -t0 files count the times from the impact (docs/impact.md §3)
+            if let runout_case::Gravity::TiltOnImpact { clock, .. } = &mut same.gravity {
+                let want = if file.ends_with("-t0.ron") {
+                    runout_case::Clock::Impact
+                } else {
+                    runout_case::Clock::Start
+                };
+                assert_eq!(*clock, want, "{}", c.case.name);
+                *clock = runout_case::Clock::Start;
+            }
+            assert_eq!(
+                same, base,
+                "{}: only the block, walls, d and clock differ",
+                c.case.name
+            );
+        }
+        let first = &cases[0].case.initial.regions[0];
+        assert!(
+            [first.x.0, first.x.1, first.y.0, first.y.1]
+                .iter()
+                .zip([block.x.0, block.x.1, block.y.0, block.y.1])
+                .all(|(a, b)| !differ_at_round_off(*a, b)),
+            "{file} starts at base"
+        );
+    }
+}
+
+fn differ_at_round_off(a: f64, b: f64) -> bool {
+    (a - b).abs() > 1e-12
+}
+
+#[test]
+fn a_release_needs_exactly_one_block() {
+    use runout_case::{Param, ReleaseBlock};
+    let mut case = runout_case::load_case(&cases_dir().join("sensitivity/base.ron")).unwrap();
+    let release = Param::Release(vec![ReleaseBlock {
+        length: 1.0,
+        height: 0.1,
+        front: 7.0,
+        bottom: 0.3,
+    }]);
+    release.apply(0, &mut case).unwrap();
+    assert_eq!(case.initial.regions[0].x, (6.0, 7.0));
+    assert_eq!(case.initial.regions[0].y, (0.3, 0.4));
+    assert_eq!(release.label(0), "L1-H0.1-F7-B0.3");
+    let block = case.initial.regions[0].clone();
+    case.initial.regions.push(block);
+    let err = release.apply(0, &mut case).unwrap_err();
+    assert!(err.contains("2 initial regions"), "{err}");
+    case.initial.regions.clear();
+    assert!(release.apply(0, &mut case).is_err());
 }

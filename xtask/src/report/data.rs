@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use runout_case::{load_case, Fidelity};
 use runout_output::{RunStatus, RunSummary};
 
-use crate::metrics::{profile_metrics, FlowMetrics, PROFILE_TIME};
+use crate::metrics::{profile_metrics, station_time, FlowMetrics, PROFILE_TIME};
 
 /// Fidelities from the best down: the default choice per case.
 const BEST_FIRST: [Fidelity; 3] = [Fidelity::Paper, Fidelity::Coarse, Fidelity::Smoke];
@@ -180,6 +180,9 @@ pub struct CaseData {
     pub bulk: Result<Table, String>,
     /// x of the flume's channel inlet (the case's gate origin) [m]
     pub gate_origin: Option<f64>,
+    /// the paper's t = 1.25 s in the run's clock: its last profile time (later by the tilt
+    /// time for a case whose times count from the impact, docs/impact.md §3) [s]
+    pub station_time: f64,
 }
 
 /// The files of `dir` whose names start with `prefix` and end with `.csv`, sorted.
@@ -265,8 +268,11 @@ impl CaseData {
                 gates: Err(why.clone()),
                 bulk: Err(why),
                 gate_origin: None,
+                station_time: PROFILE_TIME,
             };
         };
+        let resolved = load_case(&r.dir.join("resolved.ron")).ok();
+        let station_time = station_time(resolved.as_ref());
         let probe_file = csv_files(&r.dir, "wall_probe_south_x").into_iter().next();
         let front_file = Some(r.dir.join("front.csv")).filter(|p| p.exists());
         let gates = if r.dir.join("gates.csv").exists() {
@@ -286,7 +292,7 @@ impl CaseData {
         };
         let bulk_file = r.dir.join("bulk.csv");
         CaseData {
-            profile: station_profile(r, PROFILE_TIME),
+            profile: station_profile(r, station_time),
             probe: series(
                 r,
                 probe_file,
@@ -301,9 +307,8 @@ impl CaseData {
             } else {
                 Err(format!("the {} run has no bulk.csv", r.fidelity))
             },
-            gate_origin: load_case(&r.dir.join("resolved.ron"))
-                .ok()
-                .and_then(|c| c.monitors.front.map(|f| f.gate_origin)),
+            gate_origin: resolved.and_then(|c| c.monitors.front.map(|f| f.gate_origin)),
+            station_time,
             run,
         }
     }
@@ -405,6 +410,7 @@ impl CaseData {
             gates: Err(why.clone()),
             bulk: Err(why),
             gate_origin: None,
+            station_time: PROFILE_TIME,
         }
     }
 }

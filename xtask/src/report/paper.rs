@@ -1,7 +1,7 @@
 //! What the paper reports and plots: the numbers of shared/docs/cases.md "What the paper
 //! reports" (paper §§2.2–4) with runout's reading of each, and the case sets of its figures.
 
-use crate::metrics::{mse_vs_described, FlowMetrics, FLOW_THRESHOLD, PROFILE_TIME};
+use crate::metrics::{mse_vs_described, FlowMetrics, FLOW_THRESHOLD};
 
 use super::data::{CaseData, Cases, Profile};
 
@@ -299,12 +299,12 @@ pub fn reading(
             Ok(format!("{:.3}", own - theirs))
         }
         Quantity::ProbeHu => {
-            let (t, h) = data.probe_at(PROFILE_TIME)?;
+            let (t, h) = data.probe_at(data.station_time)?;
             match data
                 .run
                 .as_ref()
                 .ok()
-                .and_then(|r| r.ended_before(PROFILE_TIME))
+                .and_then(|r| r.ended_before(data.station_time))
             {
                 Some(why) => Err(format!("{why}; its last sample: {h:.0} at t = {t:.2} s")),
                 None => Ok(format!("{h:.0}")),

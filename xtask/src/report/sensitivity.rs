@@ -36,10 +36,12 @@ fn symbol(p: &Param) -> (&'static str, &'static str) {
         Param::PartialSlipC(_) => ("c_w", "m/s²"),
         Param::Slope(_) => ("slope", "deg"),
         Param::SolidsWalls(_) => ("wall", ""),
+        Param::Release(_) => ("release", ""),
+        Param::Clock(_) => ("clock", ""),
     }
 }
 
-/// The values of a numeric parameter (`None` for the wall condition).
+/// The values of a numeric parameter (`None` for the wall condition and the release).
 fn values(p: &Param) -> Option<&[f64]> {
     match p {
         Param::Diameter(v)
@@ -48,7 +50,7 @@ fn values(p: &Param) -> Option<&[f64]> {
         | Param::PartialSlipHTheta(v)
         | Param::PartialSlipC(v)
         | Param::Slope(v) => Some(v),
-        Param::SolidsWalls(_) => None,
+        Param::SolidsWalls(_) | Param::Release(_) | Param::Clock(_) => None,
     }
 }
 

@@ -197,6 +197,7 @@ impl PendingTilt {
             slope,
             contact_eps_s,
             ref criterion,
+            ..
         } = case.gravity
         else {
             return None;
@@ -206,13 +207,13 @@ impl PendingTilt {
             ImpactCriterion::DenseContact { fraction } => {
                 ImpactTrigger::FloorEpsS(fraction * release_eps_s(case))
             }
-            ImpactCriterion::FreeFall => {
-                ImpactTrigger::Time((2.0 * release_height(case) / magnitude).sqrt())
-            }
             ImpactCriterion::CentroidDrop => {
-                ImpactTrigger::CentroidBelow(release_centroid_y(case) - release_height(case))
+                ImpactTrigger::CentroidBelow(release_centroid_y(case) - case.release_height())
             }
-            ImpactCriterion::At { time } => ImpactTrigger::Time(time),
+            // sqrt(2 h / g) or the given time (runout_case's clock.rs)
+            ImpactCriterion::FreeFall | ImpactCriterion::At { .. } => {
+                ImpactTrigger::Time(case.scheduled_tilt_time()?)
+            }
         };
         Some(PendingTilt {
             magnitude,
@@ -274,19 +275,6 @@ fn release_eps_s(case: &Case) -> f64 {
         .iter()
         .map(|b| b.solids.iter().map(|s| s.eps_s).sum::<f64>())
         .fold(0.0, f64::max)
-}
-
-/// The height above the floor of the lowest bottom of the initial regions holding solids
-/// [m] (0 without any).
-fn release_height(case: &Case) -> f64 {
-    case.initial
-        .regions
-        .iter()
-        .filter(|b| b.solids.iter().any(|s| s.eps_s > 0.0))
-        .map(|b| b.y.0 - case.domain.y.origin)
-        .reduce(f64::min)
-        .unwrap_or(0.0)
-        .max(0.0)
 }
 
 /// Whether `time` has reached the scheduled time `t`, to within the rounding of a time

@@ -23,12 +23,15 @@ fn with(criterion: ImpactCriterion) -> Case {
     case.fidelity.smoke.end_time = 0.3;
     let Gravity::TiltOnImpact {
         criterion: ref mut c,
+        ref mut clock,
         ..
     } = case.gravity
     else {
         panic!("the base tilts on impact")
     };
     *c = criterion;
+    // times from the start: the runs end at 0.3 s whatever the criterion
+    *clock = runout_case::Clock::Start;
     case.at_fidelity(Fidelity::Smoke)
 }
 
