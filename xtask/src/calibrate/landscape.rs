@@ -266,6 +266,15 @@ pub fn write_summary(
             String::new()
         }
     ));
+    for (p, x) in c.params.iter().zip(&best.x) {
+        if *x == p.lo || *x == p.hi {
+            md.push_str(&format!(
+                "\nThe optimum lies on a bound of {} ({x}): the minimum may lie beyond it; \
+                 widen the bounds to find it.\n",
+                p.name
+            ));
+        }
+    }
     md.push_str(&format!(
         "\n{} evaluations ({} without a misfit): evaluations.csv; landscape: landscape.svg.\n",
         summary.evaluations, summary.evaluations_without_misfit
