@@ -364,7 +364,10 @@ pub fn draw(path: &Path, c: &Calibration, r: &ToleranceRange, cx: &StudyInfo) ->
         }
     };
     let map = Heatmap {
-        title: format!("{}: misfit [{}] on the scan grid", cx.title, cx.unit),
+        title: format!(
+            "{}: misfit [{}], columns: {}",
+            cx.title, cx.unit, c.params[0].name
+        ),
         rows: ys
             .iter()
             .map(|y| format!("{} = {y:.4}", c.params[1].name))
@@ -375,8 +378,8 @@ pub fn draw(path: &Path, c: &Calibration, r: &ToleranceRange, cx: &StudyInfo) ->
             .map(|&y| xs.iter().map(|&x| cell(x, y)).collect())
             .collect(),
         note: format!(
-            "columns: {}; optimum {} = {:.4}, {} = {:.4}, misfit {:.4} (after refinement)",
-            c.params[0].name, c.params[0].name, best.x[0], c.params[1].name, best.x[1], best.misfit
+            "optimum ({:.4}, {:.4}): {:.4}",
+            best.x[0], best.x[1], best.misfit
         ),
     };
     plots::draw_heatmap(path, &map)
