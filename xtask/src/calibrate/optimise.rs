@@ -311,6 +311,51 @@ fn best_index(evaluations: &[Evaluation]) -> Option<usize> {
         .min_by(|&a, &b| evaluations[a].misfit.total_cmp(&evaluations[b].misfit))
 }
 
+/// Refines from `u0` (unit coordinates) until the budget is spent or the method converges:
+/// Brent on [u0 − step, u0 + step] in 1-D, Nelder–Mead from a simplex of half a step in 2-D.
+fn refine(ev: &Evaluator, u0: Vec<f64>, step: f64, settings: &Settings) -> Result<()> {
+    let result = if u0.len() == 1 {
+        let (a, b) = ((u0[0] - step).max(0.0), (u0[0] + step).min(1.0));
+        let solver = BrentOpt::new(a, b).set_tolerance(1e-8, settings.xtol);
+        Executor::new(Brent(ev), solver)
+            .configure(|s| s.max_iters(settings.refine as u64))
+            .run()
+            .map(|_| ())
+    } else {
+        let mut simplex = vec![u0.clone()];
+        for d in 0..2 {
+            let mut v = u0.clone();
+            v[d] += if u0[d] + 0.5 * step <= 1.0 {
+                0.5 * step
+            } else {
+                -0.5 * step
+            };
+            simplex.push(v);
+        }
+        // evaluated here, not in argmin's initialisation (which cannot stop cleanly)
+        for v in &simplex {
+            match ev.cost(v) {
+                Ok(_) => {}
+                Err(e) if e.to_string() == BUDGET => return Ok(()),
+                Err(e) => return Err(e),
+            }
+        }
+        NelderMead::new(simplex)
+            .with_sd_tolerance(settings.ftol)
+            .map_err(|e| anyhow::anyhow!("{e}"))
+            .and_then(|solver| {
+                Executor::new(Simplex(ev), solver)
+                    .configure(|s| s.max_iters(settings.refine as u64))
+                    .run()
+                    .map(|_| ())
+            })
+    };
+    match result {
+        Err(e) if e.to_string() != BUDGET => Err(e),
+        _ => Ok(()),
+    }
+}
+
 /// Calibrates the one or two `params` of `model`.
 pub fn calibrate(params: &[Param], model: &dyn Model, settings: &Settings) -> Result<Calibration> {
     if !(1..=2).contains(&params.len()) {
@@ -363,52 +408,7 @@ pub fn calibrate(params: &[Param], model: &dyn Model, settings: &Settings) -> Re
         0.5
     };
     if settings.refine > 0 {
-        let result = if params.len() == 1 {
-            let (a, b) = ((u0[0] - step).max(0.0), (u0[0] + step).min(1.0));
-            let solver = BrentOpt::new(a, b).set_tolerance(1e-8, settings.xtol);
-            Executor::new(Brent(&ev), solver)
-                .configure(|s| s.max_iters(settings.refine as u64))
-                .run()
-                .map(|_| ())
-        } else {
-            let mut simplex = vec![u0.clone()];
-            for d in 0..2 {
-                let mut v = u0.clone();
-                v[d] += if u0[d] + 0.5 * step <= 1.0 {
-                    0.5 * step
-                } else {
-                    -0.5 * step
-                };
-                simplex.push(v);
-            }
-            // evaluated here, not in argmin's initialisation (which cannot stop cleanly)
-            let mut spent = false;
-            for v in &simplex {
-                match ev.cost(v) {
-                    Ok(_) => {}
-                    Err(e) if e.to_string() == BUDGET => spent = true,
-                    Err(e) => return Err(e),
-                }
-            }
-            if spent {
-                Ok(())
-            } else {
-                NelderMead::new(simplex)
-                    .with_sd_tolerance(settings.ftol)
-                    .map_err(|e| anyhow::anyhow!("{e}"))
-                    .and_then(|solver| {
-                        Executor::new(Simplex(&ev), solver)
-                            .configure(|s| s.max_iters(settings.refine as u64))
-                            .run()
-                            .map(|_| ())
-                    })
-            }
-        };
-        if let Err(e) = result {
-            if e.to_string() != BUDGET {
-                return Err(e);
-            }
-        }
+        refine(&ev, u0, step, settings)?;
     }
     let evaluations = ev.done.into_inner().expect("no poisoned lock");
     let best = best_index(&evaluations).expect("the scan had one");
