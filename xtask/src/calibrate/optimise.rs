@@ -79,7 +79,7 @@ impl Param {
         } else if u >= 1.0 {
             self.hi
         } else {
-            v
+            snap(v)
         }
     }
 
@@ -90,6 +90,18 @@ impl Param {
         } else {
             (v - self.lo) / (self.hi - self.lo)
         }
+    }
+}
+
+/// `v` rounded to 6 significant digits if that changes it by rounding error only (1e-12
+/// relative): 0.1 for the 0.10000000000000002 of a log scale, so that a scan point is the
+/// run of the value as a user writes it (and reuses that run).
+fn snap(v: f64) -> f64 {
+    let short: f64 = format!("{v:.5e}").parse().unwrap_or(v);
+    if (short - v).abs() <= 1e-12 * v.abs() {
+        short
+    } else {
+        v
     }
 }
 
@@ -518,6 +530,18 @@ mod tests {
         );
         assert!(c.optimum().misfit.is_finite());
         assert!(c.evaluations.iter().any(|e| e.misfit.is_nan()));
+    }
+
+    #[test]
+    fn scale_points_are_the_values_as_written() {
+        let mut p = param("phi", 0.01, 1.0, 0.1);
+        p.log = true;
+        assert_eq!(p.value(0.5), 0.1);
+        assert_eq!(p.value(0.25), 0.0316227766016838);
+        assert_eq!((p.value(0.0), p.value(1.0)), (0.01, 1.0));
+        assert!((p.unit(0.1) - 0.5).abs() < 1e-15);
+        let p = param("a", 0.0, 0.3, 0.1);
+        assert_eq!(p.value(1.0 / 3.0), 0.1);
     }
 
     #[test]
