@@ -415,6 +415,35 @@ mod tests {
     }
 
     #[test]
+    fn the_misfit_of_a_run_folder() {
+        let dir = std::env::temp_dir().join(format!("runout-measured-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        std::fs::write(
+            dir.join("gates.csv"),
+            "gate,x,t_cross,speed\n1e0,2.15,0.5,3.0\n2e0,2.6,0.6,5.0\n",
+        )
+        .unwrap();
+        std::fs::write(dir.join("front.csv"), "t,front_x\n0,0\n1,2\n").unwrap();
+        let gates = |text: &str| Measurements {
+            path: "m.csv".into(),
+            kind: parse(text).unwrap(),
+        };
+        // RMS of (3 − 4, 5 − 4) = 1, the report's MSE under a square root
+        let m = gates("gate,speed_m_s\nL1,4\nL2,4\n").misfit(&dir).unwrap();
+        assert_eq!((m.rms, m.compared), (1.0, 2));
+        let m = gates("gate,speed_m_s\nL1,4\nL3,4\n").misfit(&dir).unwrap();
+        assert!(m.rms.is_infinite());
+        assert_eq!(m.missing, ["gate L3 not crossed"]);
+        let m = gates("t,x\n0.5,1.5\n").misfit(&dir).unwrap();
+        assert!((m.rms - 0.5).abs() < 1e-12);
+        assert!(
+            gates("y,u_s\n0.1,1\n").misfit(&dir).is_err(),
+            "no profile file"
+        );
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
     fn interpolation_and_missing_points() {
         let sim = [(0.0, 0.0), (1.0, 2.0), (2.0, 2.0)];
         assert_eq!(interpolate(&sim, 0.5, false), Some(1.0));

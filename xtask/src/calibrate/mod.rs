@@ -435,6 +435,21 @@ mod tests {
     }
 
     #[test]
+    fn a_sweep_file_needs_the_case_named() {
+        let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases/flume/F-JJ.ron");
+        let e = format!("{:#}", select_case(&file, None).unwrap_err());
+        assert!(
+            e.contains("name one with --case") && e.contains("F-JJ_phi=0.01"),
+            "{e}"
+        );
+        let e = format!("{:#}", select_case(&file, Some("F-JJ")).unwrap_err());
+        assert!(e.contains("no case `F-JJ`"), "{e}");
+        let case = select_case(&file, Some("F-JJ_phi=0.01")).unwrap();
+        let p = CasePath::parse("boundaries.south.solids.specularity", &case).unwrap();
+        assert_eq!(p.get(&case).unwrap(), [0.01]);
+    }
+
+    #[test]
     fn run_names_are_folder_names() {
         let keys = vec!["specularity".to_string()];
         assert_eq!(
