@@ -19,11 +19,15 @@
 //! - `error-time`: issue 8's discretisation error of the station profiles and gate speeds
 //!   against wall time over a ladder of grids, for upwind and Superbee ([`error_time`]), in
 //!   docs/error-time.md;
+//! - `calibrate`: fits one or two numeric fields of a case to measurements (front speeds at
+//!   gates, front positions or a profile) by minimising the RMS misfit: a landscape scan,
+//!   then Brent (1-D) or Nelder–Mead (2-D) from argmin ([`calibrate`], docs/calibrate.md);
 //! - `stability`: the stiff and extreme cases of cases/stability/ (issue 7), one at a time,
 //!   with the table of docs/stability.md; fails if a run writes NaN.
 
 mod analytic;
 mod bench_two_fluid;
+mod calibrate;
 mod chute;
 mod collapse;
 mod error_time;
@@ -77,6 +81,49 @@ enum Task {
         /// paper's matrix
         #[arg(long)]
         study: Option<String>,
+    },
+    /// Fit one or two numeric fields of a case to measurements (docs/calibrate.md): a scan
+    /// of the misfit landscape in parallel, then Brent (1-D) or Nelder–Mead (2-D); every
+    /// evaluation is a run in runs/calibrate/<study>/, reused when the same case repeats (a
+    /// killed study resumes when the command is run again).
+    Calibrate {
+        /// the case or sweep file
+        case_file: PathBuf,
+        /// PATH=LO:HI[:START][:log] (one or two): a field path such as
+        /// `boundaries.south.solids.specularity`, or a bare field name such as
+        /// `specularity` for every field of that name
+        #[arg(long = "param", required = true)]
+        params: Vec<String>,
+        /// the measurements CSV (header gate,speed_m_s | t,x | y,<profile column>)
+        #[arg(long)]
+        measurements: PathBuf,
+        /// the case of a sweep file
+        #[arg(long)]
+        case: Option<String>,
+        /// smoke, coarse (default), wall or paper
+        #[arg(long, default_value = "coarse")]
+        fidelity: String,
+        /// landscape scan points per parameter (N, or N × N in 2-D)
+        #[arg(long, default_value_t = 5)]
+        scan: usize,
+        /// at most this many refinement runs (Brent or Nelder–Mead)
+        #[arg(long, default_value_t = 6)]
+        refine: usize,
+        /// parallel runs in the scan
+        #[arg(long, default_value_t = 1)]
+        jobs: usize,
+        /// the reported range: misfit ≤ (1 + tol) × the minimum
+        #[arg(long, default_value_t = 0.1)]
+        tol: f64,
+        /// Brent's absolute tolerance, as a fraction of the bounds (or log bounds)
+        #[arg(long, default_value_t = 0.01)]
+        xtol: f64,
+        /// study name: the folder under runs/calibrate/ (default: the case name)
+        #[arg(long)]
+        name: Option<String>,
+        /// check the input and print the plan; run nothing
+        #[arg(long)]
+        dry_run: bool,
     },
     /// Run the stiff and extreme cases of cases/stability/ (issue 7) and write their table to
     /// docs/stability.md and docs/stability/summary.csv; fails if a run writes a NaN or an
@@ -212,6 +259,36 @@ fn main() -> Result<()> {
             };
             sweep::sweep(&root(), &dir, &opts)
         }
+        Task::Calibrate {
+            case_file,
+            params,
+            measurements,
+            case,
+            fidelity,
+            scan,
+            refine,
+            jobs,
+            tol,
+            xtol,
+            name,
+            dry_run,
+        } => calibrate::run(
+            &root(),
+            &calibrate::Options {
+                case_file,
+                case,
+                params,
+                measurements,
+                fidelity: fidelity.parse().map_err(anyhow::Error::msg)?,
+                scan,
+                refine,
+                jobs,
+                tol,
+                xtol,
+                name,
+                dry_run,
+            },
+        ),
         Task::Stability {
             fidelity,
             only,

@@ -159,15 +159,23 @@ pub fn flow_metrics(dir: &Path, described: &[(usize, f64)]) -> FlowMetrics {
             .rfind(|r| r[0] <= at * (1.0 + 1e-9))
             .map(|r| r[1]);
     }
-    if let Some(gates) = rows(&dir.join("gates.csv")) {
-        m.gate_speeds = gates
-            .iter()
-            .filter(|r| r[3].is_finite())
-            .map(|r| (r[0] as usize, r[3]))
-            .collect();
+    if let Some(speeds) = gate_speeds(dir) {
+        m.gate_speeds = speeds;
         m.mse_vs_described = mse_vs_described(&m.gate_speeds, described).map(|(e, _)| e);
     }
     m
+}
+
+/// The front speed at each gate the run in `dir` crossed (its `gates.csv`): (gate number,
+/// speed); `None` without the file.
+pub fn gate_speeds(dir: &Path) -> Option<Vec<(usize, f64)>> {
+    Some(
+        rows(&dir.join("gates.csv"))?
+            .iter()
+            .filter(|r| r.len() > 3 && r[3].is_finite())
+            .map(|r| (r[0] as usize, r[3]))
+            .collect(),
+    )
 }
 
 /// Mean square difference between gate speeds and the described speeds over the gates both

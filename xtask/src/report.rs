@@ -15,7 +15,7 @@
 
 pub mod data;
 mod paper;
-mod plots;
+pub(crate) mod plots;
 pub mod release;
 mod sensitivity;
 

@@ -106,7 +106,7 @@ pub fn matrix(cases_dir: &Path) -> Result<Matrix> {
 }
 
 /// How one run of the matrix ended.
-enum Outcome {
+pub(crate) enum Outcome {
     /// ran now or earlier; its summary
     Done(RunSummary),
     /// finished in an earlier sweep
@@ -143,6 +143,19 @@ fn run_one(
     if let Some(summary) = read_summary(&done) {
         return Outcome::Skipped(summary);
     }
+    run_into(&case.case, fidelity, &done, bar, stop)
+}
+
+/// Runs `case` at `fidelity` into `done` through `<done>.partial` (renamed when the run
+/// ends; continued from its checkpoint if one is there).
+pub(crate) fn run_into(
+    case: &Case,
+    fidelity: Fidelity,
+    done: &Path,
+    bar: &ProgressBar,
+    stop: &Arc<AtomicBool>,
+) -> Outcome {
+    let name = &case.name;
     let partial = done.with_file_name(format!("{}.partial", fidelity.name()));
     // an unfinished run continues from its checkpoint; one that cannot (another case,
     // another runout) starts again
@@ -159,19 +172,19 @@ fn run_one(
             p.time, p.dt, p.iterations
         ));
     };
-    let mut result = run_case_with(&case.case, fidelity, &partial, &options, show);
+    let mut result = run_case_with(case, fidelity, &partial, &options, show);
     if let Err(RunError::Checkpoint { source, .. }) = &result {
         bar.println(format!("{name}: starting again ({source})"));
         options.restart = false;
         let _ = std::fs::remove_dir_all(&partial);
-        result = run_case_with(&case.case, fidelity, &partial, &options, show);
+        result = run_case_with(case, fidelity, &partial, &options, show);
     }
     bar.finish_and_clear();
     match result {
         Ok(summary) if summary.status == RunStatus::Interrupted => Outcome::Interrupted(summary),
         Ok(summary) => {
-            let _ = std::fs::remove_dir_all(&done);
-            match std::fs::rename(&partial, &done) {
+            let _ = std::fs::remove_dir_all(done);
+            match std::fs::rename(&partial, done) {
                 Ok(()) => Outcome::Done(summary),
                 Err(e) => Outcome::Failed(format!(
                     "renaming {} to {}: {e}",

@@ -1,0 +1,559 @@
+//! The calibration core, independent of runout: a [`Model`] maps parameter values to a
+//! misfit (a case run in production, a closed form in the tests).
+//!
+//! 1. the start point and a landscape scan (N points in 1-D, an N × N grid in 2-D, evenly
+//!    spaced in each parameter's scale), evaluated in parallel on `jobs` workers;
+//! 2. refinement from the best scan point with argmin: Brent's method in 1-D on the
+//!    bracket of the best point's scan neighbours, Nelder–Mead in 2-D from a simplex of
+//!    half a scan step; at most `refine` more evaluations;
+//! 3. the optimum is the best evaluation of all, and the tolerance range the parameters
+//!    whose misfit is within (1 + tol) × the minimum ([`tolerance_range`]).
+//!
+//! The optimiser works in unit coordinates u ∈ [0, 1] per parameter (linear or log scale);
+//! a point outside the box, or one whose misfit is not finite, costs a penalty above every
+//! scanned misfit, so neither method leaves the box or stops on a failed run.
+
+use std::sync::Mutex;
+
+use anyhow::{bail, Result};
+use argmin::core::{CostFunction, Error as ArgminError, Executor};
+use argmin::solver::brent::BrentOpt;
+use argmin::solver::neldermead::NelderMead;
+
+/// One calibrated parameter: bounds, start and scale.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Param {
+    /// name, for messages and tables
+    pub name: String,
+    /// lower bound
+    pub lo: f64,
+    /// upper bound
+    pub hi: f64,
+    /// the start value (evaluated first)
+    pub start: f64,
+    /// scan and optimise in log(value)
+    pub log: bool,
+}
+
+impl Param {
+    /// Checks the bounds and the start: an error names the parameter.
+    pub fn check(&self) -> Result<()> {
+        let name = &self.name;
+        if !(self.lo.is_finite() && self.hi.is_finite() && self.start.is_finite()) {
+            bail!("--param {name}: the bounds and the start must be finite numbers");
+        }
+        if self.lo >= self.hi {
+            bail!(
+                "--param {name}: the lower bound {} is not below the upper {}",
+                self.lo,
+                self.hi
+            );
+        }
+        if !(self.lo..=self.hi).contains(&self.start) {
+            bail!(
+                "--param {name}: the start {} lies outside the bounds [{}, {}]",
+                self.start,
+                self.lo,
+                self.hi
+            );
+        }
+        if self.log && self.lo <= 0.0 {
+            bail!(
+                "--param {name}: a log scale needs a positive lower bound, found {}",
+                self.lo
+            );
+        }
+        Ok(())
+    }
+
+    /// The value at unit coordinate `u`.
+    pub fn value(&self, u: f64) -> f64 {
+        let v = if self.log {
+            (self.lo.ln() + u * (self.hi.ln() - self.lo.ln())).exp()
+        } else {
+            self.lo + u * (self.hi - self.lo)
+        };
+        // exact at the ends, whatever the rounding
+        if u <= 0.0 {
+            self.lo
+        } else if u >= 1.0 {
+            self.hi
+        } else {
+            snap(v)
+        }
+    }
+
+    /// The unit coordinate of `v`.
+    pub fn unit(&self, v: f64) -> f64 {
+        if self.log {
+            (v.ln() - self.lo.ln()) / (self.hi.ln() - self.lo.ln())
+        } else {
+            (v - self.lo) / (self.hi - self.lo)
+        }
+    }
+}
+
+/// `v` rounded to 6 significant digits if that changes it by rounding error only (1e-12
+/// relative): 0.1 for the 0.10000000000000002 of a log scale, so that a scan point is the
+/// run of the value as a user writes it (and reuses that run).
+fn snap(v: f64) -> f64 {
+    let short: f64 = format!("{v:.5e}").parse().unwrap_or(v);
+    if (short - v).abs() <= 1e-12 * v.abs() {
+        short
+    } else {
+        v
+    }
+}
+
+/// What one evaluation gave.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Outcome {
+    /// the misfit; not finite if the evaluation has none (a failed run, a missing point)
+    pub misfit: f64,
+    /// what to note beside it (the run folder, why it has no misfit)
+    pub note: String,
+}
+
+/// The thing calibrated: parameter values → misfit. An `Err` stops the calibration (an
+/// interrupt); a failed evaluation is an [`Outcome`] with a non-finite misfit.
+pub trait Model: Sync {
+    /// The misfit at `x` (one value per parameter).
+    fn evaluate(&self, x: &[f64]) -> Result<Outcome>;
+}
+
+impl<F: Fn(&[f64]) -> f64 + Sync> Model for F {
+    fn evaluate(&self, x: &[f64]) -> Result<Outcome> {
+        Ok(Outcome {
+            misfit: self(x),
+            note: String::new(),
+        })
+    }
+}
+
+/// Which stage made an evaluation.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stage {
+    /// the start point
+    Start,
+    /// the landscape scan
+    Scan,
+    /// the refinement (Brent or Nelder–Mead)
+    Refine,
+}
+
+impl Stage {
+    /// Lower-case name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Stage::Start => "start",
+            Stage::Scan => "scan",
+            Stage::Refine => "refine",
+        }
+    }
+}
+
+/// One evaluation of the model.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Evaluation {
+    /// parameter values
+    pub x: Vec<f64>,
+    /// misfit (not finite: none)
+    pub misfit: f64,
+    /// the stage that asked for it first
+    pub stage: Stage,
+    /// the model's note
+    pub note: String,
+}
+
+/// How to calibrate.
+#[derive(Clone, Debug)]
+pub struct Settings {
+    /// scan points per parameter (0: none, the refinement starts at the start point)
+    pub scan: usize,
+    /// at most this many refinement evaluations
+    pub refine: usize,
+    /// parallel evaluations in the scan
+    pub jobs: usize,
+    /// Brent's absolute tolerance in unit coordinates
+    pub xtol: f64,
+    /// Nelder–Mead stops when the standard deviation of its simplex's misfits is below this
+    pub ftol: f64,
+}
+
+/// A finished calibration.
+#[derive(Clone, Debug)]
+pub struct Calibration {
+    /// the parameters
+    pub params: Vec<Param>,
+    /// every evaluation, in the order made (scan in grid order)
+    pub evaluations: Vec<Evaluation>,
+    /// index of the best evaluation
+    pub best: usize,
+}
+
+impl Calibration {
+    /// The best evaluation.
+    pub fn optimum(&self) -> &Evaluation {
+        &self.evaluations[self.best]
+    }
+}
+
+/// Evaluations with a cache: a point asked twice is evaluated once.
+struct Evaluator<'a> {
+    model: &'a dyn Model,
+    params: &'a [Param],
+    done: Mutex<Vec<Evaluation>>,
+    /// refinement evaluations left
+    budget: Mutex<usize>,
+    /// the cost of a point outside the box or without a misfit
+    penalty: f64,
+}
+
+impl Evaluator<'_> {
+    fn cached(&self, x: &[f64]) -> Option<f64> {
+        let done = self.done.lock().expect("no poisoned lock");
+        done.iter().find(|e| e.x == x).map(|e| e.misfit)
+    }
+
+    fn evaluate(&self, x: Vec<f64>, stage: Stage) -> Result<f64> {
+        if let Some(m) = self.cached(&x) {
+            return Ok(m);
+        }
+        let outcome = self.model.evaluate(&x)?;
+        let mut done = self.done.lock().expect("no poisoned lock");
+        done.push(Evaluation {
+            x,
+            misfit: outcome.misfit,
+            stage,
+            note: outcome.note,
+        });
+        Ok(outcome.misfit)
+    }
+
+    /// The refinement's cost at unit coordinates `u`.
+    fn cost(&self, u: &[f64]) -> Result<f64, ArgminError> {
+        let outside: f64 = u.iter().map(|&v| (-v).max(v - 1.0).max(0.0)).sum();
+        if outside > 0.0 {
+            return Ok(self.penalty * (1.0 + outside));
+        }
+        let x: Vec<f64> = self
+            .params
+            .iter()
+            .zip(u)
+            .map(|(p, &v)| p.value(v))
+            .collect();
+        if let Some(m) = self.cached(&x) {
+            return Ok(if m.is_finite() { m } else { self.penalty });
+        }
+        {
+            let mut left = self.budget.lock().expect("no poisoned lock");
+            if *left == 0 {
+                return Err(anyhow::anyhow!(BUDGET));
+            }
+            *left -= 1;
+        }
+        let m = self.evaluate(x, Stage::Refine)?;
+        Ok(if m.is_finite() { m } else { self.penalty })
+    }
+}
+
+/// The error that ends the refinement when its evaluations are spent.
+const BUDGET: &str = "the refinement's evaluations are spent";
+
+struct Brent<'a, 'b>(&'a Evaluator<'b>);
+impl CostFunction for Brent<'_, '_> {
+    type Param = f64;
+    type Output = f64;
+    fn cost(&self, u: &f64) -> Result<f64, ArgminError> {
+        self.0.cost(&[*u])
+    }
+}
+
+struct Simplex<'a, 'b>(&'a Evaluator<'b>);
+impl CostFunction for Simplex<'_, '_> {
+    type Param = Vec<f64>;
+    type Output = f64;
+    fn cost(&self, u: &Vec<f64>) -> Result<f64, ArgminError> {
+        self.0.cost(u)
+    }
+}
+
+/// The scan's unit coordinates per parameter: n evenly spaced points including both ends
+/// (the middle for n = 1).
+pub fn scan_points(n: usize) -> Vec<f64> {
+    match n {
+        0 => Vec::new(),
+        1 => vec![0.5],
+        _ => (0..n).map(|k| k as f64 / (n - 1) as f64).collect(),
+    }
+}
+
+/// Evaluates `points` on `jobs` workers.
+fn evaluate_all(ev: &Evaluator, points: Vec<Vec<f64>>, stage: Stage, jobs: usize) -> Result<()> {
+    let queue = Mutex::new(points.into_iter());
+    let first_error = Mutex::new(None);
+    std::thread::scope(|scope| {
+        for _ in 0..jobs.max(1) {
+            scope.spawn(|| loop {
+                if first_error.lock().expect("no poisoned lock").is_some() {
+                    break;
+                }
+                let Some(x) = queue.lock().expect("no poisoned lock").next() else {
+                    break;
+                };
+                if let Err(e) = ev.evaluate(x, stage) {
+                    first_error
+                        .lock()
+                        .expect("no poisoned lock")
+                        .get_or_insert(e);
+                }
+            });
+        }
+    });
+    match first_error.into_inner().expect("no poisoned lock") {
+        Some(e) => Err(e),
+        None => Ok(()),
+    }
+}
+
+/// Index of the lowest finite misfit.
+fn best_index(evaluations: &[Evaluation]) -> Option<usize> {
+    (0..evaluations.len())
+        .filter(|&k| evaluations[k].misfit.is_finite())
+        .min_by(|&a, &b| evaluations[a].misfit.total_cmp(&evaluations[b].misfit))
+}
+
+/// Refines from `u0` (unit coordinates) until the budget is spent or the method converges:
+/// Brent on [u0 − step, u0 + step] in 1-D, Nelder–Mead from a simplex of half a step in 2-D.
+fn refine(ev: &Evaluator, u0: Vec<f64>, step: f64, settings: &Settings) -> Result<()> {
+    let result = if u0.len() == 1 {
+        let (a, b) = ((u0[0] - step).max(0.0), (u0[0] + step).min(1.0));
+        let solver = BrentOpt::new(a, b).set_tolerance(1e-8, settings.xtol);
+        Executor::new(Brent(ev), solver)
+            .configure(|s| s.max_iters(settings.refine as u64))
+            .run()
+            .map(|_| ())
+    } else {
+        let mut simplex = vec![u0.clone()];
+        for d in 0..2 {
+            let mut v = u0.clone();
+            v[d] += if u0[d] + 0.5 * step <= 1.0 {
+                0.5 * step
+            } else {
+                -0.5 * step
+            };
+            simplex.push(v);
+        }
+        // evaluated here, not in argmin's initialisation (which cannot stop cleanly)
+        for v in &simplex {
+            match ev.cost(v) {
+                Ok(_) => {}
+                Err(e) if e.to_string() == BUDGET => return Ok(()),
+                Err(e) => return Err(e),
+            }
+        }
+        NelderMead::new(simplex)
+            .with_sd_tolerance(settings.ftol)
+            .map_err(|e| anyhow::anyhow!("{e}"))
+            .and_then(|solver| {
+                Executor::new(Simplex(ev), solver)
+                    .configure(|s| s.max_iters(settings.refine as u64))
+                    .run()
+                    .map(|_| ())
+            })
+    };
+    match result {
+        Err(e) if e.to_string() != BUDGET => Err(e),
+        _ => Ok(()),
+    }
+}
+
+/// Calibrates the one or two `params` of `model`.
+pub fn calibrate(params: &[Param], model: &dyn Model, settings: &Settings) -> Result<Calibration> {
+    if !(1..=2).contains(&params.len()) {
+        bail!(
+            "calibrate fits one or two parameters, found {}",
+            params.len()
+        );
+    }
+    for p in params {
+        p.check()?;
+    }
+    let mut ev = Evaluator {
+        model,
+        params,
+        done: Mutex::new(Vec::new()),
+        budget: Mutex::new(settings.refine),
+        penalty: 0.0,
+    };
+    let start: Vec<f64> = params.iter().map(|p| p.start).collect();
+    ev.evaluate(start.clone(), Stage::Start)?;
+    let axis = scan_points(settings.scan);
+    let grid: Vec<Vec<f64>> = if params.len() == 1 {
+        axis.iter().map(|&u| vec![params[0].value(u)]).collect()
+    } else {
+        axis.iter()
+            .flat_map(|&v| axis.iter().map(move |&u| (u, v)))
+            .map(|(u, v)| vec![params[0].value(u), params[1].value(v)])
+            .collect()
+    };
+    evaluate_all(&ev, grid, Stage::Scan, settings.jobs)?;
+    let done = ev.done.lock().expect("no poisoned lock").clone();
+    let Some(best) = best_index(&done) else {
+        bail!("no evaluation of the start and the scan gave a misfit");
+    };
+    let worst = done
+        .iter()
+        .map(|e| e.misfit)
+        .filter(|m| m.is_finite())
+        .fold(0.0, f64::max);
+    ev.penalty = 2.0 * worst.max(f64::MIN_POSITIVE) + 1.0;
+    let u0: Vec<f64> = params
+        .iter()
+        .zip(&done[best].x)
+        .map(|(p, &x)| p.unit(x))
+        .collect();
+    // half a scan step (a quarter of the box without a scan)
+    let step = if axis.len() >= 2 {
+        1.0 / (axis.len() - 1) as f64
+    } else {
+        0.5
+    };
+    if settings.refine > 0 {
+        refine(&ev, u0, step, settings)?;
+    }
+    let evaluations = ev.done.into_inner().expect("no poisoned lock");
+    let best = best_index(&evaluations).expect("the scan had one");
+    Ok(Calibration {
+        params: params.to_vec(),
+        evaluations,
+        best,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn param(name: &str, lo: f64, hi: f64, start: f64) -> Param {
+        Param {
+            name: name.into(),
+            lo,
+            hi,
+            start,
+            log: false,
+        }
+    }
+
+    fn settings(scan: usize, refine: usize) -> Settings {
+        Settings {
+            scan,
+            refine,
+            jobs: 2,
+            xtol: 1e-6,
+            ftol: 1e-12,
+        }
+    }
+
+    #[test]
+    fn brent_finds_a_known_minimum() {
+        // |x − 0.37| shaped smooth misfit, minimum 0.2 at x = 0.37
+        let f = |x: &[f64]| ((x[0] - 0.37).powi(2) + 0.04).sqrt();
+        let c = calibrate(&[param("a", 0.0, 2.0, 1.3)], &f, &settings(9, 40)).unwrap();
+        let best = c.optimum();
+        assert!((best.x[0] - 0.37).abs() < 1e-4, "{best:?}");
+        assert!((best.misfit - 0.2).abs() < 1e-8);
+        assert_eq!(c.evaluations[0].stage, Stage::Start);
+        assert_eq!(
+            c.evaluations
+                .iter()
+                .filter(|e| e.stage == Stage::Scan)
+                .count(),
+            9
+        );
+        assert!(
+            c.evaluations
+                .iter()
+                .filter(|e| e.stage == Stage::Refine)
+                .count()
+                <= 40
+        );
+    }
+
+    #[test]
+    fn brent_works_on_a_log_scale() {
+        let f = |x: &[f64]| (x[0].log10() + 1.5).powi(2);
+        let mut p = param("phi", 1e-3, 1.0, 0.1);
+        p.log = true;
+        let c = calibrate(&[p], &f, &settings(5, 40)).unwrap();
+        assert!((c.optimum().x[0] / 10f64.powf(-1.5) - 1.0).abs() < 1e-3);
+    }
+
+    #[test]
+    fn nelder_mead_finds_a_known_2d_minimum() {
+        // a tilted, anisotropic quadratic bowl with minimum 1 at (0.3, 4.0)
+        let f = |x: &[f64]| {
+            let (a, b) = (x[0] - 0.3, (x[1] - 4.0) / 10.0);
+            1.0 + 3.0 * a * a + a * b + b * b
+        };
+        let params = [param("a", 0.0, 1.0, 0.9), param("b", -10.0, 10.0, 0.0)];
+        let c = calibrate(&params, &f, &settings(5, 200)).unwrap();
+        let best = c.optimum();
+        assert!((best.x[0] - 0.3).abs() < 1e-3, "{best:?}");
+        assert!((best.x[1] - 4.0).abs() < 1e-2, "{best:?}");
+        assert_eq!(
+            c.evaluations
+                .iter()
+                .filter(|e| e.stage == Stage::Scan)
+                .count(),
+            25
+        );
+    }
+
+    #[test]
+    fn the_budget_bounds_the_refinement_and_failures_are_skipped() {
+        // no misfit left of 0.2 (a failed run), minimum at 0.6
+        let f = |x: &[f64]| {
+            if x[0] < 0.2 {
+                f64::NAN
+            } else {
+                (x[0] - 0.6).powi(2)
+            }
+        };
+        let c = calibrate(&[param("a", 0.0, 1.0, 0.5)], &f, &settings(5, 3)).unwrap();
+        assert_eq!(
+            c.evaluations
+                .iter()
+                .filter(|e| e.stage == Stage::Refine)
+                .count(),
+            3
+        );
+        assert!(c.optimum().misfit.is_finite());
+        assert!(c.evaluations.iter().any(|e| e.misfit.is_nan()));
+    }
+
+    #[test]
+    fn scale_points_are_the_values_as_written() {
+        let mut p = param("phi", 0.01, 1.0, 0.1);
+        p.log = true;
+        assert_eq!(p.value(0.5), 0.1);
+        assert_eq!(p.value(0.25), 0.0316227766016838);
+        assert_eq!((p.value(0.0), p.value(1.0)), (0.01, 1.0));
+        assert!((p.unit(0.1) - 0.5).abs() < 1e-15);
+        let p = param("a", 0.0, 0.3, 0.1);
+        assert_eq!(p.value(1.0 / 3.0), 0.1);
+    }
+
+    #[test]
+    fn bad_bounds_are_refused() {
+        let f = |x: &[f64]| x[0];
+        let s = settings(3, 3);
+        let err = |p: Param| format!("{:#}", calibrate(&[p], &f, &s).unwrap_err());
+        assert!(err(param("a", 1.0, 0.0, 0.5)).contains("not below"));
+        assert!(err(param("a", 0.0, 1.0, 2.0)).contains("outside the bounds"));
+        assert!(err(param("a", 0.0, f64::INFINITY, 0.5)).contains("finite"));
+        let mut p = param("a", 0.0, 1.0, 0.5);
+        p.log = true;
+        assert!(err(p).contains("positive lower bound"));
+    }
+}
