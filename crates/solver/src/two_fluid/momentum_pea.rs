@@ -25,9 +25,10 @@ use super::component::Component;
 use super::diagnostics::since;
 use super::dilute::{dilute_faces, dilute_row};
 use super::residuals::CoupledNode;
-use super::{lin, SolidsFields, TwoFluid, TwoFluidError, MAX_SOLIDS_PHASES};
+use super::{lin, SolidsFields, SolidsSpec, TwoFluid, TwoFluidError, MAX_SOLIDS_PHASES};
 use crate::momentum::{assemble_u, assemble_v, fixed_row, neighbour_sum, Context, PhaseFields};
 use crate::pea::eliminate_node;
+use crate::transport::FaceData;
 
 impl TwoFluid {
     /// Step 2 (module doc); returns the momentum residual summed over u and v.
@@ -113,66 +114,20 @@ impl TwoFluid {
             &mut self.a_vg,
         );
         let (nx, ny) = (grid.nx(), grid.ny());
-        let [cu, cv] = Component::both(nx, ny, self.settings.periodic_x);
-        for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
-            // dilute faces (interpolated εs ≤ DIL_EP_S, docs/model.md §2.7): their rows are
-            // replaced later, so the assembly skips them (most of a slide's domain)
-            dilute_faces(
-                grid,
-                cu,
-                &s.eps,
-                self.a_ug.pattern().fixed_mask(),
-                &mut s.dilute_u,
-            );
-            dilute_faces(
-                grid,
-                cv,
-                &s.eps,
-                self.a_vg.pattern().fixed_mask(),
-                &mut s.dilute_v,
-            );
-            let ctx = Context {
-                bcs: &spec.walls,
-                wall_faces: Some(&s.wall_velocity),
-                ..ctx_gas
-            };
-            let fields = PhaseFields {
-                bulk_density: &s.rho_eps,
-                bulk_density_old: &s.rho_eps_old,
-                volume_fraction: &s.eps,
-                viscosity: &s.mu,
-                solids_pressure: Some(&s.p_s),
-                // −∇P* only with Schaeffer (docs/model.md §4.4); none with Princeton, where
-                // MFIX never computes P* (§2.4.2)
-                plastic_pressure: (spec.params.friction_model == FrictionModel::Schaeffer)
-                    .then_some(&s.p_star[..]),
-                explicit_source: Some(&s.tau_u),
-                skip: Some(&s.dilute_u),
-            };
-            assemble_u(
-                &ctx,
-                &fields,
-                &s.u,
-                &s.v,
-                &s.u_old,
-                &mut self.u_faces,
-                &mut s.a_u,
-            );
-            let fields_v = PhaseFields {
-                explicit_source: Some(&s.tau_v),
-                skip: Some(&s.dilute_v),
-                ..fields
-            };
-            assemble_v(
-                &ctx,
-                &fields_v,
-                &s.u,
-                &s.v,
-                &s.v_old,
-                &mut self.v_faces,
-                &mut s.a_v,
-            );
-        }
+        let components = Component::both(nx, ny, self.settings.periodic_x);
+        let fixed = [
+            self.a_ug.pattern().fixed_mask(),
+            self.a_vg.pattern().fixed_mask(),
+        ];
+        let faces = [&mut self.u_faces, &mut self.v_faces];
+        assemble_solids(
+            &ctx_gas,
+            components,
+            fixed,
+            faces,
+            &mut self.solids,
+            &self.solids_specs,
+        );
     }
 
     /// The linear solves of every phase's u and v; returns their iterations.
@@ -231,6 +186,49 @@ impl TwoFluid {
                 &mut s.tau_v,
             );
         }
+    }
+}
+
+/// The momentum equations of every solids phase without drag (docs/model.md §4.4), with the
+/// gas's context `ctx_gas`; the rows of dilute nodes are skipped.
+fn assemble_solids(
+    ctx_gas: &Context<'_>,
+    [cu, cv]: [Component; 2],
+    fixed: [&[bool]; 2],
+    [u_faces, v_faces]: [&mut FaceData; 2],
+    solids: &mut [SolidsFields],
+    specs: &[SolidsSpec],
+) {
+    for (s, spec) in solids.iter_mut().zip(specs) {
+        // dilute faces (interpolated εs ≤ DIL_EP_S, docs/model.md §2.7): their rows are
+        // replaced later, so the assembly skips them (most of a slide's domain)
+        dilute_faces(ctx_gas.grid, cu, &s.eps, fixed[0], &mut s.dilute_u);
+        dilute_faces(ctx_gas.grid, cv, &s.eps, fixed[1], &mut s.dilute_v);
+        let ctx = Context {
+            bcs: &spec.walls,
+            wall_faces: Some(&s.wall_velocity),
+            ..*ctx_gas
+        };
+        let fields = PhaseFields {
+            bulk_density: &s.rho_eps,
+            bulk_density_old: &s.rho_eps_old,
+            volume_fraction: &s.eps,
+            viscosity: &s.mu,
+            solids_pressure: Some(&s.p_s),
+            // −∇P* only with Schaeffer (docs/model.md §4.4); none with Princeton, where
+            // MFIX never computes P* (§2.4.2)
+            plastic_pressure: (spec.params.friction_model == FrictionModel::Schaeffer)
+                .then_some(&s.p_star[..]),
+            explicit_source: Some(&s.tau_u),
+            skip: Some(&s.dilute_u),
+        };
+        assemble_u(&ctx, &fields, &s.u, &s.v, &s.u_old, u_faces, &mut s.a_u);
+        let fields_v = PhaseFields {
+            explicit_source: Some(&s.tau_v),
+            skip: Some(&s.dilute_v),
+            ..fields
+        };
+        assemble_v(&ctx, &fields_v, &s.u, &s.v, &s.v_old, v_faces, &mut s.a_v);
     }
 }
 
