@@ -451,3 +451,49 @@ fn face_mean(field: &[f64], c0: Option<usize>, c1: Option<usize>) -> f64 {
         (None, None) => 0.0,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use runout_linsolve::Pattern;
+
+    /// One interior u-node of a 2 × 1 grid with one solids phase: the decoupled rows and
+    /// d_g, e_s are the module doc's formulas.
+    #[test]
+    fn decoupled_node_stores_d_and_e_of_the_module_doc() {
+        let (nx, ny) = (2, 1);
+        let pu = Pattern::new(nx + 1, ny).unwrap();
+        let pv = Pattern::new(nx, ny + 1).unwrap();
+        let pc = Pattern::new(nx, ny).unwrap();
+        let mut solids = vec![SolidsFields::new((nx, ny), &pu, &pv, &pc)];
+        solids[0].eps.copy_from_slice(&[0.4, 0.6]);
+        solids[0].u.copy_from_slice(&[0.0, 0.2, 0.0]);
+        let (mut a_g, mut d) = (Stencil5::new(pu), vec![0.0; nx + 1]);
+        let (u_g, v_g, eps_g) = (vec![0.0, 1.0, 0.0], vec![0.0; nx * (ny + 1)], [0.6, 0.4]);
+        let mut gas = GasComponent {
+            a: &mut a_g,
+            d: &mut d,
+            u: &u_g,
+            v: &v_g,
+            eps: &eps_g,
+        };
+        let (a_gas, a_s, f, relax, area) = (3.0, 2.0, 5.0, 0.5, 0.1);
+        let mut node = CoupledNode {
+            cells: (Some(0), Some(1)),
+            ..CoupledNode::default()
+        };
+        node.a_in[..2].copy_from_slice(&[a_gas, a_s]);
+        node.r_in[..2].copy_from_slice(&[1.0, 0.5]);
+        node.phi[..2].copy_from_slice(&[1.0, 0.2]);
+        node.drag[0] = f;
+        let c = Component::u(nx, ny, false);
+        decouple(c, 1, area, relax, &node, &mut gas, &mut solids);
+        let (ag, as_) = (a_gas / relax, a_s / relax);
+        let d_expected = area * (0.5 + 0.5 * f / (as_ + f)) / (ag + f * as_ / (as_ + f));
+        assert!((d[1] - d_expected).abs() < 1e-15 * d_expected);
+        assert_eq!(solids[0].e_u[1], area / as_);
+        // the gas row: a_g + F a_s/(a_s + F), relaxed (docs/model.md §4.5)
+        let a_g_out = (a_gas + f * a_s / (a_s + f)) / relax;
+        assert!((a_g.a_p[1] - a_g_out).abs() < 1e-14 * a_g_out);
+    }
+}

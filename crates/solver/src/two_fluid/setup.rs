@@ -176,7 +176,7 @@ fn linear_solvers(
 impl SolidsFields {
     /// A phase without solids (εs = 0, at rest, θ = θ_small) on an nx × ny grid with the
     /// u, v and cell patterns of its equations.
-    fn new((nx, ny): (usize, usize), pu: &Pattern, pv: &Pattern, pc: &Pattern) -> Self {
+    pub(super) fn new((nx, ny): (usize, usize), pu: &Pattern, pv: &Pattern, pc: &Pattern) -> Self {
         let n = nx * ny;
         SolidsFields {
             eps: vec![0.0; n],

@@ -416,3 +416,32 @@ fn theta_closures(
         theta_faces[along] = model.granular_temperature(&state, &spec.params).face;
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use runout_mesh::Axis;
+
+    #[test]
+    fn a_wall_side_walks_its_fluid_row() {
+        let grid = Grid::new(
+            Axis::uniform(0.0, 3.0, 3).unwrap(),
+            Axis::uniform(0.0, 1.0, 2).unwrap(),
+        );
+        let (u, v): (Vec<f64>, Vec<f64>) = (
+            (0..8).map(f64::from).collect(),
+            (0..9).map(|k| 10.0 + f64::from(k)).collect(),
+        );
+        let north = WallSide::new(&grid, Side::North);
+        assert_eq!((north.row, north.n_cells, north.sign), (1, 3, -1.0));
+        assert_eq!((north.cell(0), north.cell(2)), (3, 5));
+        // u-node 2 of the top row, v at the centre of cell (1, 1)
+        assert_eq!(north.tangential(&u, &v, 2), u[6]);
+        assert_eq!(north.normal_centre(&u, &v, 4), 0.5 * (v[4] + v[7]));
+        let east = WallSide::new(&grid, Side::East);
+        assert_eq!((east.row, east.n_cells, east.sign), (2, 2, -1.0));
+        assert_eq!((east.cell(0), east.cell(1)), (2, 5));
+        assert_eq!(east.tangential(&u, &v, 1), v[5]);
+        assert_eq!(east.normal_centre(&u, &v, 5), 0.5 * (u[6] + u[7]));
+    }
+}
