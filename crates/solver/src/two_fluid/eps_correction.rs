@@ -74,7 +74,7 @@ impl TwoFluid {
     }
 
     /// Ends a converged step with exact discrete solids continuity (if
-    /// [`TwoFluidSettings::exact_solids_continuity`]): each cell's εs becomes
+    /// [`super::TwoFluidSettings::exact_solids_continuity`]): each cell's εs becomes
     /// εs⁰ − Δt/V Σ (εs,face u·n A) with the step's final face fluxes, i.e. the imbalance
     /// the outer iteration left within its tolerance is removed where it sits. Without it
     /// that remainder accumulates where solids compact, because the selective relaxation of
