@@ -165,12 +165,72 @@ pub fn run(setup: &ChuteCheckSetup) -> Result<ChuteCheck, ChuteCheckError> {
         &SolverSettings::default(),
     )?;
 
+    let ny = setup.cells;
+    let mut tf = column(setup, axis, dry, g)?;
+    let rho_s = tf.solids_density(0);
+    let alpha = setup.slope_deg.to_radians();
+    let mass0 = tf.solids_mass(0);
+    let start = Instant::now();
+    let March {
+        time,
+        steps,
+        rejected,
+        rate,
+    } = march(&mut tf, setup)?;
+    let wall_time = start.elapsed().as_secs_f64();
+    let u_s = u_rows(&tf);
+    let s = &tf.solids[0];
+    let mut drag_to_weight: f64 = 0.0;
+    for j in 0..ny {
+        let weight = s.eps[j] * rho_s * g * alpha.sin();
+        if weight > 0.0 {
+            drag_to_weight =
+                drag_to_weight.max((s.drag()[j] * (tf.u_g[2 * j] - u_s[j])).abs() / weight);
+        }
+    }
+    let theta_pointwise_error = s
+        .theta
+        .iter()
+        .zip(&reference.theta)
+        .map(|(a, b)| (a / b - 1.0).abs())
+        .fold(0.0, f64::max);
+    Ok(ChuteCheck {
+        eps_error: relative_error(&s.eps, &reference.eps_s),
+        velocity_error: relative_error(&u_s, &reference.u_s),
+        theta_error: relative_error(&s.theta, &reference.theta),
+        theta_pointwise_error,
+        y: reference.y.clone(),
+        eps_s: s.eps.clone(),
+        theta: s.theta.clone(),
+        u_s,
+        time,
+        steps,
+        rejected,
+        final_rate: rate,
+        steady: rate < setup.steady_rate,
+        mass_change: tf.solids_mass(0) / mass0 - 1.0,
+        drag_to_weight,
+        buoyancy: setup.gas_density / rho_s,
+        wall_time,
+        reference,
+    })
+}
+
+/// The 2-D column of the check on the 1-D reference's y grid `axis`: one cell across (its
+/// width drops out), periodic in x, dry closures `dry` with the setup's gas, gravity `g`
+/// along the slope; started at uniform εs = holdup/H, gas and solids sliding at 0.3 m/s,
+/// θ = 1e-3 m²/s².
+fn column(
+    setup: &ChuteCheckSetup,
+    axis: Axis,
+    dry: ClosureParams,
+    g: f64,
+) -> Result<TwoFluid, ChuteCheckError> {
     // the 2-D column: one cell across (its width drops out), the same y grid
     let grid = Grid::new(
         Axis::uniform(0.0, setup.height, 1).map_err(|e| ChuteCheckError::Column(e.to_string()))?,
         axis,
     );
-    let ny = setup.cells;
     let params = ClosureParams {
         gas: Gas {
             density: setup.gas_density,
@@ -178,7 +238,6 @@ pub fn run(setup: &ChuteCheckSetup) -> Result<ChuteCheck, ChuteCheckError> {
         },
         ..dry
     };
-    let rho_s = params.particles.density;
     let free_slip = SideBc::Wall(RobinFace::ZERO_GRADIENT);
     let zero_flux = Some(RobinFace::ZERO_GRADIENT);
     let spec = SolidsSpec {
@@ -233,18 +292,37 @@ pub fn run(setup: &ChuteCheckSetup) -> Result<ChuteCheck, ChuteCheckError> {
     }
     tf.u_g.iter_mut().for_each(|u| *u = 0.3);
     tf.sync_volume_fractions();
-    let mass0 = tf.solids_mass(0);
+    Ok(tf)
+}
 
-    let start = Instant::now();
+/// How the march to the steady state ended.
+struct March {
+    /// simulated time [s]
+    time: f64,
+    /// accepted and rejected steps
+    steps: usize,
+    rejected: usize,
+    /// the largest relative rate of change at the end [s⁻¹]
+    rate: f64,
+}
+
+/// u of each row of the column (node 0 of the periodic column).
+fn u_rows(tf: &TwoFluid) -> Vec<f64> {
+    let ny = tf.grid().ny();
+    (0..ny).map(|j| tf.solids[0].u[2 * j]).collect()
+}
+
+/// Marches the column in time until its relative rate of change falls below the setup's
+/// `steady_rate` or its end time, growing Δt while the outer iteration copes and halving it
+/// on a failed step.
+fn march(tf: &mut TwoFluid, setup: &ChuteCheckSetup) -> Result<March, ChuteCheckError> {
     let (mut time, mut dt) = (0.0, 1e-4);
     let (mut steps, mut rejected) = (0, 0);
     let mut rate = f64::INFINITY;
-    // u of row j sits at node 0 of the periodic column
-    let u_rows = |tf: &TwoFluid| -> Vec<f64> { (0..ny).map(|j| tf.solids[0].u[2 * j]).collect() };
     while time < setup.end_time {
         let before = (
             tf.solids[0].eps.clone(),
-            u_rows(&tf),
+            u_rows(tf),
             tf.solids[0].theta.clone(),
         );
         let out = tf
@@ -265,7 +343,7 @@ pub fn run(setup: &ChuteCheckSetup) -> Result<ChuteCheck, ChuteCheckError> {
         steps += 1;
         let change = |a: &[f64], b: &[f64]| relative_error(b, a) / dt;
         rate = change(&before.0, &tf.solids[0].eps)
-            .max(change(&before.1, &u_rows(&tf)))
+            .max(change(&before.1, &u_rows(tf)))
             .max(change(&before.2, &tf.solids[0].theta));
         if setup.verbose && steps % 200 == 0 {
             eprintln!(
@@ -281,41 +359,10 @@ pub fn run(setup: &ChuteCheckSetup) -> Result<ChuteCheck, ChuteCheckError> {
             dt = (dt * 1.2).min(setup.dt_max);
         }
     }
-    let wall_time = start.elapsed().as_secs_f64();
-    let s = &tf.solids[0];
-    let u_s = u_rows(&tf);
-    let mut drag_to_weight: f64 = 0.0;
-    for j in 0..ny {
-        let weight = s.eps[j] * rho_s * g * alpha.sin();
-        if weight > 0.0 {
-            drag_to_weight =
-                drag_to_weight.max((s.drag()[j] * (tf.u_g[2 * j] - u_s[j])).abs() / weight);
-        }
-    }
-    let theta_pointwise_error = s
-        .theta
-        .iter()
-        .zip(&reference.theta)
-        .map(|(a, b)| (a / b - 1.0).abs())
-        .fold(0.0, f64::max);
-    Ok(ChuteCheck {
-        eps_error: relative_error(&s.eps, &reference.eps_s),
-        velocity_error: relative_error(&u_s, &reference.u_s),
-        theta_error: relative_error(&s.theta, &reference.theta),
-        theta_pointwise_error,
-        y: reference.y.clone(),
-        eps_s: s.eps.clone(),
-        theta: s.theta.clone(),
-        u_s,
+    Ok(March {
         time,
         steps,
         rejected,
-        final_rate: rate,
-        steady: rate < setup.steady_rate,
-        mass_change: tf.solids_mass(0) / mass0 - 1.0,
-        drag_to_weight,
-        buoyancy: setup.gas_density / rho_s,
-        wall_time,
-        reference,
+        rate,
     })
 }

@@ -198,6 +198,54 @@ pub fn assemble_u(
     faces: &mut FaceData,
     a: &mut Stencil5,
 ) {
+    u_faces(ctx, phase, u, v, faces);
+    assemble_masked(faces, u, ctx.scheme, phase.skip, a);
+    u_sources(ctx, phase, u_old, a);
+}
+
+/// The u-nodes of a grid: the cells beside each node, the distance weights between them and
+/// the widths of the control volumes (a periodic column's node 0 lies between cell nx − 1 and
+/// cell 0 and spans a whole cell).
+#[derive(Clone, Copy)]
+struct UNodes<'a> {
+    grid: &'a Grid,
+    periodic: bool,
+}
+
+impl UNodes<'_> {
+    /// The cells west and east of u-node i: one at an end, unless the column is periodic,
+    /// where node 0 lies between cell nx − 1 (= 0) and cell 0.
+    fn cells_beside(self, i: usize) -> (Option<usize>, Option<usize>) {
+        let nx = self.grid.nx();
+        if self.periodic && i == 0 {
+            (Some(nx - 1), Some(0))
+        } else {
+            (i.checked_sub(1), (i < nx).then_some(i))
+        }
+    }
+
+    /// Distance weight of cell w at the face between cells w and e (½ across the wrap).
+    fn x_weight(self, w: usize, e: usize) -> f64 {
+        if w < e {
+            self.grid.x.interpolation_weight(w)
+        } else {
+            0.5
+        }
+    }
+
+    /// Width of the u control volume: the whole cell for a periodic column's node 0.
+    fn width(self, i: usize) -> f64 {
+        let (nx, dx) = (self.grid.nx(), self.grid.x.widths());
+        if self.periodic && i == 0 {
+            0.5 * (dx[nx - 1] + dx[0])
+        } else {
+            cv_width(dx, i)
+        }
+    }
+}
+
+/// The face fluxes and conductances of the u control volumes (module doc).
+fn u_faces(ctx: &Context<'_>, phase: &PhaseFields<'_>, u: &[f64], v: &[f64], faces: &mut FaceData) {
     let grid = ctx.grid;
     let (nx, ny) = (grid.nx(), grid.ny());
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
@@ -227,31 +275,13 @@ pub fn assemble_u(
         };
         re * vel * dy[j]
     };
-    // the cells west and east of u-node i: one at an end, unless the column is periodic,
-    // where node 0 lies between cell nx − 1 (= 0) and cell 0
-    let cells_beside = |i: usize| -> (Option<usize>, Option<usize>) {
-        if ctx.periodic_x && i == 0 {
-            (Some(nx - 1), Some(0))
-        } else {
-            (i.checked_sub(1), (i < nx).then_some(i))
-        }
+    let nodes = UNodes {
+        grid,
+        periodic: ctx.periodic_x,
     };
-    // distance weight of cell w at the face between cells w and e (½ across the wrap)
-    let x_weight = |w: usize, e: usize| {
-        if w < e {
-            grid.x.interpolation_weight(w)
-        } else {
-            0.5
-        }
-    };
-    // width of the u control volume: the whole cell for a periodic column's node 0
-    let width = |i: usize| -> f64 {
-        if ctx.periodic_x && i == 0 {
-            0.5 * (dx[nx - 1] + dx[0])
-        } else {
-            cv_width(dx, i)
-        }
-    };
+    let cells_beside = |i: usize| nodes.cells_beside(i);
+    let x_weight = |w: usize, e: usize| nodes.x_weight(w, e);
+    let width = |i: usize| nodes.width(i);
     // scalar-cell y-face mass flux at v-node (i, j), 1 ≤ j < ny
     let y_face_flux = |i: usize, j: usize| -> f64 {
         let vel = v[i + nx * j];
@@ -312,7 +342,24 @@ pub fn assemble_u(
             faces.cond_y[k] = mu_corner * width(i) / dyc[j];
         }
     }
-    assemble_masked(faces, u, ctx.scheme, phase.skip, a);
+}
+
+/// The sources of the u equations (walls, transient, gravity, pressure gradients, the
+/// explicit stress) and the rows of fixed nodes.
+fn u_sources(ctx: &Context<'_>, phase: &PhaseFields<'_>, u_old: &[f64], a: &mut Stencil5) {
+    let grid = ctx.grid;
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let (dx, dy) = (grid.x.widths(), grid.y.widths());
+    let mx = nx + 1;
+    let rho_eps = phase.bulk_density;
+    let mu = phase.viscosity;
+    let nodes = UNodes {
+        grid,
+        periodic: ctx.periodic_x,
+    };
+    let cells_beside = |i: usize| nodes.cells_beside(i);
+    let x_weight = |w: usize, e: usize| nodes.x_weight(w, e);
+    let width = |i: usize| nodes.width(i);
     let y0 = grid.y.start();
     let yc = grid.y.centres();
     for j in 0..ny {
@@ -406,6 +453,13 @@ pub fn assemble_v(
     faces: &mut FaceData,
     a: &mut Stencil5,
 ) {
+    v_faces(ctx, phase, u, v, faces);
+    assemble_masked(faces, v, ctx.scheme, phase.skip, a);
+    v_sources(ctx, phase, v_old, a);
+}
+
+/// The face fluxes and conductances of the v control volumes (module doc).
+fn v_faces(ctx: &Context<'_>, phase: &PhaseFields<'_>, u: &[f64], v: &[f64], faces: &mut FaceData) {
     let grid = ctx.grid;
     let (nx, ny) = (grid.nx(), grid.ny());
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
@@ -488,7 +542,17 @@ pub fn assemble_v(
             faces.cond_y[k] = mu[i + nx * (j - 1)] * dx[i] / dy[j - 1];
         }
     }
-    assemble_masked(faces, v, ctx.scheme, phase.skip, a);
+}
+
+/// The sources of the v equations (walls, transient, gravity, pressure gradients, the
+/// explicit stress) and the rows of fixed nodes.
+fn v_sources(ctx: &Context<'_>, phase: &PhaseFields<'_>, v_old: &[f64], a: &mut Stencil5) {
+    let grid = ctx.grid;
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let (dx, dy) = (grid.x.widths(), grid.y.widths());
+    let my = ny + 1;
+    let rho_eps = phase.bulk_density;
+    let mu = phase.viscosity;
     let x0 = grid.x.start();
     let xc = grid.x.centres();
     for j in 0..my {

@@ -197,89 +197,123 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
     })?;
     let b = &case.boundaries;
     let gas_walls = gas_sides(case, gas);
-    // (tangential closure, θ closure, state-dependent model) of each side for the solids
-    type SolidsSide = (SideBc, Option<RobinFace>, Option<SolidsWallModel>);
-    let solids_side = |b: &Boundary| -> Result<SolidsSide, RunError> {
-        let model_err = |e: runout_walls::WallError| unsupported(format!("wall model: {e}"));
-        // placeholders that the per-face closures of a state-dependent model replace
-        let by_model = |m: SolidsWallModel| {
-            (
+    let (w, e, s_, n) = (
+        solids_side(case, gas, &b.west)?,
+        solids_side(case, gas, &b.east)?,
+        solids_side(case, gas, &b.south)?,
+        solids_side(case, gas, &b.north)?,
+    );
+    let specs = solids_specs(case, gas, [w, e, s_, n]);
+    let gravity = match case.gravity {
+        Gravity::Constant { magnitude, slope } => gravity_vector(magnitude, slope),
+        Gravity::TiltOnImpact { magnitude, .. } => gravity_vector(magnitude, 0.0),
+    };
+    let settings = two_fluid_settings(case);
+    let fluid = Fluid {
+        density: gas.density,
+        viscosity: gas.viscosity,
+    };
+    let mut tf = TwoFluid::new(grid.clone(), fluid, gas_walls, specs, gravity, settings)
+        .map_err(|e| unsupported(format!("setting up the two-fluid solver: {e}")))?;
+    fill_initial_state(&mut tf, case, gas, gravity, &grid);
+    zero_normal_velocity_on_walls(b, &grid, &mut tf.u_g, &mut tf.v_g);
+    for s in tf.solids.iter_mut() {
+        zero_normal_velocity_on_walls(b, &grid, &mut s.u, &mut s.v);
+    }
+    tf.sync_volume_fractions();
+    Ok(tf)
+}
+
+/// (tangential closure, θ closure, state-dependent model) of one side for the solids.
+type SolidsSide = (SideBc, Option<RobinFace>, Option<SolidsWallModel>);
+
+/// The solids closures of boundary `b` of a two-fluid case with gas `gas`.
+fn solids_side(case: &Case, gas: &runout_case::Gas, b: &Boundary) -> Result<SolidsSide, RunError> {
+    let unsupported = |reason: String| RunError::Unsupported {
+        case: case.name.clone(),
+        reason,
+    };
+    let model_err = |e: runout_walls::WallError| unsupported(format!("wall model: {e}"));
+    // placeholders that the per-face closures of a state-dependent model replace
+    let by_model = |m: SolidsWallModel| {
+        (
+            SideBc::Wall(RobinFace::ZERO_GRADIENT),
+            Some(RobinFace::ZERO_GRADIENT),
+            Some(m),
+        )
+    };
+    Ok(match b {
+        Boundary::PressureOutlet { .. } => (outlet_bc(b, gas), None, None),
+        Boundary::Wall { solids, .. } => match solids {
+            SolidsWall::NoSlip => (
+                SideBc::Wall(RobinFace::dirichlet(0.0)),
+                Some(RobinFace::ZERO_GRADIENT),
+                None,
+            ),
+            SolidsWall::FreeSlip => (
                 SideBc::Wall(RobinFace::ZERO_GRADIENT),
                 Some(RobinFace::ZERO_GRADIENT),
-                Some(m),
-            )
-        };
-        Ok(match b {
-            Boundary::PressureOutlet { .. } => (outlet_bc(b, gas), None, None),
-            Boundary::Wall { solids, .. } => match solids {
-                SolidsWall::NoSlip => (
-                    SideBc::Wall(RobinFace::dirichlet(0.0)),
-                    Some(RobinFace::ZERO_GRADIENT),
-                    None,
-                ),
-                SolidsWall::FreeSlip => (
-                    SideBc::Wall(RobinFace::ZERO_GRADIENT),
-                    Some(RobinFace::ZERO_GRADIENT),
-                    None,
-                ),
-                SolidsWall::PartialSlip {
-                    h_u,
-                    u_w,
-                    h_theta,
-                    theta_w,
-                    c,
-                } => (
-                    SideBc::Wall(RobinFace::partial_slip(*h_u, *u_w)),
-                    Some(RobinFace::user_theta(*h_theta, *theta_w, *c)),
-                    None,
-                ),
-                SolidsWall::JohnsonJackson {
-                    specularity,
-                    wall_restitution,
-                    wall_friction_angle,
-                    u_w,
-                } => by_model(
-                    SolidsWallModel::johnson_jackson(
-                        *specularity,
-                        *wall_restitution,
-                        *wall_friction_angle,
-                        *u_w,
-                    )
+                None,
+            ),
+            SolidsWall::PartialSlip {
+                h_u,
+                u_w,
+                h_theta,
+                theta_w,
+                c,
+            } => (
+                SideBc::Wall(RobinFace::partial_slip(*h_u, *u_w)),
+                Some(RobinFace::user_theta(*h_theta, *theta_w, *c)),
+                None,
+            ),
+            SolidsWall::JohnsonJackson {
+                specularity,
+                wall_restitution,
+                wall_friction_angle,
+                u_w,
+            } => by_model(
+                SolidsWallModel::johnson_jackson(
+                    *specularity,
+                    *wall_restitution,
+                    *wall_friction_angle,
+                    *u_w,
+                )
+                .map_err(model_err)?,
+            ),
+            SolidsWall::RevisitedJohnsonJackson {
+                wall_restitution,
+                wall_friction_angle,
+                phi0,
+                u_w,
+            } => by_model(
+                SolidsWallModel::revisited_johnson_jackson(
+                    *wall_restitution,
+                    *wall_friction_angle,
+                    *phi0,
+                    *u_w,
+                )
+                .map_err(model_err)?,
+            ),
+            SolidsWall::Jenkins {
+                wall_restitution,
+                wall_friction_angle,
+                u_w,
+            } => by_model(
+                SolidsWallModel::jenkins(*wall_restitution, *wall_friction_angle, *u_w)
                     .map_err(model_err)?,
-                ),
-                SolidsWall::RevisitedJohnsonJackson {
-                    wall_restitution,
-                    wall_friction_angle,
-                    phi0,
-                    u_w,
-                } => by_model(
-                    SolidsWallModel::revisited_johnson_jackson(
-                        *wall_restitution,
-                        *wall_friction_angle,
-                        *phi0,
-                        *u_w,
-                    )
-                    .map_err(model_err)?,
-                ),
-                SolidsWall::Jenkins {
-                    wall_restitution,
-                    wall_friction_angle,
-                    u_w,
-                } => by_model(
-                    SolidsWallModel::jenkins(*wall_restitution, *wall_friction_angle, *u_w)
-                        .map_err(model_err)?,
-                ),
-            },
-        })
-    };
-    let (w, e, s_, n) = (
-        solids_side(&b.west)?,
-        solids_side(&b.east)?,
-        solids_side(&b.south)?,
-        solids_side(&b.north)?,
-    );
-    let specs: Vec<SolidsSpec> = case
-        .solids
+            ),
+        },
+    })
+}
+
+/// The solids phases of a two-fluid case with the solids closures of its (west, east, south,
+/// north) sides.
+fn solids_specs(
+    case: &Case,
+    gas: &runout_case::Gas,
+    [w, e, s_, n]: [SolidsSide; 4],
+) -> Vec<SolidsSpec> {
+    case.solids
         .iter()
         .map(|m| SolidsSpec {
             params: ClosureParams {
@@ -321,13 +355,13 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
                 north: n.2,
             },
         })
-        .collect();
-    let gravity = match case.gravity {
-        Gravity::Constant { magnitude, slope } => gravity_vector(magnitude, slope),
-        Gravity::TiltOnImpact { magnitude, .. } => gravity_vector(magnitude, 0.0),
-    };
+        .collect()
+}
+
+/// The iteration settings of a two-fluid case.
+fn two_fluid_settings(case: &Case) -> TwoFluidSettings {
     let r = &case.numerics.relaxation;
-    let settings = TwoFluidSettings {
+    TwoFluidSettings {
         scheme: match case.numerics.convection {
             Convection::Upwind => Scheme::Upwind,
             Convection::Superbee => Scheme::Superbee,
@@ -344,20 +378,7 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
         periodic_x: false,
         exact_solids_continuity: case.numerics.exact_solids_mass,
         detect_stall: case.run.tolerances.detect_stall,
-    };
-    let fluid = Fluid {
-        density: gas.density,
-        viscosity: gas.viscosity,
-    };
-    let mut tf = TwoFluid::new(grid.clone(), fluid, gas_walls, specs, gravity, settings)
-        .map_err(|e| unsupported(format!("setting up the two-fluid solver: {e}")))?;
-    fill_initial_state(&mut tf, case, gas, gravity, &grid);
-    zero_normal_velocity_on_walls(b, &grid, &mut tf.u_g, &mut tf.v_g);
-    for s in tf.solids.iter_mut() {
-        zero_normal_velocity_on_walls(b, &grid, &mut s.u, &mut s.v);
     }
-    tf.sync_volume_fractions();
-    Ok(tf)
 }
 
 /// The initial state of a two-fluid case: the gas velocity and pressure, the background θ,

@@ -1,0 +1,161 @@
+//! Step 1 of the outer iteration (docs/model.md §4.9): the closures of every cell and solids
+//! phase at the current iterate (docs/model.md §2): μ_s, λ_s, P_s (kinetic + frictional),
+//! Schaeffer's P*, κ_s, K_cp, F_gs and the θ sources, from runout-closures' `evaluate`. The
+//! strain rates of the wall cells use the tangential velocity on the wall faces that the wall
+//! closures imply (docs/model.md §3.2, §4.4; MFIX's ghost cells), the gas–solids slip the
+//! cell-centred averages of the face velocities (docs/model.md §2.6).
+
+use rayon::prelude::*;
+
+use runout_closures::{evaluate, CellState, ClosureParams};
+use runout_mesh::Grid;
+
+use super::walls::wall_face_velocities;
+use super::{SolidsFields, SolidsSpec, PAR_MIN_CELLS, THETA_SMALL};
+use crate::kinematics::{strain_rates, WallVelocities};
+
+/// The closure values one cell contributes to the solver (docs/model.md §2), all zero where
+/// εs = 0.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct CellClosures {
+    /// P_s = P_kin + P_fric [Pa]
+    pub p_s: f64,
+    /// Schaeffer plastic pressure P* [Pa], 0 with other friction models (docs/model.md §2.4.1)
+    pub p_star: f64,
+    /// μ_s = μ_kin + μ_fric [Pa s]
+    pub mu: f64,
+    /// λ_s = λ_kin + λ_fric [Pa s]
+    pub lambda: f64,
+    /// κ_s [kg m⁻¹ s⁻¹]
+    pub kappa: f64,
+    /// K_cp = dP_s/dεs [Pa]
+    pub k_cp: f64,
+    /// F_gs [kg m⁻³ s⁻¹]
+    pub f_gs: f64,
+    /// P_kin/θ [kg m⁻³]
+    pub p_kin_over_theta: f64,
+    /// μ_kin [Pa s]
+    pub mu_kin: f64,
+    /// λ_kin [Pa s]
+    pub lambda_kin: f64,
+    /// γ/θ, collisional dissipation over θ [kg m⁻³ s⁻¹]
+    pub gamma_over_theta: f64,
+    /// J_slip, drag production of θ [kg m⁻¹ s⁻³]
+    pub j_slip: f64,
+}
+
+impl CellClosures {
+    /// The values of one cell from runout-closures' `evaluate` (θ ≥ θ_small expected).
+    pub fn evaluate(state: &CellState, params: &ClosureParams) -> Self {
+        let c = evaluate(state, params);
+        CellClosures {
+            p_s: c.stress.p_s,
+            p_star: c.stress.p_star,
+            mu: c.stress.mu_s,
+            lambda: c.stress.lambda_s,
+            kappa: c.kinetic.kappa_kin,
+            k_cp: c.k_cp,
+            f_gs: c.f_gs,
+            p_kin_over_theta: c.kinetic.p_kin / state.theta,
+            mu_kin: c.kinetic.mu_kin,
+            lambda_kin: c.kinetic.lambda_kin,
+            gamma_over_theta: c.kinetic.dissipation / state.theta,
+            j_slip: c.j_slip,
+        }
+    }
+}
+
+/// Step 1: the closures of every solids phase at the current iterate (module doc), with the
+/// gas velocities `u_g`, `v_g`.
+pub(super) fn update_closures(
+    grid: &Grid,
+    u_g: &[f64],
+    v_g: &[f64],
+    solids: &mut [SolidsFields],
+    specs: &[SolidsSpec],
+) {
+    for (s, spec) in solids.iter_mut().zip(specs) {
+        wall_strain_rates(grid, spec, s);
+        evaluate_cells(grid, u_g, v_g, s, &spec.params);
+        scatter(s);
+    }
+}
+
+/// The strain rates of every cell, those of the wall cells with the wall face velocities.
+fn wall_strain_rates(grid: &Grid, spec: &SolidsSpec, s: &mut SolidsFields) {
+    let on_wall = wall_face_velocities(grid, spec, s);
+    let walls = WallVelocities {
+        south: on_wall.south.then_some(&s.wall_face_velocity.south[..]),
+        north: on_wall.north.then_some(&s.wall_face_velocity.north[..]),
+        west: on_wall.west.then_some(&s.wall_face_velocity.west[..]),
+        east: on_wall.east.then_some(&s.wall_face_velocity.east[..]),
+    };
+    strain_rates(grid, &s.u, &s.v, &walls, &mut s.strain);
+}
+
+/// The closure records of every cell of one phase (`s.cells`), rows in parallel (rayon).
+fn evaluate_cells(
+    grid: &Grid,
+    u_g: &[f64],
+    v_g: &[f64],
+    s: &mut SolidsFields,
+    params: &ClosureParams,
+) {
+    let nx = grid.nx();
+    let (u, v, eps, theta, strain) = (&s.u, &s.v, &s.eps, &s.theta, &s.strain);
+    // tasks of at least PAR_MIN_CELLS cells: a small grid runs as one task
+    let rows_per_task = PAR_MIN_CELLS.div_ceil(nx);
+    s.cells
+        .par_chunks_mut(nx)
+        .with_min_len(rows_per_task)
+        .enumerate()
+        .for_each(|(j, row)| {
+            for (i, out) in row.iter_mut().enumerate() {
+                let k = i + nx * j;
+                if eps[k] == 0.0 {
+                    // no solids: every closure value the solver reads is zero
+                    // (runout-closures gives exactly that at εs = 0; checked by
+                    // the test `closures_vanish_without_solids`)
+                    *out = CellClosures::default();
+                    continue;
+                }
+                // |u_g − u_s| from cell-centred averages of the face velocities (§2.6)
+                let du = 0.5
+                    * ((u_g[i + (nx + 1) * j] - u[i + (nx + 1) * j])
+                        + (u_g[i + 1 + (nx + 1) * j] - u[i + 1 + (nx + 1) * j]));
+                let dv = 0.5 * ((v_g[k] - v[k]) + (v_g[k + nx] - v[k + nx]));
+                let st = strain[k];
+                *out = CellClosures::evaluate(
+                    &CellState {
+                        eps_s: eps[k],
+                        theta: theta[k].max(THETA_SMALL),
+                        slip: (du * du + dv * dv).sqrt(),
+                        tr_d: st.tr_d,
+                        s_ddot_s: st.s_ddot_s,
+                    },
+                    params,
+                );
+            }
+        });
+}
+
+/// The closure records scattered into the field arrays the assemblies read.
+fn scatter(s: &mut SolidsFields) {
+    for k in 0..s.cells.len() {
+        let c = s.cells[k];
+        s.p_s[k] = c.p_s;
+        s.p_star[k] = c.p_star; // P* from the current εs (docs/model.md §2.4.1)
+        s.mu[k] = c.mu;
+        s.lambda[k] = c.lambda;
+        s.kappa[k] = c.kappa;
+        s.k_cp[k] = c.k_cp;
+        s.f_gs[k] = c.f_gs;
+        s.p_kin_over_theta[k] = c.p_kin_over_theta;
+        s.mu_kin[k] = c.mu_kin;
+        s.lambda_kin[k] = c.lambda_kin;
+        s.gamma_over_theta[k] = c.gamma_over_theta;
+        s.j_slip[k] = c.j_slip;
+        s.tr_d[k] = s.strain[k].tr_d;
+        s.tr_d2[k] = s.strain[k].tr_d2;
+    }
+}

@@ -1,0 +1,146 @@
+//! Step 3 of the outer iteration (docs/model.md §4.9): the solids volume-fraction
+//! correction of each phase (Syamlal 1998, docs/model.md §4.7; assembled and applied by
+//! [`crate::volume_fraction`]), εs = εs* + ε' with the selective relaxation beyond εs,max, the
+//! solids velocities corrected with e_s K_cp ∇ε', Schaeffer's P* recomputed from the
+//! corrected εs (docs/model.md §2.4.1), then εg = 1 − Σεs. Also the optional exact solids
+//! continuity at the end of a converged step ([`TwoFluid::conservative_finish`], not MFIX).
+
+use std::time::Instant;
+
+use runout_closures::friction::p_star;
+use runout_closures::FrictionModel;
+use runout_linsolve::{LinSolveError, LinearSolver, Stencil5};
+
+use super::diagnostics::since;
+use super::{lin, solve_keeping_preconditioner, TwoFluid, TwoFluidError};
+use crate::volume_fraction::{
+    apply_correction, assemble_correction, mass_imbalance, CorrectionInputs,
+};
+
+impl TwoFluid {
+    /// Step 3: ε correction of each solids phase; returns the mean |imbalance| summed.
+    pub(super) fn volume_fraction_correction(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
+        let n = self.eps_g.len() as f64;
+        let mut total = 0.0;
+        for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
+            let inputs = CorrectionInputs {
+                density: spec.params.particles.density,
+                eps: &s.eps,
+                eps_old: &s.eps_old,
+                u: &s.u,
+                v: &s.v,
+                e_u: &s.e_u,
+                e_v: &s.e_v,
+                k_cp: &s.k_cp,
+                dt,
+                scheme: self.settings.scheme,
+                periodic_x: self.settings.periodic_x,
+            };
+            assemble_correction(&self.grid, &inputs, &mut s.imbalance, &mut s.a_eps);
+            total += s.imbalance.iter().map(|x| x.abs()).sum::<f64>() / n;
+            let t = Instant::now();
+            let iterations = solve_eps_prime(
+                self.solver_eps.as_mut(),
+                self.solver_eps_fallback.as_mut(),
+                &s.a_eps,
+                &mut s.eps_prime,
+            )
+            .map_err(lin("solids volume fraction"))?;
+            self.profile.iterations.eps += iterations as u64;
+            let solve = since(t);
+            self.profile.eps_solve += solve;
+            self.profile.eps_assembly -= solve;
+            apply_correction(
+                &self.grid,
+                &mut s.eps_prime,
+                &mut s.eps,
+                spec.eps_max,
+                self.settings.relax_eps,
+                &mut s.u,
+                &mut s.v,
+                &s.e_u,
+                &s.e_v,
+                &s.k_cp,
+            );
+            // (Schaeffer only) P* from the corrected εs (docs/model.md §4.9 step 5)
+            if spec.params.friction_model == FrictionModel::Schaeffer {
+                for (p, &e) in s.p_star.iter_mut().zip(&s.eps) {
+                    *p = p_star(e, &spec.params.friction);
+                }
+            }
+        }
+        self.sync_volume_fractions();
+        Ok(total)
+    }
+
+    /// Ends a converged step with exact discrete solids continuity (if
+    /// [`super::TwoFluidSettings::exact_solids_continuity`]): each cell's εs becomes
+    /// εs⁰ − Δt/V Σ (εs,face u·n A) with the step's final face fluxes, i.e. the imbalance
+    /// the outer iteration left within its tolerance is removed where it sits. Without it
+    /// that remainder accumulates where solids compact, because the selective relaxation of
+    /// positive ε' beyond εs,max (docs/model.md §4.7) leaves every step's imbalance with the
+    /// same sign (3e-7 of the solids over family M, 2e-5 over ST-schaeffer, 1e-7 over a
+    /// coarse column collapse). The change is of the size of the step tolerance (MFIX keeps
+    /// the remainder). Internal fluxes cancel in
+    /// pairs, so the solids mass changes by exactly the boundary flux, up to the mass of any
+    /// cell that would go below zero (clipped, reported by tracing).
+    pub(super) fn conservative_finish(&mut self, dt: f64) {
+        for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
+            let density = spec.params.particles.density;
+            let inputs = CorrectionInputs {
+                density,
+                eps: &s.eps,
+                eps_old: &s.eps_old,
+                u: &s.u,
+                v: &s.v,
+                e_u: &s.e_u,
+                e_v: &s.e_v,
+                k_cp: &s.k_cp,
+                dt,
+                scheme: self.settings.scheme,
+                periodic_x: self.settings.periodic_x,
+            };
+            mass_imbalance(&self.grid, &inputs, &mut s.imbalance);
+            let nx = self.grid.nx();
+            let (mut largest, mut clipped) = (0.0_f64, 0.0);
+            for (k, (e, r)) in s.eps.iter_mut().zip(&s.imbalance).enumerate() {
+                let volume = self.grid.cell_volume(k % nx, k / nx);
+                let change = -r * dt / (density * volume);
+                largest = largest.max(change.abs());
+                *e += change;
+                if *e < 0.0 {
+                    clipped -= *e * volume;
+                    *e = 0.0;
+                }
+            }
+            tracing::trace!(
+                largest,
+                clipped,
+                "conservative finish of the solids continuity"
+            );
+        }
+        self.sync_volume_fractions();
+    }
+}
+
+/// Solves the ε' system `a` from ε' = 0 with a fresh multigrid preconditioner (ε' is rebuilt
+/// every iteration: its K_cp terms change too much within a step; kept, the solves took 17 %
+/// longer on family M); where the multigrid-preconditioned BiCGSTAB breaks down (seen at its
+/// first iteration on the paper grid of the sensitivity slide, during the fall), with MFIX's
+/// own ε' method (docs/model.md §4.13) instead of failing the step. Returns the iterations.
+fn solve_eps_prime(
+    solver: &mut dyn LinearSolver,
+    fallback: &mut dyn LinearSolver,
+    a: &Stencil5,
+    eps_prime: &mut [f64],
+) -> Result<usize, LinSolveError> {
+    eps_prime.iter_mut().for_each(|x| *x = 0.0);
+    match solve_keeping_preconditioner(solver, a, eps_prime, true) {
+        Err(LinSolveError::Breakdown { .. }) => {
+            tracing::debug!("eps' solve: multigrid breakdown, line-relaxed BiCGSTAB instead");
+            eps_prime.iter_mut().for_each(|x| *x = 0.0);
+            solve_keeping_preconditioner(fallback, a, eps_prime, true)
+        }
+        solved => solved,
+    }
+}

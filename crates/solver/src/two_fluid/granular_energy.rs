@@ -1,0 +1,165 @@
+//! Step 5 of the outer iteration (docs/model.md §4.9): the granular energy of each solids
+//! phase (docs/model.md §4.8, assembled by [`crate::energy`]), with the θ closures of the
+//! state-dependent walls. Each cell's row is of one of two classes:
+//! - dense (εs > DIL_EP_S): the θ equation, under-relaxed a_P/ω (docs/model.md §4.10), or
+//!   with Schaeffer friction a fixed row θ = θ_small where εg < εg* (docs/model.md §1.3, as
+//!   MFIX, not relaxed);
+//! - dilute: the mean θ of its dense neighbour cells, or kept if none (MFIX `source_phi.f`,
+//!   [`super::dilute::dilute_cell_row`]); optionally a cell whose class changes back within
+//!   a step is frozen dilute ([`super::dilute::next_dilute_class`]).
+//!
+//! The residual Σ|Σ a_nb θ_nb + b − a_P θ_P| / Σ|a_P θ_P| is taken over the dense rows before
+//! relaxation (docs/model.md §4.11); after the solve θ ≥ θ_small (MFIX `adjust_theta.f`).
+
+use std::time::Instant;
+
+use runout_closures::FrictionModel;
+use runout_linsolve::Stencil5;
+
+use super::diagnostics::since;
+use super::dilute::{dilute_cell_row, next_dilute_class};
+use super::{lin, SolidsFields, TwoFluid, TwoFluidError, DIL_EP_S, THETA_SMALL};
+use crate::energy::{assemble_theta, EnergyInputs};
+use crate::momentum::{fixed_row, neighbour_sum};
+
+impl TwoFluid {
+    /// Step 5: granular energy of each solids phase (module doc); returns the θ residual
+    /// summed over phases.
+    pub(super) fn granular_energy(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
+        let mut worst_theta = (0.0, 0);
+        let relax = self.settings.relax_theta;
+        let nx = self.grid.nx();
+        let freeze = self.settings.freeze_cycling_dilute_class && !self.theta_class_fresh;
+        let mut residual = 0.0;
+        for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
+            let inputs = EnergyInputs {
+                bulk_density: &s.rho_eps,
+                bulk_density_old: &s.rho_eps_old,
+                conductivity: &s.kappa,
+                p_kin_over_theta: &s.p_kin_over_theta,
+                mu_kin: &s.mu_kin,
+                lambda_kin: &s.lambda_kin,
+                dissipation_over_theta: &s.gamma_over_theta,
+                drag: &s.f_gs,
+                slip_production: &s.j_slip,
+                tr_d: &s.tr_d,
+                tr_d2: &s.tr_d2,
+            };
+            assemble_theta(
+                &self.grid,
+                &inputs,
+                &spec.theta_walls,
+                Some(&s.wall_theta),
+                &s.u,
+                &s.v,
+                &s.theta_old,
+                dt,
+                self.settings.scheme,
+                &s.theta,
+                &mut self.c_faces,
+                &mut s.a_theta,
+            );
+            classify_rows(s, freeze);
+            // Schaeffer: θ = θ_small where εg < εg* (docs/model.md §1.3)
+            let eps_g_star = (spec.params.friction_model == FrictionModel::Schaeffer)
+                .then_some(1.0 - spec.params.friction.eps_s_max);
+            let rows = ThetaRows {
+                theta: &s.theta,
+                dense: &s.theta_dense,
+                eps_g: &self.eps_g,
+                eps_g_star,
+                relax,
+                nx,
+            };
+            residual += rows.finish(&mut s.a_theta, &mut worst_theta);
+            let t = Instant::now();
+            self.profile.iterations.theta += self
+                .solver_theta
+                .setup_and_solve(&s.a_theta, &mut s.theta)
+                .map_err(lin("granular energy"))?
+                .iterations as u64;
+            let solve = since(t);
+            self.profile.theta_solve += solve;
+            self.profile.theta_assembly -= solve;
+            s.theta.iter_mut().for_each(|t| *t = t.max(THETA_SMALL));
+        }
+        self.theta_class_fresh = false;
+        self.worst.theta = worst_theta;
+        Ok(residual)
+    }
+}
+
+/// The class of each θ row: MFIX's εs > DIL_EP_S, unless `freeze` (a cycling cell keeps
+/// the class [`next_dilute_class`] gives it).
+fn classify_rows(s: &mut SolidsFields, freeze: bool) {
+    for k in 0..s.theta.len() {
+        let dense_now = s.eps[k] > DIL_EP_S;
+        if freeze {
+            next_dilute_class(
+                dense_now,
+                &mut s.theta_dense[k],
+                &mut s.theta_class_changes[k],
+            );
+        } else {
+            s.theta_dense[k] = dense_now;
+            s.theta_class_changes[k] = 0;
+        }
+    }
+}
+
+/// What the θ rows of one phase are finished with.
+struct ThetaRows<'a> {
+    /// θ at the current iterate
+    theta: &'a [f64],
+    /// the class of each row (true: dense)
+    dense: &'a [bool],
+    /// εg per cell
+    eps_g: &'a [f64],
+    /// Schaeffer's εg* = 1 − εs,max (`None` with other friction models)
+    eps_g_star: Option<f64>,
+    /// θ relaxation ω
+    relax: f64,
+    /// cells per row
+    nx: usize,
+}
+
+impl ThetaRows<'_> {
+    /// Replaces the dilute rows, fixes the forced ones and relaxes the others of the
+    /// assembled `a`; returns the phase's residual and keeps its largest (|residual|, cell)
+    /// in `worst` (module doc).
+    fn finish(&self, a: &mut Stencil5, worst: &mut (f64, usize)) -> f64 {
+        let (theta, relax) = (self.theta, self.relax);
+        let (mut num, mut den) = (0.0, 0.0);
+        for k in 0..theta.len() {
+            if !self.dense[k] {
+                // the mean θ of the neighbours with εs > DIL_EP_S, or kept if none
+                // (docs/model.md §4.8, MFIX `source_phi.f`)
+                dilute_cell_row(a, k, theta[k], self.dense, self.nx);
+                continue;
+            }
+            // a fixed row before the residual and not relaxed (MFIX
+            // `solve_granular_energy.f`, `under_relax.f`)
+            let forced = self.eps_g_star.is_some_and(|star| self.eps_g[k] < star);
+            if forced {
+                fixed_row(a, k, THETA_SMALL); // docs/model.md §1.3 (Schaeffer)
+            }
+            let nb = neighbour_sum(a, theta, k) - a.a_p[k] * theta[k];
+            num += nb.abs();
+            if nb.abs() > worst.0 {
+                *worst = (nb.abs(), k);
+            }
+            den += (a.a_p[k] * theta[k]).abs();
+            if forced {
+                continue; // fixed rows are not relaxed (MFIX `under_relax.f`, §1.3)
+            }
+            let ap = a.a_p[k] / relax;
+            a.b[k] += (1.0 - relax) * ap * theta[k];
+            a.a_p[k] = ap;
+        }
+        if den > 0.0 {
+            num / den
+        } else {
+            num
+        }
+    }
+}

@@ -1,0 +1,499 @@
+//! Step 2 of the outer iteration (docs/model.md §4.9): the momentum predictor of the gas and
+//! every solids phase, u and v (docs/model.md §4.4, assembled by [`crate::momentum`]), with
+//! the gas–solids drag removed by partial elimination (docs/model.md §4.5, [`crate::pea`])
+//! and Patankar under-relaxation a_P/ω (docs/model.md §4.10).
+//!
+//! At a coupled node of face area A with the cells c0, c1 beside it, the drag of solids
+//! phase m is F_m = F_gs,c0 V0/2 + F_gs,c1 V1/2 (the face average by volume, MFIX VF_GS_X),
+//! and with the relaxed centre coefficients a_g/ω, a_m/ω of the equations before elimination
+//! the node also stores what the corrections read:
+//!   d_g = A (ε̄g + Σ_m ε̄s,m F_m/(a_m/ω + F_m)) / (a_g/ω + Σ_m F_m (a_m/ω)/(a_m/ω + F_m))
+//! of the gas pressure correction (docs/model.md §4.6) and e_m = A/(a_m/ω) of the solids
+//! volume-fraction correction (docs/model.md §4.7), ε̄ the mean of the two cells. Dilute
+//! solids nodes (DIL_EP_S, docs/model.md §2.7) get the rows of [`super::dilute`] and e = 0;
+//! fixed (wall) nodes hold the wall's velocity and have d = e = 0. The momentum residual of
+//! docs/model.md §4.11 is taken at every coupled node before the elimination
+//! ([`super::residuals::CoupledNode::residual`]).
+
+use std::time::Instant;
+
+use runout_closures::FrictionModel;
+use runout_linsolve::Stencil5;
+use runout_mesh::{Grid, Sides};
+
+use super::component::Component;
+use super::diagnostics::since;
+use super::dilute::{dilute_faces, dilute_row};
+use super::residuals::CoupledNode;
+use super::{lin, SolidsFields, SolidsSpec, TwoFluid, TwoFluidError, MAX_SOLIDS_PHASES};
+use crate::momentum::{assemble_u, assemble_v, fixed_row, neighbour_sum, Context, PhaseFields};
+use crate::pea::eliminate_node;
+use crate::transport::FaceData;
+
+impl TwoFluid {
+    /// Step 2 (module doc); returns the momentum residual summed over u and v.
+    pub(super) fn momentum(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
+        self.worst.momentum = (0.0, 0, 0, 0, 0);
+        self.assemble_momentum(dt);
+        let (nx, ny) = (self.grid.nx(), self.grid.ny());
+        let mut residual = 0.0;
+        for c in Component::both(nx, ny, self.settings.periodic_x) {
+            let (a, d) = c.pick(
+                (&mut self.a_ug, &mut self.d_u),
+                (&mut self.a_vg, &mut self.d_v),
+            );
+            let mut gas = GasComponent {
+                a,
+                d,
+                u: &self.u_g,
+                v: &self.v_g,
+                eps: &self.eps_g,
+            };
+            residual += eliminate_drag(
+                &self.grid,
+                c,
+                self.settings.relax_velocity,
+                &mut gas,
+                &mut self.solids,
+                &mut self.worst.momentum,
+            );
+            fix_wall_rows(c, &self.gas_inflow, &mut gas, &mut self.solids);
+        }
+        let t = Instant::now();
+        self.profile.iterations.momentum += self.solve_momentum()? as u64;
+        // solves are reported apart from the assembly that encloses them
+        let solve = since(t);
+        self.profile.momentum_solve += solve;
+        self.profile.momentum_assembly -= solve;
+        Ok(residual)
+    }
+
+    /// The momentum equations of every phase without drag (docs/model.md §4.4); the solids
+    /// rows of dilute nodes are skipped (replaced by [`eliminate_drag`]).
+    fn assemble_momentum(&mut self, dt: f64) {
+        let grid = &self.grid;
+        let ctx_gas = Context {
+            grid,
+            bcs: &self.gas_walls,
+            gravity: self.gravity,
+            dt,
+            scheme: self.settings.scheme,
+            gas_pressure: &self.p_g,
+            wall_faces: None,
+            periodic_x: self.settings.periodic_x,
+        };
+        let gas_fields = PhaseFields {
+            bulk_density: &self.rho_eps_g,
+            bulk_density_old: &self.rho_eps_g_old,
+            volume_fraction: &self.eps_g,
+            viscosity: &self.mu_g,
+            solids_pressure: None,
+            plastic_pressure: None,
+            // the gas's own cross terms are left out: with uniform μ_g they reduce to
+            // μ_g ∇(∇·u_g), negligible here (μ_g = 1.8e-5 Pa s)
+            explicit_source: None,
+            skip: None,
+        };
+        let (u_g, v_g) = (&self.u_g, &self.v_g);
+        assemble_u(
+            &ctx_gas,
+            &gas_fields,
+            u_g,
+            v_g,
+            &self.u_g_old,
+            &mut self.u_faces,
+            &mut self.a_ug,
+        );
+        assemble_v(
+            &ctx_gas,
+            &gas_fields,
+            u_g,
+            v_g,
+            &self.v_g_old,
+            &mut self.v_faces,
+            &mut self.a_vg,
+        );
+        let (nx, ny) = (grid.nx(), grid.ny());
+        let components = Component::both(nx, ny, self.settings.periodic_x);
+        let fixed = [
+            self.a_ug.pattern().fixed_mask(),
+            self.a_vg.pattern().fixed_mask(),
+        ];
+        let faces = [&mut self.u_faces, &mut self.v_faces];
+        assemble_solids(
+            &ctx_gas,
+            components,
+            fixed,
+            faces,
+            &mut self.solids,
+            &self.solids_specs,
+        );
+    }
+
+    /// The linear solves of every phase's u and v; returns their iterations.
+    fn solve_momentum(&mut self) -> Result<usize, TwoFluidError> {
+        let mut iterations = 0;
+        iterations += self
+            .solver_u
+            .setup_and_solve(&self.a_ug, &mut self.u_g)
+            .map_err(lin("gas u momentum"))?
+            .iterations;
+        iterations += self
+            .solver_v
+            .setup_and_solve(&self.a_vg, &mut self.v_g)
+            .map_err(lin("gas v momentum"))?
+            .iterations;
+        for s in self.solids.iter_mut() {
+            iterations += self
+                .solver_u
+                .setup_and_solve(&s.a_u, &mut s.u)
+                .map_err(lin("solids u momentum"))?
+                .iterations;
+            iterations += self
+                .solver_v
+                .setup_and_solve(&s.a_v, &mut s.v)
+                .map_err(lin("solids v momentum"))?
+                .iterations;
+        }
+        if self.settings.periodic_x {
+            // node nx of a periodic column is node 0 (fixed in the solves)
+            let (nx, ny) = (self.grid.nx(), self.grid.ny());
+            let mx = nx + 1;
+            for u in std::iter::once(&mut self.u_g).chain(self.solids.iter_mut().map(|s| &mut s.u))
+            {
+                (0..ny).for_each(|j| u[nx + mx * j] = u[mx * j]);
+            }
+        }
+        Ok(iterations)
+    }
+
+    /// The explicit stress sources of every solids phase from the current velocities and
+    /// closures (docs/model.md §4.4: once per step, at its start).
+    pub(super) fn update_stress_sources(&mut self) {
+        let fixed_u = self.a_ug.pattern().fixed_mask();
+        let fixed_v = self.a_vg.pattern().fixed_mask();
+        for s in &mut self.solids {
+            crate::stress::explicit_stress(
+                &self.grid,
+                &s.u,
+                &s.v,
+                &s.mu,
+                &s.lambda,
+                &s.tr_d,
+                fixed_u,
+                fixed_v,
+                &mut s.tau_u,
+                &mut s.tau_v,
+            );
+        }
+    }
+}
+
+/// The momentum equations of every solids phase without drag (docs/model.md §4.4), with the
+/// gas's context `ctx_gas`; the rows of dilute nodes are skipped.
+fn assemble_solids(
+    ctx_gas: &Context<'_>,
+    [cu, cv]: [Component; 2],
+    fixed: [&[bool]; 2],
+    [u_faces, v_faces]: [&mut FaceData; 2],
+    solids: &mut [SolidsFields],
+    specs: &[SolidsSpec],
+) {
+    for (s, spec) in solids.iter_mut().zip(specs) {
+        // dilute faces (interpolated εs ≤ DIL_EP_S, docs/model.md §2.7): their rows are
+        // replaced later, so the assembly skips them (most of a slide's domain)
+        dilute_faces(ctx_gas.grid, cu, &s.eps, fixed[0], &mut s.dilute_u);
+        dilute_faces(ctx_gas.grid, cv, &s.eps, fixed[1], &mut s.dilute_v);
+        let ctx = Context {
+            bcs: &spec.walls,
+            wall_faces: Some(&s.wall_velocity),
+            ..*ctx_gas
+        };
+        let fields = PhaseFields {
+            bulk_density: &s.rho_eps,
+            bulk_density_old: &s.rho_eps_old,
+            volume_fraction: &s.eps,
+            viscosity: &s.mu,
+            solids_pressure: Some(&s.p_s),
+            // −∇P* only with Schaeffer (docs/model.md §4.4); none with Princeton, where
+            // MFIX never computes P* (§2.4.2)
+            plastic_pressure: (spec.params.friction_model == FrictionModel::Schaeffer)
+                .then_some(&s.p_star[..]),
+            explicit_source: Some(&s.tau_u),
+            skip: Some(&s.dilute_u),
+        };
+        assemble_u(&ctx, &fields, &s.u, &s.v, &s.u_old, u_faces, &mut s.a_u);
+        let fields_v = PhaseFields {
+            explicit_source: Some(&s.tau_v),
+            skip: Some(&s.dilute_v),
+            ..fields
+        };
+        assemble_v(&ctx, &fields_v, &s.u, &s.v, &s.v_old, v_faces, &mut s.a_v);
+    }
+}
+
+/// The gas's part of one component at the coupled nodes.
+struct GasComponent<'a> {
+    /// the component's equations
+    a: &'a mut Stencil5,
+    /// d_g of the component's nodes (docs/model.md §4.6)
+    d: &'a mut [f64],
+    /// gas u and v (the component's unknown is one of them)
+    u: &'a [f64],
+    v: &'a [f64],
+    /// εg per cell
+    eps: &'a [f64],
+}
+
+/// One solids phase's part of one component.
+struct SolidsComponent<'a> {
+    a: &'a mut Stencil5,
+    /// the component's velocity
+    phi: &'a [f64],
+    /// e_s of the component's nodes (docs/model.md §4.7)
+    e: &'a mut [f64],
+    /// εs per cell
+    eps: &'a [f64],
+}
+
+impl SolidsFields {
+    /// The arrays of component `c`.
+    fn component(&mut self, c: Component) -> SolidsComponent<'_> {
+        let (a, phi, e) = c.pick(
+            (&mut self.a_u, &self.u, &mut self.e_u),
+            (&mut self.a_v, &self.v, &mut self.e_v),
+        );
+        SolidsComponent {
+            a,
+            phi,
+            e,
+            eps: &self.eps,
+        }
+    }
+}
+
+/// The partial elimination of the drag at every coupled (not fixed) node of component `c`,
+/// with relaxation `relax` (module doc); returns the component's momentum residual and keeps
+/// the largest in `worst`.
+fn eliminate_drag(
+    grid: &Grid,
+    c: Component,
+    relax: f64,
+    gas: &mut GasComponent<'_>,
+    solids: &mut [SolidsFields],
+    worst: &mut (f64, usize, usize, usize, usize),
+) -> f64 {
+    let (dx, dy) = (grid.x.widths(), grid.y.widths());
+    let m = solids.len();
+    let (mut num, mut den) = (0.0, 0.0);
+    for j in 0..c.my {
+        for i in 0..c.mx {
+            let k = i + c.mx * j;
+            if gas.a.pattern().fixed_mask()[k] {
+                continue;
+            }
+            let node = gather(c, (i, j), dx, dy, gas, solids);
+            // momentum residuals of the coupled node (before relaxation, §4.11)
+            for p in 0..=m {
+                if p > 0 && node.dilute[p - 1] {
+                    continue;
+                }
+                let Some((res, scale)) = node.residual(p, m) else {
+                    continue;
+                };
+                num += res;
+                den += scale;
+                if res > worst.0 {
+                    *worst = (res, p, c.dir, i, j);
+                }
+            }
+            let area = c.face_area(i, j, dx, dy);
+            decouple(c, k, area, relax, &node, gas, solids);
+        }
+    }
+    if den > 0.0 {
+        num / den
+    } else {
+        num
+    }
+}
+
+/// The coupled equations of node (i, j) of component `c` (index 0 the gas, p the solids
+/// phase p) as the assembly left them.
+fn gather(
+    c: Component,
+    (i, j): (usize, usize),
+    dx: &[f64],
+    dy: &[f64],
+    gas: &GasComponent<'_>,
+    solids: &[SolidsFields],
+) -> CoupledNode {
+    let k = i + c.mx * j;
+    // the cells beside the node and their half volumes
+    let [lo, hi] = c.cells(i, j, true);
+    let cell = |x: Option<(usize, usize)>| x.map(|(ci, cj)| ci + c.nx * cj);
+    let half = |x: Option<(usize, usize)>| x.map_or(0.0, |(ci, cj)| 0.5 * dx[ci] * dy[cj]);
+    let (c0, c1, h0, h1) = (cell(lo), cell(hi), half(lo), half(hi));
+    let mut node = CoupledNode {
+        cells: (c0, c1),
+        ..CoupledNode::default()
+    };
+    let gas_phi = c.pick(gas.u, gas.v);
+    node.a_in[0] = gas.a.a_p[k];
+    node.r_in[0] = neighbour_sum(gas.a, gas_phi, k);
+    node.phi[0] = gas_phi[k];
+    node.cross[0] = c.cross_velocity(gas.u, gas.v, c0);
+    for (p, s) in solids.iter().enumerate() {
+        let (a, phi, dilute) = c.pick((&s.a_u, &s.u, &s.dilute_u), (&s.a_v, &s.v, &s.dilute_v));
+        // a face whose interpolated εs ≤ DIL_EP_S carries no solids momentum
+        // (MFIX `source_u_s.f`, docs/model.md §2.7): its velocity is set by its row
+        let dilute = dilute[k];
+        node.dilute[p] = dilute;
+        node.a_in[p + 1] = if dilute { 1.0 } else { a.a_p[k] };
+        node.r_in[p + 1] = if dilute {
+            phi[k]
+        } else {
+            neighbour_sum(a, phi, k)
+        };
+        node.phi[p + 1] = phi[k];
+        node.cross[p + 1] = c.cross_velocity(&s.u, &s.v, c0);
+        node.drag[p] = if dilute {
+            0.0
+        } else {
+            c0.map_or(0.0, |c| s.f_gs[c] * h0) + c1.map_or(0.0, |c| s.f_gs[c] * h1)
+        };
+    }
+    node
+}
+
+/// Replaces the rows of node k by the decoupled, relaxed rows of the partial elimination
+/// and stores d_g and e_s (module doc); a dilute solids node gets its dilute row.
+fn decouple(
+    c: Component,
+    k: usize,
+    area: f64,
+    relax: f64,
+    node: &CoupledNode,
+    gas: &mut GasComponent<'_>,
+    solids: &mut [SolidsFields],
+) {
+    let m = solids.len();
+    let (a_in, r_in, drag) = (&node.a_in, &node.r_in, &node.drag);
+    let (c0, c1) = node.cells;
+    let (mut a_out, mut r_out) = ([0.0; MAX_SOLIDS_PHASES + 1], [0.0; MAX_SOLIDS_PHASES + 1]);
+    eliminate_node(
+        &a_in[..=m],
+        &r_in[..=m],
+        &node.phi[..=m],
+        &drag[..m],
+        &mut a_out[..=m],
+        &mut r_out[..=m],
+    );
+    // relaxed centre coefficients, d_g (docs/model.md §4.6), e_s (§4.7)
+    let gas_ap = a_out[0] / relax;
+    let eps_face_g = face_mean(gas.eps, c0, c1);
+    let mut numerator = eps_face_g;
+    let mut denominator = a_in[0] / relax;
+    for (p, s) in solids.iter_mut().enumerate() {
+        let a_s = a_in[p + 1] / relax;
+        let f = drag[p];
+        let sc = s.component(c);
+        let eps_face_s = face_mean(sc.eps, c0, c1);
+        numerator += eps_face_s * f / (a_s + f);
+        denominator += f * a_s / (a_s + f);
+        if node.dilute[p] {
+            dilute_row(sc.a, k, sc.phi[k], c0.or(c1), sc.eps, (c.mx, c.my), c.nx);
+            sc.e[k] = 0.0;
+            continue;
+        }
+        sc.e[k] = area / a_s;
+        let ap = a_out[p + 1] / relax;
+        sc.a.b[k] += (r_out[p + 1] - r_in[p + 1]) + (1.0 - relax) * ap * sc.phi[k];
+        sc.a.a_p[k] = ap;
+    }
+    let gas_phi = c.pick(gas.u, gas.v);
+    gas.a.b[k] += (r_out[0] - r_in[0]) + (1.0 - relax) * gas_ap * gas_phi[k];
+    gas.a.a_p[k] = gas_ap;
+    gas.d[k] = area * numerator / denominator;
+    if c.periodic {
+        // a periodic column has no x gradient of P'_g or of K_cp ε'
+        gas.d[k] = 0.0;
+        solids.iter_mut().for_each(|s| s.component(c).e[k] = 0.0);
+    }
+}
+
+/// Fixed (wall) nodes of component `c`: the gas holds its wall's velocity (its inflow
+/// through a distributor, else zero), the solids zero; no d or e.
+fn fix_wall_rows(
+    c: Component,
+    inflow: &Sides<f64>,
+    gas: &mut GasComponent<'_>,
+    solids: &mut [SolidsFields],
+) {
+    for k in 0..gas.d.len() {
+        if gas.a.pattern().fixed_mask()[k] {
+            fixed_row(gas.a, k, c.wall_inflow(inflow, k));
+            gas.d[k] = 0.0;
+            for s in solids.iter_mut() {
+                let sc = s.component(c);
+                fixed_row(sc.a, k, 0.0);
+                sc.e[k] = 0.0;
+            }
+        }
+    }
+}
+
+/// Mean of a cell field over the (one or two) cells beside a face.
+fn face_mean(field: &[f64], c0: Option<usize>, c1: Option<usize>) -> f64 {
+    match (c0, c1) {
+        (Some(a), Some(b)) => 0.5 * (field[a] + field[b]),
+        (Some(c), None) | (None, Some(c)) => field[c],
+        (None, None) => 0.0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use runout_linsolve::Pattern;
+
+    /// One interior u-node of a 2 × 1 grid with one solids phase: the decoupled rows and
+    /// d_g, e_s are the module doc's formulas.
+    #[test]
+    fn decoupled_node_stores_d_and_e_of_the_module_doc() {
+        let (nx, ny) = (2, 1);
+        let pu = Pattern::new(nx + 1, ny).unwrap();
+        let pv = Pattern::new(nx, ny + 1).unwrap();
+        let pc = Pattern::new(nx, ny).unwrap();
+        let mut solids = vec![SolidsFields::new((nx, ny), &pu, &pv, &pc)];
+        solids[0].eps.copy_from_slice(&[0.4, 0.6]);
+        solids[0].u.copy_from_slice(&[0.0, 0.2, 0.0]);
+        let (mut a_g, mut d) = (Stencil5::new(pu), vec![0.0; nx + 1]);
+        let (u_g, v_g, eps_g) = (vec![0.0, 1.0, 0.0], vec![0.0; nx * (ny + 1)], [0.6, 0.4]);
+        let mut gas = GasComponent {
+            a: &mut a_g,
+            d: &mut d,
+            u: &u_g,
+            v: &v_g,
+            eps: &eps_g,
+        };
+        let (a_gas, a_s, f, relax, area) = (3.0, 2.0, 5.0, 0.5, 0.1);
+        let mut node = CoupledNode {
+            cells: (Some(0), Some(1)),
+            ..CoupledNode::default()
+        };
+        node.a_in[..2].copy_from_slice(&[a_gas, a_s]);
+        node.r_in[..2].copy_from_slice(&[1.0, 0.5]);
+        node.phi[..2].copy_from_slice(&[1.0, 0.2]);
+        node.drag[0] = f;
+        let c = Component::u(nx, ny, false);
+        decouple(c, 1, area, relax, &node, &mut gas, &mut solids);
+        let (ag, as_) = (a_gas / relax, a_s / relax);
+        let d_expected = area * (0.5 + 0.5 * f / (as_ + f)) / (ag + f * as_ / (as_ + f));
+        assert!((d[1] - d_expected).abs() < 1e-15 * d_expected);
+        assert_eq!(solids[0].e_u[1], area / as_);
+        // the gas row: a_g + F a_s/(a_s + F), relaxed (docs/model.md §4.5)
+        let a_g_out = (a_gas + f * a_s / (a_s + f)) / relax;
+        assert!((a_g.a_p[1] - a_g_out).abs() < 1e-14 * a_g_out);
+    }
+}

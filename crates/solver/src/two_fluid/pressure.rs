@@ -1,0 +1,207 @@
+//! Step 4 of the outer iteration (docs/model.md §4.9): the gas pressure correction from gas
+//! continuity (docs/model.md §4.6). Per cell, with the face εg of the convection scheme
+//! (MFIX `DISCRETIZE(1)`, docs/model.md §4.2; 1 on a distributor's faces) and d_g of the
+//! partial elimination ([`super::momentum_pea`]):
+//!   Σ_f ρ_g ε_g,f d_f A_f (P'_P − P'_nb) = b,
+//!   b = ρ_g (−(εg − εg⁰) V/Δt + Σ_f ε_g,f u_f·n_in A_f),
+//! then u_g += d_g (P'_low − P'_high) on every face with d ≠ 0 and P_g += ω_P P'. The solids
+//! velocities are not corrected with P'_g. The pressure is pinned at cell 0 where no side is
+//! open.
+
+use std::time::Instant;
+
+use runout_linsolve::Stencil5;
+use runout_mesh::{Grid, Sides};
+
+use super::diagnostics::since;
+use super::{lin, solve_keeping_preconditioner, TwoFluid, TwoFluidError};
+use crate::momentum::fixed_row;
+use crate::transport::{face_value, Scheme};
+
+impl TwoFluid {
+    /// Step 4: gas pressure correction (module doc); returns the mean |gas imbalance|.
+    pub(super) fn pressure_correction(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
+        let (nx, ny) = (self.grid.nx(), self.grid.ny());
+        let gas = GasContinuity {
+            density: self.gas.density,
+            eps: &self.eps_g,
+            eps_old: &self.eps_g_old,
+            u: &self.u_g,
+            v: &self.v_g,
+            d_u: &self.d_u,
+            d_v: &self.d_v,
+            inflow: &self.gas_inflow,
+            scheme: self.settings.scheme,
+            pinned: self.pressure_pinned,
+        };
+        let total = assemble(&self.grid, &gas, dt, &mut self.imbalance, &mut self.a_p);
+        self.p_corr.iter_mut().for_each(|x| *x = 0.0);
+        let t = Instant::now();
+        self.profile.iterations.pressure += solve_keeping_preconditioner(
+            self.solver_p.as_mut(),
+            &self.a_p,
+            &mut self.p_corr,
+            self.rebuild_preconditioners,
+        )
+        .map_err(lin("gas pressure correction"))?
+            as u64;
+        // both multigrid hierarchies of this step are built (ε' is solved first)
+        self.rebuild_preconditioners = false;
+        let solve = since(t);
+        self.profile.pressure_solve += solve;
+        self.profile.pressure_assembly -= solve;
+        correct_velocities(
+            (nx, ny),
+            &self.p_corr,
+            &self.d_u,
+            &self.d_v,
+            &mut self.u_g,
+            &mut self.v_g,
+        );
+        let w = self.settings.relax_pressure;
+        self.p_g
+            .iter_mut()
+            .zip(&self.p_corr)
+            .for_each(|(p, c)| *p += w * c);
+        Ok(total / (nx * ny) as f64)
+    }
+}
+
+/// What gas continuity is assembled from.
+struct GasContinuity<'a> {
+    /// ρ_g [kg m⁻³]
+    density: f64,
+    /// εg per cell, now and at the old time level
+    eps: &'a [f64],
+    eps_old: &'a [f64],
+    /// gas u and v after the momentum predictor
+    u: &'a [f64],
+    v: &'a [f64],
+    /// d_g of the u and v nodes
+    d_u: &'a [f64],
+    d_v: &'a [f64],
+    /// gas velocity into the domain through each wall side
+    inflow: &'a Sides<f64>,
+    /// convection scheme of the face εg
+    scheme: Scheme,
+    /// P' fixed at cell 0 (no open side)
+    pinned: bool,
+}
+
+/// The P' equations `a` and the gas mass imbalance b of every cell (module doc); returns
+/// Σ|b|.
+fn assemble(
+    grid: &Grid,
+    gas: &GasContinuity<'_>,
+    dt: f64,
+    imbalance: &mut [f64],
+    a: &mut Stencil5,
+) -> f64 {
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let (dx, dy) = (grid.x.widths(), grid.y.widths());
+    let (rho, eps, scheme) = (gas.density, gas.eps, gas.scheme);
+    // face εg (MFIX `DISCRETIZE(1)`, docs/model.md §4.2): upwind or Superbee between the
+    // cells lo and hi, `stride` apart; the inside cell's on the domain boundary
+    let face = |vel: f64, lo: Option<usize>, hi: Option<usize>, stride: usize| -> f64 {
+        match (lo, hi) {
+            (Some(l), Some(h)) => face_value(
+                scheme,
+                eps,
+                l.checked_sub(stride)
+                    .filter(|&x| same_line(x, l, stride, nx)),
+                l,
+                h,
+                Some(h + stride).filter(|&x| x < eps.len() && same_line(h, x, stride, nx)),
+                vel,
+            ),
+            (Some(c), None) | (None, Some(c)) => eps[c],
+            (None, None) => 0.0,
+        }
+    };
+    // gas entering through a distributor is pure gas (MFIX BC_EP_G = 1)
+    let inlet = |at_side: bool, inflow: f64, value: f64| {
+        if at_side && inflow != 0.0 {
+            1.0
+        } else {
+            value
+        }
+    };
+    let (u, v, f) = (gas.u, gas.v, gas.inflow);
+    let mut total = 0.0;
+    for j in 0..ny {
+        for i in 0..nx {
+            let k = i + nx * j;
+            let (kw, ke) = (i + (nx + 1) * j, i + 1 + (nx + 1) * j);
+            let (ks, kn) = (i + nx * j, i + nx * (j + 1));
+            let west = (i > 0).then(|| k - 1);
+            let east = (i + 1 < nx).then_some(k + 1);
+            let south = (j > 0).then(|| k - nx);
+            let north = (j + 1 < ny).then_some(k + nx);
+            let ew = inlet(i == 0, f.west, face(u[kw], west, Some(k), 1));
+            let ee = inlet(i + 1 == nx, f.east, face(u[ke], Some(k), east, 1));
+            let es = inlet(j == 0, f.south, face(v[ks], south, Some(k), nx));
+            let en = inlet(j + 1 == ny, f.north, face(v[kn], Some(k), north, nx));
+            let volume = dx[i] * dy[j];
+            let b = rho
+                * (-(eps[k] - gas.eps_old[k]) * volume / dt + ew * u[kw] * dy[j]
+                    - ee * u[ke] * dy[j]
+                    + es * v[ks] * dx[i]
+                    - en * v[kn] * dx[i]);
+            imbalance[k] = b;
+            total += b.abs();
+            if gas.pinned && k == 0 {
+                fixed_row(a, k, 0.0);
+                continue;
+            }
+            let ce = rho * ee * gas.d_u[ke] * dy[j];
+            let cw = rho * ew * gas.d_u[kw] * dy[j];
+            let cn = rho * en * gas.d_v[kn] * dx[i];
+            let cs = rho * es * gas.d_v[ks] * dx[i];
+            a.a_e[k] = if east.is_some() { ce } else { 0.0 };
+            a.a_w[k] = if west.is_some() { cw } else { 0.0 };
+            a.a_n[k] = if north.is_some() { cn } else { 0.0 };
+            a.a_s[k] = if south.is_some() { cs } else { 0.0 };
+            a.a_p[k] = ce + cw + cn + cs;
+            a.b[k] = b;
+        }
+    }
+    total
+}
+
+/// u_g += d_u (P'_W − P'_E), v_g += d_v (P'_S − P'_N) on every node with d ≠ 0 (P' = 0
+/// beyond the domain).
+fn correct_velocities(
+    (nx, ny): (usize, usize),
+    pc: &[f64],
+    d_u: &[f64],
+    d_v: &[f64],
+    u: &mut [f64],
+    v: &mut [f64],
+) {
+    for j in 0..ny {
+        for i in 0..=nx {
+            let k = i + (nx + 1) * j;
+            if d_u[k] != 0.0 {
+                let p_w = if i == 0 { 0.0 } else { pc[i - 1 + nx * j] };
+                let p_e = if i == nx { 0.0 } else { pc[i + nx * j] };
+                u[k] += d_u[k] * (p_w - p_e);
+            }
+        }
+    }
+    for j in 0..=ny {
+        for i in 0..nx {
+            let k = i + nx * j;
+            if d_v[k] != 0.0 {
+                let p_s = if j == 0 { 0.0 } else { pc[i + nx * (j - 1)] };
+                let p_n = if j == ny { 0.0 } else { pc[i + nx * j] };
+                v[k] += d_v[k] * (p_s - p_n);
+            }
+        }
+    }
+}
+
+/// Whether cells `a` < `b`, `stride` apart, lie on one grid line (x lines: stride 1 within
+/// a row of `nx`; y lines: stride `nx`, always).
+fn same_line(a: usize, b: usize, stride: usize, nx: usize) -> bool {
+    stride != 1 || a / nx == b / nx
+}

@@ -1,0 +1,176 @@
+//! Step 6 of the outer iteration (docs/model.md §4.9): the residuals and the convergence of
+//! a time step (docs/model.md §4.11, MFIX `calc_resid.f`, `check_convergence.f`).
+//!
+//! - momentum, per coupled velocity node and phase before relaxation: |r + drag coupling −
+//!   a_P φ|, normalised by Σ |a_P| |(U, V)| over the nodes where the phase moves
+//!   ([`CoupledNode::residual`]), summed over phases and components;
+//! - gas and solids continuity: the mean |mass imbalance| before the corrections, each
+//!   relative to its value at the step's first outer iteration ([`Convergence`]);
+//! - granular energy: Σ |residual| / Σ |a_P θ_P| over the dense cells, per phase.
+//!
+//! A step has converged when the momentum and continuity sum is at most its tolerance and
+//! the θ residual at most its own, after at least two outer iterations; MFIX's
+//! `DETECT_STALL` ends a step whose sum does not fall over 5 iterations
+//! ([`Convergence::stalled`]).
+
+use super::{TwoFluid, MAX_SOLIDS_PHASES};
+
+/// Normalised residuals of one outer iteration (docs/model.md §4.11).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct TwoFluidResiduals {
+    /// momentum of all phases and components, MFIX's normalisation, summed
+    pub momentum: f64,
+    /// mean |gas mass imbalance| before the pressure correction [kg s⁻¹ per m depth]
+    pub gas_mass: f64,
+    /// mean |solids mass imbalance| before the ε correction, summed over phases
+    pub solids_mass: f64,
+    /// θ equations, Σ|residual| / Σ|a_P θ_P|, summed over phases
+    pub theta: f64,
+}
+
+/// The coupled momentum equations of every phase at one velocity node, as assembled and
+/// before the partial elimination (index 0 the gas, p the solids phase p).
+#[derive(Clone, Copy, Debug, Default)]
+pub(super) struct CoupledNode {
+    /// centre coefficients
+    pub a_in: [f64; MAX_SOLIDS_PHASES + 1],
+    /// right-hand sides Σ a_nb φ_nb + b
+    pub r_in: [f64; MAX_SOLIDS_PHASES + 1],
+    /// current values
+    pub phi: [f64; MAX_SOLIDS_PHASES + 1],
+    /// the other velocity component MFIX stores at the node's index (for the speed)
+    pub cross: [f64; MAX_SOLIDS_PHASES + 1],
+    /// drag coefficients F_gs V of the solids phases
+    pub drag: [f64; MAX_SOLIDS_PHASES],
+    /// whether the node is dilute for each solids phase
+    pub dilute: [bool; MAX_SOLIDS_PHASES],
+    /// the cells beside the node (low, high)
+    pub cells: (Option<usize>, Option<usize>),
+}
+
+impl CoupledNode {
+    /// The momentum residual of phase p (of m solids phases) and its normaliser, `None`
+    /// where the phase does not move: |(U, V)| ≤ 1e-15 with U, V the two face velocities
+    /// MFIX stores at one index (the east and north faces of the cell west of a u-node,
+    /// south of a v-node).
+    pub fn residual(&self, p: usize, m: usize) -> Option<(f64, f64)> {
+        let (phi, drag) = (&self.phi, &self.drag);
+        let speed = (phi[p] * phi[p] + self.cross[p] * self.cross[p]).sqrt();
+        if speed <= 1e-15 {
+            return None;
+        }
+        let coupling = if p == 0 {
+            (0..m).map(|q| drag[q] * (phi[q + 1] - phi[0])).sum::<f64>()
+        } else {
+            drag[p - 1] * (phi[0] - phi[p])
+        };
+        let res = (self.r_in[p] + coupling - self.a_in[p] * phi[p]).abs();
+        Some((res, self.a_in[p].abs() * speed))
+    }
+}
+
+/// The convergence measure of one time step (module doc).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Convergence {
+    /// normalisers of the gas and solids continuity residuals (their first iteration's)
+    gas0: Option<f64>,
+    solids0: Option<f64>,
+    /// the hydrodynamic sum at the last multiple of 5 iterations (MFIX SUM5_RESID)
+    sum5: f64,
+}
+
+impl Convergence {
+    /// A step's measure before its first outer iteration.
+    pub fn new() -> Self {
+        Convergence {
+            gas0: None,
+            solids0: None,
+            sum5: f64::INFINITY,
+        }
+    }
+
+    /// The momentum and continuity residual sum of an outer iteration, and the normalisers
+    /// of the gas and solids continuity. The gas residual's normaliser is its first
+    /// iteration's value (MFIX's default), but not below `gas_floor`: a step that starts
+    /// nearly converged otherwise has to reduce round-off-level imbalances (1e-9 of a mean
+    /// cell's gas per step, flipping between two values in a dilute cell) by another 1e3
+    /// and never does (S-JJ-phi coarse).
+    pub fn sum(&mut self, r: &TwoFluidResiduals, gas_floor: f64) -> (f64, f64, f64) {
+        let g = *self.gas0.get_or_insert(if r.gas_mass > f64::MIN_POSITIVE {
+            r.gas_mass.max(gas_floor)
+        } else {
+            1.0
+        });
+        let s = *self
+            .solids0
+            .get_or_insert(if r.solids_mass > f64::MIN_POSITIVE {
+                r.solids_mass
+            } else {
+                1.0
+            });
+        (r.momentum + r.gas_mass / g + r.solids_mass / s, g, s)
+    }
+
+    /// MFIX's stall test at outer iteration `nit` (docs/model.md §4.11): at every 5th
+    /// iteration after the 10th, a sum not below its value 5 iterations before is a stall;
+    /// returns that earlier value.
+    pub fn stalled(&mut self, nit: usize, sum: f64) -> Option<f64> {
+        if nit % 5 == 0 {
+            if nit > 10 && self.sum5 <= sum {
+                return Some(self.sum5);
+            }
+            self.sum5 = sum;
+        }
+        None
+    }
+}
+
+impl TwoFluid {
+    /// Whether every field of the iterate is finite.
+    pub(super) fn all_finite(&self) -> bool {
+        self.p_g
+            .iter()
+            .chain(&self.u_g)
+            .chain(&self.v_g)
+            .all(|x| x.is_finite())
+            && self.solids.iter().all(|p| {
+                p.eps
+                    .iter()
+                    .chain(&p.u)
+                    .chain(&p.v)
+                    .chain(&p.theta)
+                    .all(|x| x.is_finite())
+            })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_stall_is_a_sum_that_did_not_fall_over_five_iterations() {
+        let mut c = Convergence::new();
+        assert_eq!(c.stalled(5, 1.0), None);
+        assert_eq!(c.stalled(7, 2.0), None);
+        assert_eq!(c.stalled(10, 0.5), None);
+        assert_eq!(c.stalled(15, 0.4), None);
+        assert_eq!(c.stalled(20, 0.4), Some(0.4));
+    }
+
+    #[test]
+    fn continuity_is_relative_to_the_first_iteration() {
+        let mut c = Convergence::new();
+        let r = |gas_mass, solids_mass| TwoFluidResiduals {
+            momentum: 0.25,
+            gas_mass,
+            solids_mass,
+            theta: 0.0,
+        };
+        assert_eq!(c.sum(&r(2.0, 4.0), 0.5), (2.25, 2.0, 4.0));
+        assert_eq!(c.sum(&r(1.0, 1.0), 0.5), (0.25 + 0.5 + 0.25, 2.0, 4.0));
+        // the gas normaliser is floored, a vanishing imbalance normalised by 1
+        let mut c = Convergence::new();
+        assert_eq!(c.sum(&r(0.1, 0.0), 0.5), (0.25 + 0.2, 0.5, 1.0));
+    }
+}
