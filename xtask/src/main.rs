@@ -403,24 +403,18 @@ fn main() -> Result<()> {
                 verify::verify(&name, report, &root())
             }
         }
-        Task::Report { what, fidelity } => match what.as_str() {
-            "analytic" => analytic::report(&root()),
-            "results" => report::report(
-                &root(),
-                fidelity
-                    .map(|f| f.parse())
-                    .transpose()
-                    .map_err(anyhow::Error::msg)?,
-            ),
-            "release" => report::release::report(
-                &root(),
-                fidelity
-                    .map(|f| f.parse())
-                    .transpose()
-                    .map_err(anyhow::Error::msg)?,
-            ),
-            other => bail!("unknown report `{other}` (known: results, analytic, release)"),
-        },
+        Task::Report { what, fidelity } => {
+            let fidelity = fidelity
+                .map(|f| f.parse())
+                .transpose()
+                .map_err(anyhow::Error::msg)?;
+            match what.as_str() {
+                "analytic" => analytic::report(&root()),
+                "results" => report::report(&root(), fidelity),
+                "release" => report::release::report(&root(), fidelity),
+                other => bail!("unknown report `{other}` (known: results, analytic, release)"),
+            }
+        }
         Task::Bench { what, args } => match what.as_str() {
             "linsolve" => {
                 let status =
