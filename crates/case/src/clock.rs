@@ -1,4 +1,4 @@
-//! A case's clock (docs/impact.md §3): the times of a case whose gravity tilts at a time
+//! A case's clock (docs/impact.md §4): the times of a case whose gravity tilts at a time
 //! known in advance may count from the tilt; a run counts them from the start.
 //!
 //! The tilt time t_i of the time criteria: `FreeFall`, t_i = sqrt(2 h / g) with h the

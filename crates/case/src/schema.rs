@@ -414,7 +414,7 @@ pub enum Gravity {
         #[serde(default, skip_serializing_if = "ImpactCriterion::is_floor_cell")]
         criterion: ImpactCriterion,
         /// what the case's end time and profile times count from (default `Start`;
-        /// `Impact` needs a criterion whose time is known in advance, docs/impact.md §3)
+        /// `Impact` needs a criterion whose time is known in advance, docs/impact.md §4)
         #[serde(default, skip_serializing_if = "Clock::is_start")]
         clock: Clock,
     },
@@ -422,7 +422,7 @@ pub enum Gravity {
 
 /// What the times of a case with a tilt-on-impact gravity count from. The paper reports
 /// its profiles "at a simulation time (t) of 1.25 s" of a run whose gravity was tilted at
-/// the impact, which may be the time since the start or since the tilt (docs/impact.md §3).
+/// the impact, which may be the time since the start or since the tilt (docs/impact.md §4).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Clock {
     /// from the start of the run (t = 0 at the release)

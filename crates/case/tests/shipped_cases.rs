@@ -271,7 +271,7 @@ fn the_release_study_moves_only_the_block_one_factor_at_a_time() {
             same.description = base.description.clone();
             same.boundaries = base.boundaries.clone();
             same.solids = base.solids.clone();
-            // the -t0 files count the times from the impact (docs/impact.md §3)
+            // the -t0 files count the times from the impact (docs/impact.md §4)
             if let runout_case::Gravity::TiltOnImpact { clock, .. } = &mut same.gravity {
                 let want = if file.ends_with("-t0.ron") {
                     runout_case::Clock::Impact
