@@ -14,6 +14,7 @@
 //! caption and in the tables; it is never an error.
 
 pub mod data;
+mod findings;
 mod paper;
 pub(crate) mod plots;
 pub mod release;
@@ -633,6 +634,8 @@ pub fn write_report(paths: &ReportPaths, requested: Option<Fidelity>) -> Result<
          (0.2856 s), and the paper's \"t = 1.25 s\" counted from that tilt, so family S's \
          profiles and probe readings are at t = 1.5356 s of the run.\n\n",
     );
+
+    findings::section(&mut md, &cases, &described);
 
     md.push_str("## Figures\n\n");
     md.push_str(

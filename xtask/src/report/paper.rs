@@ -256,6 +256,71 @@ pub fn flow_at_station(data: &CaseData) -> Result<FlowMetrics, String> {
     Ok(p.metrics())
 }
 
+/// runout's value of a quantity: yes/no, or a number with the decimals the report shows and
+/// an optional note (e.g. the gate it was read at).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Reading {
+    /// a yes/no finding (the air cushion)
+    YesNo(bool),
+    /// a number, shown with `decimals` decimals and the note in brackets
+    Number {
+        /// the value, in the quantity's unit
+        value: f64,
+        /// decimals shown
+        decimals: usize,
+        /// shown after the value in brackets
+        note: Option<String>,
+    },
+}
+
+impl Reading {
+    fn number(value: f64, decimals: usize) -> Reading {
+        Reading::Number {
+            value,
+            decimals,
+            note: None,
+        }
+    }
+
+    fn noted(value: f64, decimals: usize, note: String) -> Reading {
+        Reading::Number {
+            value,
+            decimals,
+            note: Some(note),
+        }
+    }
+
+    /// The number as the report shows it (rounded to its decimals); `None` for yes/no.
+    pub fn shown_value(&self) -> Option<f64> {
+        match self {
+            Reading::YesNo(_) => None,
+            Reading::Number {
+                value, decimals, ..
+            } => format!("{value:.decimals$}").parse().ok(),
+        }
+    }
+}
+
+impl std::fmt::Display for Reading {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Reading::YesNo(true) => write!(f, "yes"),
+            Reading::YesNo(false) => write!(f, "no"),
+            Reading::Number {
+                value,
+                decimals,
+                note,
+            } => {
+                write!(f, "{value:.decimals$}")?;
+                match note {
+                    Some(n) => write!(f, " ({n})"),
+                    None => Ok(()),
+                }
+            }
+        }
+    }
+}
+
 /// runout's value of `q` for `data` (the case) in the report's words, or why it is missing.
 pub fn reading(
     q: Quantity,
@@ -263,32 +328,39 @@ pub fn reading(
     cases: &Cases,
     described: &[(usize, f64)],
 ) -> Result<String, String> {
+    value(q, data, cases, described).map(|r| r.to_string())
+}
+
+/// runout's value of `q` for `data` (the case), or why it is missing.
+pub fn value(
+    q: Quantity,
+    data: &CaseData,
+    cases: &Cases,
+    described: &[(usize, f64)],
+) -> Result<Reading, String> {
     let metrics = || flow_at_station(data);
     let unknown = || "not defined for this profile".to_string();
     match q {
-        Quantity::AirCushion => Ok(match metrics()?.air_cushion.ok_or_else(unknown)? {
-            true => "yes".into(),
-            false => "no".into(),
-        }),
+        Quantity::AirCushion => Ok(Reading::YesNo(metrics()?.air_cushion.ok_or_else(unknown)?)),
         Quantity::FloorEpsS => {
             let p = data.profile.as_ref().map_err(Clone::clone)?;
-            Ok(format!("{:.3}", p.eps_s.first().ok_or_else(unknown)?))
+            Ok(Reading::number(*p.eps_s.first().ok_or_else(unknown)?, 3))
         }
         Quantity::CushionThickness => {
             let m = metrics()?;
             Ok(match m.air_cushion {
-                Some(true) => format!("{:.3}", m.cushion_thickness.ok_or_else(unknown)?),
-                _ => "0 (no cushion)".into(),
+                Some(true) => Reading::number(m.cushion_thickness.ok_or_else(unknown)?, 3),
+                _ => Reading::noted(0.0, 0, "no cushion".into()),
             })
         }
         Quantity::FloorTheta => {
             let p = data.profile.as_ref().map_err(Clone::clone)?;
-            Ok(format!("{:.3}", p.theta.first().ok_or_else(unknown)?))
+            Ok(Reading::number(*p.theta.first().ok_or_else(unknown)?, 3))
         }
-        Quantity::MaxUs => Ok(format!("{:.2}", metrics()?.max_u_s.ok_or_else(unknown)?)),
-        Quantity::FlowThickness => Ok(format!(
-            "{:.3}",
-            metrics()?.flow_thickness.ok_or_else(unknown)?
+        Quantity::MaxUs => Ok(Reading::number(metrics()?.max_u_s.ok_or_else(unknown)?, 2)),
+        Quantity::FlowThickness => Ok(Reading::number(
+            metrics()?.flow_thickness.ok_or_else(unknown)?,
+            3,
         )),
         Quantity::FlowThicknessAbove(other) => {
             let own = metrics()?.flow_thickness.ok_or_else(unknown)?;
@@ -296,7 +368,7 @@ pub fn reading(
                 .map_err(|e| format!("`{other}`: {e}"))?
                 .flow_thickness
                 .ok_or_else(unknown)?;
-            Ok(format!("{:.3}", own - theirs))
+            Ok(Reading::number(own - theirs, 3))
         }
         Quantity::ProbeHu => {
             let (t, h) = data.probe_at(data.station_time)?;
@@ -307,13 +379,17 @@ pub fn reading(
                 .and_then(|r| r.ended_before(data.station_time))
             {
                 Some(why) => Err(format!("{why}; its last sample: {h:.0} at t = {t:.2} s")),
-                None => Ok(format!("{h:.0}")),
+                None => Ok(Reading::number(h, 0)),
             }
         }
         Quantity::FlumeMse => {
             let (e, gates) = mse_vs_described(&data.gate_pairs()?, described)
                 .ok_or_else(|| data.no_gate_reached())?;
-            Ok(format!("{e:.2} ({gates} of {} gates)", described.len()))
+            Ok(Reading::noted(
+                e,
+                2,
+                format!("{gates} of {} gates", described.len()),
+            ))
         }
         Quantity::FlumeMaxGateSpeed => {
             let gates = data.gates.as_ref().map_err(Clone::clone)?;
@@ -321,7 +397,7 @@ pub fn reading(
                 .iter()
                 .max_by(|a, b| a.speed.total_cmp(&b.speed))
                 .ok_or_else(|| data.no_gate_reached())?;
-            Ok(format!("{:.2} (at L{})", g.speed, g.gate))
+            Ok(Reading::noted(g.speed, 2, format!("at L{}", g.gate)))
         }
         Quantity::FlumeLastGateSpeed => {
             let gates = data.gates.as_ref().map_err(Clone::clone)?;
@@ -329,7 +405,7 @@ pub fn reading(
                 .iter()
                 .max_by_key(|g| g.gate)
                 .ok_or_else(|| data.no_gate_reached())?;
-            Ok(format!("{:.2} (at L{})", g.speed, g.gate))
+            Ok(Reading::noted(g.speed, 2, format!("at L{}", g.gate)))
         }
     }
 }
