@@ -14,6 +14,7 @@
 //! caption and in the tables; it is never an error.
 
 pub mod data;
+mod fields;
 mod findings;
 mod paper;
 pub(crate) mod plots;
@@ -31,8 +32,8 @@ use runout_output::RunStatus;
 use crate::metrics::{mse_vs_described, PROFILE_TIME};
 use data::{CaseData, Cases, Profile};
 use paper::{
-    reading, ProfileFigure, CUSHION_LIMIT_H_U, FLUME, MFIX_CASE, MFIX_SLIDE, PAPER_NUMBERS,
-    PROBE_CURVES, PROFILE_FIGURES,
+    reading, ProfileFigure, CUSHION_LIMIT_H_U, FIELD_FIGURES, FLUME, MFIX_CASE, MFIX_SLIDE,
+    PAPER_NUMBERS, PROBE_CURVES, PROFILE_FIGURES,
 };
 use plots::{Mark, Panel, Series};
 
@@ -646,11 +647,16 @@ pub fn write_report(paths: &ReportPaths, requested: Option<Fidelity>) -> Result<
     if !paths.docs.join("analytic").join("fig1.svg").exists() {
         md.push_str("*Missing: docs/analytic/fig1.svg; run `cargo xtask report analytic`.*\n\n");
     }
-    // in the paper's order: 4, 5, 7, 8, 9, 12, 13, 14
-    for fig in &PROFILE_FIGURES[..4] {
+    // in the paper's order: 4, 5, 6, 7, 8, 9, 10, 12, 13, 14
+    for fig in &PROFILE_FIGURES[..2] {
+        draw_profile_figure(&mut md, fig, &cases, &out)?;
+    }
+    fields::draw_figure(&mut md, &FIELD_FIGURES[0], &cases, &out)?;
+    for fig in &PROFILE_FIGURES[2..4] {
         draw_profile_figure(&mut md, fig, &cases, &out)?;
     }
     draw_probe_figure(&mut md, &cases, &out)?;
+    fields::draw_figure(&mut md, &FIELD_FIGURES[1], &cases, &out)?;
     draw_flume_figure(&mut md, &cases, &gates, &out)?;
     for fig in &PROFILE_FIGURES[4..] {
         draw_profile_figure(&mut md, fig, &cases, &out)?;

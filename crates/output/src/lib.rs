@@ -19,7 +19,7 @@ mod vtk;
 
 pub use csv_series::CsvSeries;
 pub use summary::{DtStats, RunStatus, RunSummary};
-pub use vtk::{read_vtr_array, write_vtr, CellField, PvdSeries};
+pub use vtk::{read_pvd, read_vtr_array, read_vtr_cells, write_vtr, CellField, PvdSeries};
 
 use std::io::Write;
 use std::path::{Path, PathBuf};

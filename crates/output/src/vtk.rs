@@ -243,6 +243,36 @@ pub fn read_vtr_array(xml: &str, name: &str) -> Option<Vec<f64>> {
         .collect()
 }
 
+/// The datasets a `.pvd` collection lists, as (time, file name) in the file's order; lines
+/// without both attributes are skipped.
+pub fn read_pvd(xml: &str) -> Vec<(f64, String)> {
+    let attribute = |line: &str, key: &str| -> Option<String> {
+        let start = line.find(&format!("{key}=\""))? + key.len() + 2;
+        let end = start + line[start..].find('"')?;
+        Some(line[start..end].to_string())
+    };
+    xml.lines()
+        .filter(|l| l.contains("<DataSet"))
+        .filter_map(|l| {
+            let time = attribute(l, "timestep")?.parse().ok()?;
+            Some((time, attribute(l, "file")?))
+        })
+        .collect()
+}
+
+/// The cell counts (nx, ny) of a `.vtr` (its `WholeExtent="0 nx 0 ny 0 0"`).
+pub fn read_vtr_cells(xml: &str) -> Option<(usize, usize)> {
+    let extent = xml.split("WholeExtent=\"").nth(1)?.split('"').next()?;
+    let n: Vec<usize> = extent
+        .split_whitespace()
+        .map(|t| t.parse().ok())
+        .collect::<Option<_>>()?;
+    match n[..] {
+        [0, nx, 0, ny, ..] => Some((nx, ny)),
+        _ => None,
+    }
+}
+
 #[cfg(test)]
 mod read_tests {
     use super::read_vtr_array;
@@ -254,5 +284,19 @@ mod read_tests {
         assert_eq!(read_vtr_array(text, "u_s").unwrap(), vec![4.0]);
         assert!(read_vtr_array(text, "theta").is_none());
         assert!(read_vtr_array("<DataArray Name=\"x\">1 a</DataArray>", "x").is_none());
+    }
+
+    #[test]
+    fn reads_a_collection_and_the_extent() {
+        use super::{read_pvd, read_vtr_cells};
+        let pvd = "<Collection>\n<DataSet timestep=\"0.5\" part=\"0\" file=\"f_00001.vtr\"/>\n\
+                   <DataSet file=\"no_time.vtr\"/>\n<DataSet timestep=\"1e0\" file=\"f_00002.vtr\"/>\n";
+        assert_eq!(
+            read_pvd(pvd),
+            vec![(0.5, "f_00001.vtr".into()), (1.0, "f_00002.vtr".into())]
+        );
+        let vtr = "<RectilinearGrid WholeExtent=\"0 250 0 23 0 0\">";
+        assert_eq!(read_vtr_cells(vtr), Some((250, 23)));
+        assert_eq!(read_vtr_cells("<RectilinearGrid WholeExtent=\"1 2\">"), None);
     }
 }

@@ -621,6 +621,48 @@ pub const PROBE_CURVES: &[(&str, &str)] = &[
     ("S-JEN-d_d=0.0005", "Jenkins"),
 ];
 
+/// A figure of gas-volume-fraction maps near the station (paper Figs. 6 and 10).
+pub struct FieldFigure {
+    /// the paper's figure number
+    pub number: &'static str,
+    /// SVG file name
+    pub file: &'static str,
+    /// what it shows, for the caption
+    pub what: &'static str,
+    /// (case, panel title), top to bottom
+    pub panels: &'static [(&'static str, &'static str)],
+}
+
+/// Paper Figs. 6 (user partial slip, h_w^u) and 10 (the state-dependent floors).
+pub const FIELD_FIGURES: &[FieldFigure] = &[
+    FieldFigure {
+        number: "6",
+        file: "fig6.svg",
+        what: "user partial slip (h_w^θ = 10, c_w = 0.1, d = 0.5 mm) at h_w^u ∈ {1, 10, 40, \
+               70, 100} m⁻¹ (the paper shows 10, 70 and 100)",
+        panels: &[
+            ("S-PS-hu_hu=1", "h_w^u = 1 1/m"),
+            ("S-PS-hu_hu=10", "h_w^u = 10 1/m"),
+            ("S-PS-hu_hu=40", "h_w^u = 40 1/m"),
+            ("S-PS-hu_hu=70", "h_w^u = 70 1/m"),
+            ("S-PS-hu_hu=100", "h_w^u = 100 1/m"),
+        ],
+    },
+    FieldFigure {
+        number: "10",
+        file: "fig10.svg",
+        what: "Johnson–Jackson at φ ∈ {1, 0.1, 0.01}, revisited Johnson–Jackson and Jenkins, \
+               d = 0.5 mm",
+        panels: &[
+            ("S-JJ-phi_phi=1", "JJ phi = 1"),
+            ("S-JJ-phi_phi=0.1", "JJ phi = 0.1"),
+            ("S-JJ-phi_phi=0.01", "JJ phi = 0.01"),
+            ("S-RJJ", "revisited JJ"),
+            ("S-JEN-d_d=0.0005", "Jenkins"),
+        ],
+    },
+];
+
 /// The flume cases: (case, label, the paper's MFIX MSE against the measured speeds).
 pub const FLUME: &[(&str, &str, &str)] = &[
     ("F-JJ_phi=0.1", "JJ phi = 0.1", "0.36"),
@@ -654,6 +696,9 @@ mod tests {
             }
         }
         names.extend(PROBE_CURVES.iter().map(|c| c.0));
+        for fig in FIELD_FIGURES {
+            names.extend(fig.panels.iter().map(|c| c.0));
+        }
         names.extend(FLUME.iter().map(|c| c.0));
         names.push(MFIX_CASE);
         names

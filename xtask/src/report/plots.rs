@@ -406,7 +406,7 @@ pub fn draw_heatmap(path: &Path, map: &Heatmap) -> Result<()> {
     Ok(())
 }
 
-fn plot_error<E: std::fmt::Debug>(e: E) -> anyhow::Error {
+pub(crate) fn plot_error<E: std::fmt::Debug>(e: E) -> anyhow::Error {
     anyhow::anyhow!("plotting a results figure: {e:?}")
 }
 
