@@ -10,7 +10,12 @@ use runout_output::{RunStatus, RunSummary};
 use crate::metrics::{profile_metrics, station_time, FlowMetrics, PROFILE_TIME};
 
 /// Fidelities from the best down: the default choice per case.
-const BEST_FIRST: [Fidelity; 3] = [Fidelity::Paper, Fidelity::Coarse, Fidelity::Smoke];
+const BEST_FIRST: [Fidelity; 4] = [
+    Fidelity::Paper,
+    Fidelity::Wall,
+    Fidelity::Coarse,
+    Fidelity::Smoke,
+];
 /// Largest distance between a requested time and the bulk sample read for it [s] (half
 /// the bulk interval of the case files).
 const BULK_TIME_TOLERANCE: f64 = 0.005;
@@ -539,6 +544,17 @@ mod tests {
             "not run at paper fidelity"
         );
         assert_eq!(choose_run(&runs, "B", None).unwrap_err(), "not run");
+        // the wall-resolving run ranks above coarse, below paper
+        write_run(&runs, "A", "wall", 1.25, &[]);
+        assert_eq!(
+            choose_run(&runs, "A", None).unwrap().fidelity,
+            Fidelity::Wall
+        );
+        write_run(&runs, "A", "paper", 1.25, &[]);
+        assert_eq!(
+            choose_run(&runs, "A", None).unwrap().fidelity,
+            Fidelity::Paper
+        );
     }
 
     #[test]
