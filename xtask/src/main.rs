@@ -31,7 +31,6 @@ mod calibrate;
 mod chute;
 mod collapse;
 mod error_time;
-mod metrics;
 mod mfix_slope;
 mod report;
 mod sensitivity;
@@ -39,6 +38,9 @@ mod stability;
 mod summary;
 mod sweep;
 mod verify;
+
+/// The flow metrics live in the post-processing library (`runout post` reads the same).
+use runout_post::metrics;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;

@@ -13,6 +13,7 @@ mod cmd_closures;
 mod cmd_wall;
 mod material;
 
+use std::io::Write as _;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
@@ -88,9 +89,58 @@ enum Command {
     /// Print every closure value (kinetic theory, friction, drag, K_cp, granular-energy
     /// sources) at one state as JSON.
     Closures(cmd_closures::ClosuresArgs),
+    /// Print a run folder's metrics as JSON: its summary, the station time, the front and
+    /// mean u_s there, and the station profile's metrics (air cushion, cushion and flow
+    /// thickness, floor εs, max u_s), h_w^u at the floor probe and the gate speeds
+    /// (definitions: runout-post's metrics module).
+    Post {
+        /// a run folder (runs/<case>/<fidelity>, or a `.partial` one of a run still going)
+        run_dir: PathBuf,
+        /// described or measured gate speeds (CSV: gate,x,speed with gates L1..L7) for the
+        /// gate-speed MSE, e.g. cases/flume/gates.csv
+        #[arg(long, value_name = "CSV")]
+        gates: Option<PathBuf>,
+    },
     /// Print a wall model's Robin coefficients for velocity and granular temperature, with
     /// the diagnostics the paper plots (h_w^u, φ, COL, FRI, slip), as JSON.
     Wall(cmd_wall::WallArgs),
+}
+
+/// `runout post`: the metrics of one run folder as pretty JSON on stdout.
+fn post(run_dir: &std::path::Path, gates: Option<&std::path::Path>) -> ExitCode {
+    let described = match gates {
+        Some(csv) => {
+            let d = runout_post::metrics::described_speeds(csv);
+            if d.is_empty() {
+                eprintln!(
+                    "runout post: {}: no gate speeds (expected a CSV `gate,x,speed` with rows \
+                     such as `L2,2.6,4.0`)",
+                    csv.display()
+                );
+                return ExitCode::FAILURE;
+            }
+            d
+        }
+        None => Vec::new(),
+    };
+    let metrics = match runout_post::run::run_metrics(run_dir, &described) {
+        Ok(m) => m,
+        Err(e) => {
+            eprintln!("runout post: {e}");
+            return ExitCode::FAILURE;
+        }
+    };
+    match serde_json::to_string_pretty(&metrics) {
+        Ok(json) => {
+            // a closed pipe (`| head`) is not an error of the command
+            let _ = writeln!(std::io::stdout(), "{json}");
+            ExitCode::SUCCESS
+        }
+        Err(e) => {
+            eprintln!("runout post: {e}");
+            ExitCode::FAILURE
+        }
+    }
 }
 
 fn parse_fidelity(s: &str) -> Result<Fidelity, String> {
@@ -482,6 +532,7 @@ fn main() -> ExitCode {
                 ExitCode::FAILURE
             }
         },
+        Command::Post { run_dir, gates } => post(&run_dir, gates.as_deref()),
         Command::Wall(args) => match cmd_wall::run(&args) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {

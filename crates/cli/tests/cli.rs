@@ -149,6 +149,21 @@ fn run_solves_the_mfix_slide_with_its_johnson_jackson_floor_at_smoke_fidelity() 
         probe.starts_with("t,h_w_u") && probe.lines().count() > 2,
         "{probe}"
     );
+    // `runout post` reads the folder: the summary and the probe's last h_w^u
+    let o = runout(&["post", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", text(&o));
+    let json: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(json["summary"]["status"], "Completed", "{json}");
+    let last_h_u: f64 = probe
+        .lines()
+        .last()
+        .and_then(|l| l.split(',').nth(1))
+        .and_then(|h| h.parse().ok())
+        .unwrap();
+    assert_eq!(json["flow"]["h_wu_probe"].as_f64(), Some(last_h_u), "{json}");
+    let o = runout(&["post", std::env::temp_dir().to_str().unwrap()]);
+    assert!(!o.status.success());
+    assert!(text(&o).contains("not a run folder"), "{}", text(&o));
 }
 
 #[test]

@@ -297,6 +297,9 @@ mod read_tests {
         );
         let vtr = "<RectilinearGrid WholeExtent=\"0 250 0 23 0 0\">";
         assert_eq!(read_vtr_cells(vtr), Some((250, 23)));
-        assert_eq!(read_vtr_cells("<RectilinearGrid WholeExtent=\"1 2\">"), None);
+        assert_eq!(
+            read_vtr_cells("<RectilinearGrid WholeExtent=\"1 2\">"),
+            None
+        );
     }
 }

@@ -1,4 +1,5 @@
-//! The flow quantities of results/summary.csv, read from a finished run's monitor files.
+//! The flow quantities of results/summary.csv and `runout post`, read from a run's monitor
+//! files.
 //!
 //! Definitions (issue 8; documented in docs/status.md):
 //! - **air cushion**: at the station, the floor cell's εs is below 0.8 × the profile's peak εs;
@@ -14,6 +15,8 @@
 
 use std::path::Path;
 
+use serde::Serialize;
+
 /// Fraction of the peak εs below which the floor is an air cushion.
 pub const CUSHION_FRACTION: f64 = 0.8;
 /// εs that counts as flowing material (cases.md front threshold).
@@ -22,7 +25,7 @@ pub const FLOW_THRESHOLD: f64 = 0.01;
 pub const PROFILE_TIME: f64 = 1.25;
 
 /// The flow columns of one run; `None` where the run has no such monitor.
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct FlowMetrics {
     /// whether the station profile shows an air cushion
     pub air_cushion: Option<bool>,

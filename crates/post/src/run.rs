@@ -1,0 +1,136 @@
+//! Everything `runout post RUN_DIR` reports of one run folder: its summary, the station time
+//! and the flow metrics there.
+
+use std::path::Path;
+
+use runout_output::RunSummary;
+use serde::Serialize;
+
+use crate::metrics::{flow_metrics, station_time, FlowMetrics};
+
+/// Largest distance between the station time and a bulk sample read for it when no sample
+/// lies beyond it [s] (the bulk interval of the shipped case files: a run that ends at the
+/// station time has its last sample up to one interval before).
+pub const BULK_TIME_TOLERANCE: f64 = 0.01;
+
+/// The metrics of one run folder.
+#[derive(Clone, Debug, Serialize)]
+pub struct RunMetrics {
+    /// the run's summary.json (absent for a run still going or killed)
+    pub summary: Option<RunSummary>,
+    /// the paper's t = 1.25 s in the run's clock [s] (docs/impact.md §4)
+    pub station_time: f64,
+    /// the time bulk.csv is read at [s]: the station time, or the nearest sample to it
+    pub bulk_time: Option<f64>,
+    /// the front x [m] and εs-weighted mean u_s [m/s] of bulk.csv at `bulk_time`
+    pub front_x: Option<f64>,
+    /// see `front_x`
+    pub mean_u_s: Option<f64>,
+    /// the station profile's metrics, h_w^u at the probe and gate speeds
+    pub flow: FlowMetrics,
+}
+
+/// Reads the run in `dir`; `described` holds the (gate number, speed) pairs the gate MSE
+/// compares with (empty: no MSE). An error names the folder when it is not a run folder.
+pub fn run_metrics(dir: &Path, described: &[(usize, f64)]) -> Result<RunMetrics, String> {
+    if !dir.join("resolved.ron").exists() && !dir.join("summary.json").exists() {
+        return Err(format!(
+            "{}: not a run folder (no resolved.ron or summary.json)",
+            dir.display()
+        ));
+    }
+    let summary = std::fs::read_to_string(dir.join("summary.json"))
+        .ok()
+        .map(|text| serde_json::from_str::<RunSummary>(&text))
+        .transpose()
+        .map_err(|e| format!("{}: unreadable summary.json: {e}", dir.display()))?;
+    let resolved = runout_case::load_case(&dir.join("resolved.ron")).ok();
+    let at = station_time(resolved.as_ref());
+    let bulk = bulk_at(dir, at);
+    Ok(RunMetrics {
+        summary,
+        station_time: at,
+        bulk_time: bulk.map(|b| b.0),
+        front_x: bulk.map(|b| b.1),
+        mean_u_s: bulk.map(|b| b.2),
+        flow: flow_metrics(dir, described),
+    })
+}
+
+/// (time, front x, mean u_s) of bulk.csv at `t`: interpolated linearly between the samples on
+/// either side, or the sample nearest `t` if it is within [`BULK_TIME_TOLERANCE`] (a run
+/// that ends at `t`).
+pub fn bulk_at(dir: &Path, t: f64) -> Option<(f64, f64, f64)> {
+    let text = std::fs::read_to_string(dir.join("bulk.csv")).ok()?;
+    let mut lines = text.lines().filter(|l| !l.trim_start().starts_with('#'));
+    let header: Vec<&str> = lines.next()?.split(',').map(str::trim).collect();
+    let column = |name: &str| header.iter().position(|h| *h == name);
+    let (kt, kf, ku) = (column("t")?, column("front_x")?, column("mean_u_s")?);
+    let samples: Vec<(f64, f64, f64)> = lines
+        .filter_map(|l| {
+            let v: Vec<f64> = l
+                .split(',')
+                .map(|c| c.trim().parse().ok())
+                .collect::<Option<_>>()?;
+            Some((*v.get(kt)?, *v.get(kf)?, *v.get(ku)?))
+        })
+        .collect();
+    if let Some(w) = samples.windows(2).find(|w| w[0].0 <= t && t <= w[1].0) {
+        let (a, b) = (w[0], w[1]);
+        let s = if b.0 > a.0 {
+            (t - a.0) / (b.0 - a.0)
+        } else {
+            0.0
+        };
+        return Some((t, a.1 + s * (b.1 - a.1), a.2 + s * (b.2 - a.2)));
+    }
+    samples
+        .iter()
+        .filter(|s| (s.0 - t).abs() <= BULK_TIME_TOLERANCE)
+        .min_by(|a, b| (a.0 - t).abs().total_cmp(&(b.0 - t).abs()))
+        .copied()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn folder(test: &str) -> std::path::PathBuf {
+        let dir = std::env::temp_dir().join(format!("runout-post-{}-{test}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    #[test]
+    fn the_bulk_sample_nearest_the_station_time_is_read() {
+        let dir = folder("bulk");
+        std::fs::write(
+            dir.join("bulk.csv"),
+            "t,solids_mass,front_x,mean_u_s\n1.24,120,10.0,4.0\n1.26,120,10.4,4.2\n",
+        )
+        .unwrap();
+        let (t, front, mean) = bulk_at(&dir, 1.25).unwrap();
+        assert_eq!(t, 1.25, "interpolated at the asked time");
+        assert!((front - 10.2).abs() < 1e-12 && (mean - 4.1).abs() < 1e-12);
+        assert_eq!(
+            bulk_at(&dir, 1.264),
+            Some((1.26, 10.4, 4.2)),
+            "the last sample, 4 ms before"
+        );
+        assert_eq!(bulk_at(&dir, 2.0), None, "no sample within the tolerance");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+
+    #[test]
+    fn a_folder_without_run_files_is_refused_by_name() {
+        let dir = folder("empty");
+        let err = run_metrics(&dir, &[]).unwrap_err();
+        assert!(err.contains("not a run folder"), "{err}");
+        std::fs::write(dir.join("summary.json"), "{").unwrap();
+        assert!(run_metrics(&dir, &[])
+            .unwrap_err()
+            .contains("unreadable summary.json"));
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
