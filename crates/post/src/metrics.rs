@@ -17,6 +17,8 @@ use std::path::Path;
 
 use serde::Serialize;
 
+use crate::table::Table;
+
 /// Fraction of the peak εs below which the floor is an air cushion.
 pub const CUSHION_FRACTION: f64 = 0.8;
 /// εs that counts as flowing material (cases.md front threshold).
@@ -45,19 +47,18 @@ pub struct FlowMetrics {
     pub mse_vs_described: Option<f64>,
 }
 
-/// Numeric rows of a CSV file with a header line, skipping `#` comment lines; empty cells are
-/// NaN.
-fn rows(path: &Path) -> Option<Vec<Vec<f64>>> {
-    let text = std::fs::read_to_string(path).ok()?;
+/// Rows of the named columns of a CSV file runout wrote; `None` if it cannot be read or
+/// lacks one of them.
+fn rows(path: &Path, columns: &[&str]) -> Option<Vec<Vec<f64>>> {
+    let table = Table::read(path).ok()?;
+    let cols: Vec<Vec<f64>> = columns
+        .iter()
+        .map(|c| table.column(c))
+        .collect::<Result<_, _>>()
+        .ok()?;
     Some(
-        text.lines()
-            .filter(|l| !l.trim_start().starts_with('#'))
-            .skip(1)
-            .map(|l| {
-                l.split(',')
-                    .map(|v| v.trim().parse().unwrap_or(f64::NAN))
-                    .collect()
-            })
+        (0..table.len())
+            .map(|k| cols.iter().map(|c| c[k]).collect())
             .collect(),
     )
 }
@@ -153,10 +154,10 @@ pub fn flow_metrics(dir: &Path, described: &[(usize, f64)]) -> FlowMetrics {
     });
     let mut m = at_station
         .or_else(|| find(dir, "profile_"))
-        .and_then(|p| rows(&p))
+        .and_then(|p| rows(&p, &["y", "eps_s", "u_s", "theta"]))
         .map(|r| profile_metrics(&r))
         .unwrap_or_default();
-    if let Some(probe) = find(dir, "wall_probe_").and_then(|p| rows(&p)) {
+    if let Some(probe) = find(dir, "wall_probe_").and_then(|p| rows(&p, &["t", "h_w_u"])) {
         m.h_wu_probe = probe
             .iter()
             .rfind(|r| r[0] <= at * (1.0 + 1e-9))
@@ -173,10 +174,10 @@ pub fn flow_metrics(dir: &Path, described: &[(usize, f64)]) -> FlowMetrics {
 /// speed); `None` without the file.
 pub fn gate_speeds(dir: &Path) -> Option<Vec<(usize, f64)>> {
     Some(
-        rows(&dir.join("gates.csv"))?
+        rows(&dir.join("gates.csv"), &["gate", "speed"])?
             .iter()
-            .filter(|r| r.len() > 3 && r[3].is_finite())
-            .map(|r| (r[0] as usize, r[3]))
+            .filter(|r| r[1].is_finite())
+            .map(|r| (r[0] as usize, r[1]))
             .collect(),
     )
 }

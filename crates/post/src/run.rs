@@ -7,6 +7,7 @@ use runout_output::RunSummary;
 use serde::Serialize;
 
 use crate::metrics::{flow_metrics, station_time, FlowMetrics};
+use crate::table::Table;
 
 /// Largest distance between the station time and a bulk sample read for it when no sample
 /// lies beyond it [s] (the bulk interval of the shipped case files: a run that ends at the
@@ -57,38 +58,15 @@ pub fn run_metrics(dir: &Path, described: &[(usize, f64)]) -> Result<RunMetrics,
     })
 }
 
-/// (time, front x, mean u_s) of bulk.csv at `t`: interpolated linearly between the samples on
-/// either side, or the sample nearest `t` if it is within [`BULK_TIME_TOLERANCE`] (a run
-/// that ends at `t`).
+/// (time, front x, mean u_s) of bulk.csv at `t` ([`Table::row_at`] with
+/// [`BULK_TIME_TOLERANCE`]).
 pub fn bulk_at(dir: &Path, t: f64) -> Option<(f64, f64, f64)> {
-    let text = std::fs::read_to_string(dir.join("bulk.csv")).ok()?;
-    let mut lines = text.lines().filter(|l| !l.trim_start().starts_with('#'));
-    let header: Vec<&str> = lines.next()?.split(',').map(str::trim).collect();
-    let column = |name: &str| header.iter().position(|h| *h == name);
-    let (kt, kf, ku) = (column("t")?, column("front_x")?, column("mean_u_s")?);
-    let samples: Vec<(f64, f64, f64)> = lines
-        .filter_map(|l| {
-            let v: Vec<f64> = l
-                .split(',')
-                .map(|c| c.trim().parse().ok())
-                .collect::<Option<_>>()?;
-            Some((*v.get(kt)?, *v.get(kf)?, *v.get(ku)?))
-        })
-        .collect();
-    if let Some(w) = samples.windows(2).find(|w| w[0].0 <= t && t <= w[1].0) {
-        let (a, b) = (w[0], w[1]);
-        let s = if b.0 > a.0 {
-            (t - a.0) / (b.0 - a.0)
-        } else {
-            0.0
-        };
-        return Some((t, a.1 + s * (b.1 - a.1), a.2 + s * (b.2 - a.2)));
-    }
-    samples
-        .iter()
-        .filter(|s| (s.0 - t).abs() <= BULK_TIME_TOLERANCE)
-        .min_by(|a, b| (a.0 - t).abs().total_cmp(&(b.0 - t).abs()))
-        .copied()
+    let bulk = Table::read(&dir.join("bulk.csv")).ok()?;
+    let (at, front) = bulk.value_at("t", "front_x", t, BULK_TIME_TOLERANCE).ok()?;
+    let (_, mean) = bulk
+        .value_at("t", "mean_u_s", t, BULK_TIME_TOLERANCE)
+        .ok()?;
+    Some((at, front, mean))
 }
 
 #[cfg(test)]

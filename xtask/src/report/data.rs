@@ -8,6 +8,8 @@ use runout_case::{load_case, Fidelity};
 use runout_output::{RunStatus, RunSummary};
 
 use crate::metrics::{profile_metrics, station_time, FlowMetrics, PROFILE_TIME};
+/// The monitor-CSV reader lives in the post-processing library.
+pub use runout_post::table::Table;
 
 /// Fidelities from the best down: the default choice per case.
 const BEST_FIRST: [Fidelity; 4] = [
@@ -16,73 +18,9 @@ const BEST_FIRST: [Fidelity; 4] = [
     Fidelity::Coarse,
     Fidelity::Smoke,
 ];
-/// Largest distance between a requested time and the bulk sample read for it [s] (half
-/// the bulk interval of the case files).
-const BULK_TIME_TOLERANCE: f64 = 0.005;
-
-/// A monitor CSV: column names and numeric rows (empty cells are NaN).
-#[derive(Clone, Debug, PartialEq)]
-pub struct Table {
-    columns: Vec<String>,
-    rows: Vec<Vec<f64>>,
-}
-
-impl Table {
-    /// Parses a header line and numeric rows; `#` lines and blank lines are skipped.
-    pub fn parse(text: &str) -> Result<Table, String> {
-        let mut lines = text
-            .lines()
-            .filter(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'));
-        let header = lines.next().ok_or("no header line")?;
-        let columns: Vec<String> = header.split(',').map(|c| c.trim().to_string()).collect();
-        let mut rows = Vec::new();
-        for (k, line) in lines.enumerate() {
-            let row = line
-                .split(',')
-                .map(|v| match v.trim() {
-                    "" => Ok(f64::NAN),
-                    v => v
-                        .parse()
-                        .map_err(|_| format!("data row {}: `{v}` is not a number", k + 1)),
-                })
-                .collect::<Result<Vec<f64>, String>>()?;
-            if row.len() != columns.len() {
-                return Err(format!(
-                    "data row {}: {} values for {} columns",
-                    k + 1,
-                    row.len(),
-                    columns.len()
-                ));
-            }
-            rows.push(row);
-        }
-        Ok(Table { columns, rows })
-    }
-
-    /// Reads and parses `path`; the error names the file.
-    pub fn read(path: &Path) -> Result<Table, String> {
-        let name = path
-            .file_name()
-            .map_or(String::new(), |n| n.to_string_lossy().into());
-        let text = std::fs::read_to_string(path).map_err(|e| format!("cannot read {name}: {e}"))?;
-        Table::parse(&text).map_err(|e| format!("{name}: {e}"))
-    }
-
-    /// The values of one column.
-    pub fn column(&self, name: &str) -> Result<Vec<f64>, String> {
-        let k = self
-            .columns
-            .iter()
-            .position(|c| c == name)
-            .ok_or_else(|| format!("no column `{name}` (has {})", self.columns.join(", ")))?;
-        Ok(self.rows.iter().map(|r| r[k]).collect())
-    }
-
-    /// Two columns as (x, y) pairs.
-    pub fn pairs(&self, x: &str, y: &str) -> Result<Vec<(f64, f64)>, String> {
-        Ok(self.column(x)?.into_iter().zip(self.column(y)?).collect())
-    }
-}
+/// Largest distance between a requested time past the last bulk sample and that sample [s]
+/// (inside the series the values are interpolated): the bulk interval of the case files.
+const BULK_TIME_TOLERANCE: f64 = runout_post::run::BULK_TIME_TOLERANCE;
 
 /// The finished run chosen for a case.
 #[derive(Clone, Debug)]
@@ -333,22 +271,16 @@ impl CaseData {
             .ok_or_else(|| format!("no probe sample at or before t = {t} s"))
     }
 
-    /// The bulk sample nearest `t` (within [`BULK_TIME_TOLERANCE`]): (front x, mean u_s).
+    /// (front x, mean u_s) at `t`, interpolated between bulk samples (past the last one, that
+    /// sample within [`BULK_TIME_TOLERANCE`]).
     pub fn bulk_at(&self, t: f64) -> Result<(f64, f64), String> {
         if let Some(why) = self.run.as_ref().ok().and_then(|r| r.ended_before(t)) {
             return Err(why);
         }
         let bulk = self.bulk.as_ref().map_err(Clone::clone)?;
-        let (times, front, mean) = (
-            bulk.column("t")?,
-            bulk.column("front_x")?,
-            bulk.column("mean_u_s")?,
-        );
-        let k = (0..times.len())
-            .min_by(|&a, &b| (times[a] - t).abs().total_cmp(&(times[b] - t).abs()))
-            .filter(|&k| (times[k] - t).abs() <= BULK_TIME_TOLERANCE)
-            .ok_or_else(|| format!("no bulk sample within {BULK_TIME_TOLERANCE} s of t = {t} s"))?;
-        Ok((front[k], mean[k]))
+        let (_, front) = bulk.value_at("t", "front_x", t, BULK_TIME_TOLERANCE)?;
+        let (_, mean) = bulk.value_at("t", "mean_u_s", t, BULK_TIME_TOLERANCE)?;
+        Ok((front, mean))
     }
 
     /// Gate speeds as (gate number, speed) pairs.
@@ -502,29 +434,6 @@ mod tests {
     use super::*;
 
     #[test]
-    fn tables_are_read_by_column_name() {
-        let t = Table::parse("# a comment\nt, h_w_u\n0.1,5\n\n0.2,\n").unwrap();
-        assert_eq!(t.column("t").unwrap(), vec![0.1, 0.2]);
-        let h = t.column("h_w_u").unwrap();
-        assert_eq!(h[0], 5.0);
-        assert!(h[1].is_nan(), "an empty cell is NaN");
-        assert_eq!(t.pairs("h_w_u", "t").unwrap()[0], (5.0, 0.1));
-        assert!(t.column("speed").unwrap_err().contains("no column `speed`"));
-        assert!(Table::parse("t,x\n1,abc\n")
-            .unwrap_err()
-            .contains("not a number"));
-        assert!(Table::parse("t,x\n1\n")
-            .unwrap_err()
-            .contains("1 values for 2 columns"));
-        assert!(Table::parse("# only a comment\n").is_err());
-        // a header without rows is an empty table, not an error
-        assert!(Table::parse("gate,x,t_cross,speed\n")
-            .unwrap()
-            .rows
-            .is_empty());
-    }
-
-    #[test]
     fn the_best_finished_run_is_chosen_unless_a_fidelity_is_asked() {
         let tmp = TempDir::new("choose");
         let runs = tmp.0.join("runs");
@@ -625,11 +534,11 @@ mod tests {
         let d = CaseData::load(&runs, "slide", None);
         assert_eq!(d.probe_at(1.25).unwrap(), (1.25, 150.0));
         assert!(d.probe_at(1.0).is_err());
-        assert_eq!(d.bulk_at(0.3).unwrap(), (1.1, 1.2));
-        assert!(d
-            .bulk_at(0.2)
-            .unwrap_err()
-            .contains("no bulk sample within"));
+        assert_eq!(d.bulk_at(0.3005).unwrap(), (1.1, 1.2));
+        // between samples: interpolated
+        let (front, mean) = d.bulk_at(0.30525).unwrap();
+        assert!((front - 1.2).abs() < 1e-9 && (mean - 1.3).abs() < 1e-9);
+        assert!(d.bulk_at(0.2).unwrap_err().contains("no sample"));
         assert!(d.bulk_at(0.8).unwrap_err().contains("ends at t = 0.60 s"));
         // a gate without a speed is not a crossing
         assert_eq!(d.gate_pairs().unwrap(), vec![(1, 3.0)]);

@@ -276,15 +276,29 @@ impl Output {
     }
 }
 
-/// A family's time of the time-series outputs: t = 1.25 s, or the last time its runs reach
-/// if they all end before (smoke runs: 0.4 s).
+/// The station time of a family's runs: the paper's t = 1.25 s in their clock (1.25 s after
+/// the impact for family S, docs/impact.md §4), the same for every run of a family.
+fn family_station_time(family: &Family, cases: &Cases) -> f64 {
+    family
+        .points
+        .iter()
+        .find_map(|(_, c)| {
+            let d = cases.get(c);
+            d.run.is_ok().then_some(d.station_time)
+        })
+        .unwrap_or(PROFILE_TIME)
+}
+
+/// A family's time of the time-series outputs: its station time, or the last time its runs
+/// reach if they all end before (smoke runs).
 fn family_time(family: &Family, cases: &Cases) -> f64 {
+    let station = family_station_time(family, cases);
     family
         .points
         .iter()
         .filter_map(|(_, c)| Some(cases.get(c).run.as_ref().ok()?.summary.simulated_time))
         .reduce(f64::max)
-        .map_or(PROFILE_TIME, |t| t.min(PROFILE_TIME))
+        .map_or(station, |t| t.min(station))
 }
 
 /// An elasticity for a table cell or the heat map: 2 decimals, or 2 digits if small; `*`
@@ -423,14 +437,15 @@ pub fn section(
          number over fewer points than the family has gives the range it covers, and a cell \
          without two usable points is \"—\" with the reason in the notes below the table.\n\n\
          **Outputs.** max u_s, floor εs, cushion thickness and flow thickness: the station \
-         profile at x = 11 m, t = {PROFILE_TIME} s, as in the tables above (a cushion \
+         profile at x = 11 m at the station time, as in the tables above (a cushion \
          thickness of 0, no cushion, has no elasticity). Front travel: the front x of bulk.csv \
          (where the floor row's εs falls through 0.01) minus the release block's front edge \
          (x = 5.5 m), a distance from a natural origin, so its elasticity does not depend on \
          where the domain starts. Mean u_s: the εs-weighted mean over the domain (bulk.csv). \
-         Front travel, mean u_s and h_w^u at the floor probe are read at t = {PROFILE_TIME} s, \
-         or, where the family's runs all end before it, at their end (column \"read at\"); \
-         the profile exists only at {PROFILE_TIME} s.\n\n\
+         Front travel, mean u_s and h_w^u at the floor probe are read at the station time (the \
+         paper's t = {PROFILE_TIME} s: for family S 1.25 s after the impact, the run's \
+         t = 1.536 s, docs/impact.md §4), or, where the family's runs all end before it, at \
+         their end (column \"read at\"); the profile exists only at the station time.\n\n\
          **Limits.** One-at-a-time: each family moves one parameter with the others at that \
          sweep's base, so interactions are not seen, and the base differs between families \
          (d is swept at Johnson–Jackson φ = 0.1, at Jenkins and at partial slip). Local and on \
@@ -476,10 +491,11 @@ pub fn section(
             fidelities.into_iter().collect::<Vec<_>>().join(" + ")
         };
         let t = c.times[k];
-        let read_at = if t < PROFILE_TIME {
-            format!("t = {t:.2} s (profile: {PROFILE_TIME} s)")
+        let station = family_station_time(f, cases);
+        let read_at = if t < station {
+            format!("t = {t:.2} s (profile: {station:.3} s)")
         } else {
-            format!("t = {PROFILE_TIME} s")
+            format!("t = {station:.3} s")
         };
         let values: Vec<String> = f.points.iter().map(|(p, _)| value(*p)).collect();
         let mut row_cells = Vec::new();
@@ -678,7 +694,7 @@ mod tests {
         let c: Vec<&str> = row.split(" | ").collect();
         assert_eq!(c[1], "h_w^u [1/m] ∈ {1, 10, 40, 70, 100}");
         assert_eq!(c[2], "coarse");
-        assert_eq!(c[3], "t = 1.25 s");
+        assert_eq!(c[3], "t = 1.250 s");
         assert_eq!(c[4], "-0.25", "max u_s: {row}");
         // front travel 1 + hu/100: the least-squares log-log slope, positive and below 1
         let travel: f64 = c[5].parse().unwrap();
