@@ -31,6 +31,7 @@ mod calibrate;
 mod chute;
 mod collapse;
 mod error_time;
+mod figure;
 mod metrics;
 mod mfix_slope;
 mod report;

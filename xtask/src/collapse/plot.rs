@@ -8,6 +8,7 @@ use plotters::prelude::*;
 
 use super::laws::{LAJEUNESSE, LUBE};
 use super::run::Outcome;
+use crate::figure::legend;
 
 /// SVG size [px].
 const FIGURE_SIZE: (u32, u32) = (900, 650);
@@ -109,13 +110,7 @@ pub(super) fn draw(outcomes: &[Outcome], path: &Path) -> Result<()> {
         .map_err(plot_error)?
         .label("runout, dense front εs ≥ 0.3")
         .legend(move |(x, y)| Circle::new((x + 10, y), 5, red.stroke_width(2)));
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::LowerRight)
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .draw()
-        .map_err(plot_error)?;
+    legend(&mut chart, SeriesLabelPosition::LowerRight).map_err(plot_error)?;
     root.present().map_err(plot_error)?;
     Ok(())
 }

@@ -9,6 +9,7 @@ use plotters::prelude::*;
 use super::ladder::scheme_name;
 use super::quantity::Quantity;
 use super::Ladder;
+use crate::figure::legend;
 
 /// SVG size [px].
 const FIGURE_SIZE: (u32, u32) = (900, 600);
@@ -145,13 +146,7 @@ pub(super) fn draw(
                 .map_err(plot_error)?;
         }
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .draw()
-        .map_err(plot_error)?;
+    legend(&mut chart, SeriesLabelPosition::UpperRight).map_err(plot_error)?;
     area.present().map_err(plot_error)?;
     Ok(true)
 }
