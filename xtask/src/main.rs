@@ -31,6 +31,7 @@ mod calibrate;
 mod chute;
 mod collapse;
 mod error_time;
+mod figure;
 mod mfix_slope;
 mod report;
 mod sensitivity;
@@ -47,6 +48,7 @@ use std::process::Command;
 
 use anyhow::{bail, Context, Result};
 use clap::{Parser, Subcommand};
+use runout_case::Fidelity;
 
 #[derive(Parser)]
 #[command(name = "cargo xtask", about = "runout developer tasks")]
@@ -234,8 +236,7 @@ fn parse_shard(s: &str) -> Result<(usize, usize)> {
 }
 
 fn main() -> Result<()> {
-    let cli = Cli::parse();
-    match cli.task {
+    match Cli::parse().task {
         Task::Sweep {
             fidelity,
             only,
@@ -244,23 +245,7 @@ fn main() -> Result<()> {
             list,
             cases,
             study,
-        } => {
-            let opts = sweep::SweepOptions {
-                fidelity: fidelity.parse().map_err(anyhow::Error::msg)?,
-                only,
-                jobs: jobs
-                    .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get())),
-                shard: shard.as_deref().map(parse_shard).transpose()?,
-                list,
-                study,
-            };
-            let dir = if cases.is_absolute() {
-                cases
-            } else {
-                root().join(cases)
-            };
-            sweep::sweep(&root(), &dir, &opts)
-        }
+        } => sweep_task(fidelity, only, jobs, shard, list, cases, study),
         Task::Calibrate {
             case_file,
             params,
@@ -281,7 +266,7 @@ fn main() -> Result<()> {
                 case,
                 params,
                 measurements,
-                fidelity: fidelity.parse().map_err(anyhow::Error::msg)?,
+                fidelity: parse_fidelity(&fidelity)?,
                 scan,
                 refine,
                 jobs,
@@ -298,7 +283,7 @@ fn main() -> Result<()> {
         } => stability::stability(
             &root(),
             &stability::StabilityOptions {
-                fidelity: fidelity.parse().map_err(anyhow::Error::msg)?,
+                fidelity: parse_fidelity(&fidelity)?,
                 only,
                 jobs,
             },
@@ -310,31 +295,7 @@ fn main() -> Result<()> {
             reuse,
             no_run,
             end_time,
-        } => {
-            let list = |s: &str| -> Vec<String> {
-                s.split(',')
-                    .map(|v| v.trim().to_string())
-                    .filter(|v| !v.is_empty())
-                    .collect()
-            };
-            let opts = error_time::Options {
-                levels: list(&levels)
-                    .iter()
-                    .map(|l| l.parse())
-                    .collect::<Result<_, _>>()
-                    .map_err(anyhow::Error::msg)?,
-                cases: list(&cases),
-                schemes: list(&schemes)
-                    .iter()
-                    .map(|s| error_time::parse_scheme(s))
-                    .collect::<Result<_, _>>()
-                    .map_err(anyhow::Error::msg)?,
-                reuse,
-                no_run,
-                end_time,
-            };
-            error_time::error_time(&root(), &opts)
-        }
+        } => error_time_task(&levels, &cases, &schemes, reuse, no_run, end_time),
         Task::Verify {
             name,
             report,
@@ -342,104 +303,183 @@ fn main() -> Result<()> {
             reuse,
             threads,
             skip_variants,
-        } => {
-            if name == "mfix-slope" {
-                let opts = mfix_slope::Options {
-                    fidelity: fidelity
-                        .as_deref()
-                        .unwrap_or("paper")
-                        .parse()
-                        .map_err(anyhow::Error::msg)?,
-                    threads: threads
-                        .split(',')
-                        .map(|t| t.trim().parse::<usize>())
-                        .collect::<Result<_, _>>()
-                        .context("--threads must be a comma-separated list of counts")?,
-                    skip_variants,
-                };
-                mfix_slope::check(&root(), &opts)
-            } else if name == "two-fluid" {
-                // issue 7's two-fluid checks at full size: homogeneous cooling, the settling
-                // column, the fluidized bed's gas pressure drop and S-JJ-phi φ = 0.1 at smoke
-                // and coarse fidelity to 1.25 s (the test suite runs all but the coarse one)
-                let status =
-                    Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
-                        .current_dir(root())
-                        .args([
-                            "test",
-                            "--release",
-                            "-p",
-                            "runout-solver",
-                            "--test",
-                            "tfm_cooling",
-                            "--test",
-                            "settling",
-                            "--test",
-                            "fluidized_bed",
-                            "--test",
-                            "s_jj_phi",
-                            "--",
-                            "--include-ignored",
-                            "--nocapture",
-                            "--test-threads",
-                            "1",
-                        ])
-                        .status()?;
-                if !status.success() {
-                    bail!("two-fluid verification failed: {status}");
-                }
-                Ok(())
-            } else if name == "chute" {
-                chute::verify(&root())
-            } else if name == "collapse" {
-                collapse::verify(
-                    &root(),
-                    fidelity
-                        .as_deref()
-                        .unwrap_or("coarse")
-                        .parse()
-                        .map_err(anyhow::Error::msg)?,
-                    reuse,
-                )
-            } else {
-                verify::verify(&name, report, &root())
-            }
+        } => verify_task(
+            &name,
+            report,
+            fidelity.as_deref(),
+            reuse,
+            &threads,
+            skip_variants,
+        ),
+        Task::Report { what, fidelity } => report_task(&what, fidelity.as_deref()),
+        Task::Bench { what, args } => bench_task(&what, &args),
+    }
+}
+
+/// A fidelity preset from its name (smoke, coarse, wall or paper).
+fn parse_fidelity(name: &str) -> Result<Fidelity> {
+    name.parse().map_err(anyhow::Error::msg)
+}
+
+/// Runs `cargo` (the one that runs xtask, if known) with `args` in the workspace root; an
+/// error naming `what` if it fails.
+fn cargo(args: &[&str], what: &str) -> Result<()> {
+    let status = Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
+        .current_dir(root())
+        .args(args)
+        .status()?;
+    if !status.success() {
+        bail!("{what} failed: {status}");
+    }
+    Ok(())
+}
+
+/// `cargo xtask sweep`.
+fn sweep_task(
+    fidelity: String,
+    only: Option<String>,
+    jobs: Option<usize>,
+    shard: Option<String>,
+    list: bool,
+    cases: PathBuf,
+    study: Option<String>,
+) -> Result<()> {
+    let opts = sweep::SweepOptions {
+        fidelity: parse_fidelity(&fidelity)?,
+        only,
+        jobs: jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get())),
+        shard: shard.as_deref().map(parse_shard).transpose()?,
+        list,
+        study,
+    };
+    let dir = if cases.is_absolute() {
+        cases
+    } else {
+        root().join(cases)
+    };
+    sweep::sweep(&root(), &dir, &opts)
+}
+
+/// `cargo xtask error-time`: the comma-separated lists parsed into the study's options.
+fn error_time_task(
+    levels: &str,
+    cases: &str,
+    schemes: &str,
+    reuse: bool,
+    no_run: bool,
+    end_time: Option<f64>,
+) -> Result<()> {
+    let list = |s: &str| -> Vec<String> {
+        s.split(',')
+            .map(|v| v.trim().to_string())
+            .filter(|v| !v.is_empty())
+            .collect()
+    };
+    let opts = error_time::Options {
+        levels: list(levels)
+            .iter()
+            .map(|l| l.parse())
+            .collect::<Result<_, _>>()
+            .map_err(anyhow::Error::msg)?,
+        cases: list(cases),
+        schemes: list(schemes)
+            .iter()
+            .map(|s| error_time::parse_scheme(s))
+            .collect::<Result<_, _>>()
+            .map_err(anyhow::Error::msg)?,
+        reuse,
+        no_run,
+        end_time,
+    };
+    error_time::error_time(&root(), &opts)
+}
+
+/// `cargo xtask verify <name>`: family M against MFIX, the two-fluid test suite at full
+/// size, the chute, the column collapse, or the single-phase core.
+fn verify_task(
+    name: &str,
+    report: bool,
+    fidelity: Option<&str>,
+    reuse: bool,
+    threads: &str,
+    skip_variants: bool,
+) -> Result<()> {
+    match name {
+        "mfix-slope" => {
+            let opts = mfix_slope::Options {
+                fidelity: parse_fidelity(fidelity.unwrap_or("paper"))?,
+                threads: threads
+                    .split(',')
+                    .map(|t| t.trim().parse::<usize>())
+                    .collect::<Result<_, _>>()
+                    .context("--threads must be a comma-separated list of counts")?,
+                skip_variants,
+            };
+            mfix_slope::check(&root(), &opts)
         }
-        Task::Report { what, fidelity } => {
-            let fidelity = fidelity
-                .map(|f| f.parse())
-                .transpose()
-                .map_err(anyhow::Error::msg)?;
-            match what.as_str() {
-                "analytic" => analytic::report(&root()),
-                "results" => report::report(&root(), fidelity),
-                "release" => report::release::report(&root(), fidelity),
-                other => bail!("unknown report `{other}` (known: results, analytic, release)"),
-            }
+        // issue 7's two-fluid checks at full size: homogeneous cooling, the settling
+        // column, the fluidized bed's gas pressure drop and S-JJ-phi φ = 0.1 at smoke
+        // and coarse fidelity to 1.25 s (the test suite runs all but the coarse one)
+        "two-fluid" => cargo(
+            &[
+                "test",
+                "--release",
+                "-p",
+                "runout-solver",
+                "--test",
+                "tfm_cooling",
+                "--test",
+                "settling",
+                "--test",
+                "fluidized_bed",
+                "--test",
+                "s_jj_phi",
+                "--",
+                "--include-ignored",
+                "--nocapture",
+                "--test-threads",
+                "1",
+            ],
+            "two-fluid verification",
+        ),
+        "chute" => chute::verify(&root()),
+        "collapse" => collapse::verify(
+            &root(),
+            parse_fidelity(fidelity.unwrap_or("coarse"))?,
+            reuse,
+        ),
+        _ => verify::verify(name, report, &root()),
+    }
+}
+
+/// `cargo xtask report [results|analytic|release]`.
+fn report_task(what: &str, fidelity: Option<&str>) -> Result<()> {
+    let fidelity = fidelity.map(parse_fidelity).transpose()?;
+    match what {
+        "analytic" => analytic::report(&root()),
+        "results" => report::report(&root(), fidelity),
+        "release" => report::release::report(&root(), fidelity),
+        other => bail!("unknown report `{other}` (known: results, analytic, release)"),
+    }
+}
+
+/// `cargo xtask bench <what> [args]`.
+fn bench_task(what: &str, args: &[String]) -> Result<()> {
+    match what {
+        "linsolve" => {
+            let mut all = vec![
+                "run",
+                "--release",
+                "-p",
+                "runout-linsolve",
+                "--example",
+                "linsolve_table",
+                "--",
+            ];
+            all.extend(args.iter().map(String::as_str));
+            cargo(&all, "linsolve benchmark")
         }
-        Task::Bench { what, args } => match what.as_str() {
-            "linsolve" => {
-                let status =
-                    Command::new(std::env::var("CARGO").unwrap_or_else(|_| "cargo".into()))
-                        .current_dir(root())
-                        .args([
-                            "run",
-                            "--release",
-                            "-p",
-                            "runout-linsolve",
-                            "--example",
-                            "linsolve_table",
-                            "--",
-                        ])
-                        .args(&args)
-                        .status()?;
-                if !status.success() {
-                    bail!("linsolve benchmark failed: {status}");
-                }
-                Ok(())
-            }
-            "two-fluid" => bench_two_fluid::run(&root(), &args),
-            other => bail!("unknown benchmark `{other}` (known: linsolve, two-fluid)"),
-        },
+        "two-fluid" => bench_two_fluid::run(&root(), args),
+        other => bail!("unknown benchmark `{other}` (known: linsolve, two-fluid)"),
     }
 }

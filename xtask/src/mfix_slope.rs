@@ -241,6 +241,41 @@ pub fn check(root: &Path, opts: &Options) -> Result<()> {
         timed.push(run_timed(&jj, opts.fidelity, threads, n == 0, root)?);
     }
     let first = timed.first().context("--threads is empty")?;
+    front_section(&mut md, first, &mut failures)?;
+    cost_section(&mut md, &timed)?;
+    let s = &first.summary;
+    if s.rejected_steps > MFIX_REJECTED {
+        failures.push(format!(
+            "{} rejected steps, more than MFIX's {MFIX_REJECTED}",
+            s.rejected_steps
+        ));
+    }
+    profile_section(&mut md, first)?;
+    if !opts.skip_variants {
+        variants_section(&mut md, root, &dir, &jj, first, opts)?;
+    }
+    if failures.is_empty() {
+        writeln!(
+            md,
+            "**Result: pass** (all within ±{:.0} %).",
+            TOLERANCE * 100.0
+        )?;
+    } else {
+        writeln!(md, "**Result: fail**: {}.", failures.join("; "))?;
+    }
+    print!("{md}");
+    let out = root.join("docs/mfix-slope.md");
+    std::fs::write(&out, &md).with_context(|| format!("writing {}", out.display()))?;
+    eprintln!("wrote {}", out.display());
+    if !failures.is_empty() {
+        bail!("mfix-slope: {}", failures.join("; "));
+    }
+    Ok(())
+}
+
+/// The front and mean solids velocity of the JJ run against MFIX's at its three times; a
+/// difference beyond the tolerance is a failure.
+fn front_section(md: &mut String, first: &Timed, failures: &mut Vec<String>) -> Result<()> {
     let rows = read_bulk(&first.dir)?;
     writeln!(
         md,
@@ -268,7 +303,6 @@ pub fn check(root: &Path, opts: &Options) -> Result<()> {
             failures.push(format!("mean u_s at t = {t}: {:+.1} %", du * 100.0));
         }
     }
-    let s = &first.summary;
     writeln!(
         md,
         "\nFront = largest x with εs > 0.01; ū_s = εs-weighted mean solids x-velocity (bulk.csv, \
@@ -276,12 +310,17 @@ pub fn check(root: &Path, opts: &Options) -> Result<()> {
          ±{:.0} %.\n",
         TOLERANCE * 100.0
     )?;
+    Ok(())
+}
+
+/// One row per timed run: steps, iterations, mass error and cost against MFIX's.
+fn cost_section(md: &mut String, timed: &[Timed]) -> Result<()> {
     writeln!(md, "## Run statistics and cost\n")?;
     writeln!(
         md,
         "| threads | simulated [s] | steps | rejected | mean Δt [s] | outer it./step | solids mass error | wall [s] | CPU [s] | CPU s per simulated s | MFIX / runout |\n|---|---|---|---|---|---|---|---|---|---|---|"
     )?;
-    for t in &timed {
+    for t in timed {
         let s = &t.summary;
         let per = t.cpu / s.simulated_time.max(1e-12);
         writeln!(
@@ -307,12 +346,12 @@ pub fn check(root: &Path, opts: &Options) -> Result<()> {
          target (issue 9) is at most {:.0} CPU s per simulated second on one thread.\n",
         MFIX_CPU_PER_SIMULATED_SECOND / 10.0
     )?;
-    if s.rejected_steps > MFIX_REJECTED {
-        failures.push(format!(
-            "{} rejected steps, more than MFIX's {MFIX_REJECTED}",
-            s.rejected_steps
-        ));
-    }
+    Ok(())
+}
+
+/// Where the first run's wall time went, by solver part (nothing if it has no profile).
+fn profile_section(md: &mut String, first: &Timed) -> Result<()> {
+    let s = &first.summary;
     if !s.profile.is_empty() {
         let total: f64 = s.profile.iter().map(|p| p.1).sum();
         writeln!(
@@ -329,49 +368,44 @@ pub fn check(root: &Path, opts: &Options) -> Result<()> {
             s.wall_time - total
         )?;
     }
-    if !opts.skip_variants {
+    Ok(())
+}
+
+/// The four floors (issue 9, item 4): runs the other three on the first thread count and
+/// tabulates the floor row of each at [`VARIANT_TIME`].
+fn variants_section(
+    md: &mut String,
+    root: &Path,
+    dir: &Path,
+    jj: &SourcedCase,
+    first: &Timed,
+    opts: &Options,
+) -> Result<()> {
+    writeln!(
+        md,
+        "## The four floors at t = {VARIANT_TIME} s (issue 9, item 4)\n\nFloor-row (wall-adjacent) \
+         cells with εs > {FLOW_EPS}: εs-weighted mean solids x-velocity and θ, the largest \
+         solids x-velocity, and the front. Fields nearest t = {VARIANT_TIME} s.\n\n| floor | \
+         field time [s] | ū_s wall row [m/s] | max u_s wall row [m/s] | θ wall row [m²/s²] | \
+         front [m] | status |\n|---|---|---|---|---|---|---|"
+    )?;
+    let mut cases = vec![(jj.clone(), first.dir.clone(), first.summary.status.clone())];
+    for file in ["rjj.ron", "jenkins.ron", "partial-slip.ron"] {
+        let case = load_one(&dir.join(file))?;
+        eprintln!("running {}", case.case.name);
+        let t = run_timed(&case, opts.fidelity, opts.threads[0], true, root)?;
+        cases.push((case, t.dir, t.summary.status));
+    }
+    for (case, run_dir, status) in &cases {
+        let (time, u, theta, umax) = floor_row(run_dir, VARIANT_TIME)?;
+        let front = at_time(&read_bulk(run_dir)?, VARIANT_TIME).map_or(f64::NAN, |r| r.0);
         writeln!(
             md,
-            "## The four floors at t = {VARIANT_TIME} s (issue 9, item 4)\n\nFloor-row (wall-adjacent) \
-             cells with εs > {FLOW_EPS}: εs-weighted mean solids x-velocity and θ, the largest \
-             solids x-velocity, and the front. Fields nearest t = {VARIANT_TIME} s.\n\n| floor | \
-             field time [s] | ū_s wall row [m/s] | max u_s wall row [m/s] | θ wall row [m²/s²] | \
-             front [m] | status |\n|---|---|---|---|---|---|---|"
+            "| {} | {time:.3} | {u:.3} | {umax:.3} | {theta:.3e} | {front:.3} | {status:?} |",
+            case.case.name
         )?;
-        let mut cases = vec![(jj.clone(), first.dir.clone(), first.summary.status.clone())];
-        for file in ["rjj.ron", "jenkins.ron", "partial-slip.ron"] {
-            let case = load_one(&dir.join(file))?;
-            eprintln!("running {}", case.case.name);
-            let t = run_timed(&case, opts.fidelity, opts.threads[0], true, root)?;
-            cases.push((case, t.dir, t.summary.status));
-        }
-        for (case, run_dir, status) in &cases {
-            let (time, u, theta, umax) = floor_row(run_dir, VARIANT_TIME)?;
-            let front = at_time(&read_bulk(run_dir)?, VARIANT_TIME).map_or(f64::NAN, |r| r.0);
-            writeln!(
-                md,
-                "| {} | {time:.3} | {u:.3} | {umax:.3} | {theta:.3e} | {front:.3} | {status:?} |",
-                case.case.name
-            )?;
-        }
-        writeln!(md)?;
     }
-    if failures.is_empty() {
-        writeln!(
-            md,
-            "**Result: pass** (all within ±{:.0} %).",
-            TOLERANCE * 100.0
-        )?;
-    } else {
-        writeln!(md, "**Result: fail**: {}.", failures.join("; "))?;
-    }
-    print!("{md}");
-    let out = root.join("docs/mfix-slope.md");
-    std::fs::write(&out, &md).with_context(|| format!("writing {}", out.display()))?;
-    eprintln!("wrote {}", out.display());
-    if !failures.is_empty() {
-        bail!("mfix-slope: {}", failures.join("; "));
-    }
+    writeln!(md)?;
     Ok(())
 }
 

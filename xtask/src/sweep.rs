@@ -381,36 +381,7 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
         .map(|(_, r)| r)
         .collect();
     let fidelity = opts.fidelity;
-    println!(
-        "case matrix at fidelity `{fidelity}`: {} of {} flow case(s){}, {} analytic famil{}",
-        selected.len(),
-        runs.len(),
-        opts.shard
-            .map_or(String::new(), |(i, n)| format!(" (shard {i}/{n})")),
-        analytic.len(),
-        if analytic.len() == 1 { "y" } else { "ies" }
-    );
-    let mut cells = 0usize;
-    for r in &selected {
-        let c = r.case.at_fidelity(fidelity);
-        let g = c.grid()?;
-        cells += g.cell_count();
-        println!(
-            "  {:<34} {:>5} x {:<4} to {:>6.3} s   {}",
-            c.name,
-            g.nx(),
-            g.ny(),
-            c.run.end_time,
-            r.file.strip_prefix(root).unwrap_or(&r.file).display()
-        );
-    }
-    for (name, f) in &analytic {
-        println!(
-            "  {name:<34} closed form: `cargo xtask report analytic`   {}",
-            f.strip_prefix(root).unwrap_or(f).display()
-        );
-    }
-    println!("total cells over the selection: {cells}");
+    list_selection(root, &selected, runs.len(), &analytic, opts)?;
     if opts.list {
         return Ok(());
     }
@@ -420,64 +391,16 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
 
     let runs_dir = root.join("runs");
     let started = Instant::now();
-    let progress = MultiProgress::new();
-    let style = progress_style();
     // Runs the matrix repeats (the base point of several one-factor families: same case
     // apart from its name and description) are computed once and copied.
     let same_as = duplicates(&selected, fidelity);
-    // Longest first, each worker taking the next: the sweep's duration then is not set by a
-    // long run started last. The length is the wall time of the case's row in the last
-    // results/summary.csv at this fidelity, else cells × simulated time scaled by the
-    // rows that have both (stiff runs take 10× a normal one on the same grid).
-    let mut order: Vec<usize> = (0..selected.len())
-        .filter(|&k| same_as[k].is_none())
-        .collect();
-    let measured = previous_wall_times(&results, fidelity);
-    let size = |k: usize| -> f64 {
-        let c = selected[k].case.at_fidelity(fidelity);
-        c.grid().map_or(0.0, |g| g.cell_count() as f64) * c.run.end_time
-    };
-    // seconds per (cell × simulated second) over the cases that have a measured time
-    let (t_sum, s_sum) = (0..selected.len())
-        .filter_map(|k| measured.get(&selected[k].case.name).map(|t| (t, size(k))))
-        .fold((0.0, 0.0), |(a, b), (t, s)| (a + t, b + s));
-    let rate = if s_sum > 0.0 { t_sum / s_sum } else { 1.0 };
-    let work = |k: usize| -> f64 {
-        measured
-            .get(&selected[k].case.name)
-            .copied()
-            .unwrap_or_else(|| rate * size(k))
-    };
-    order.sort_by(|&a, &b| work(b).total_cmp(&work(a)));
-    let queue = Mutex::new(order.into_iter());
+    let order = longest_first(&selected, &same_as, &results, fidelity);
     let stop = signals::stop_on_signals(
         "sweep",
         "the running cases stop after their step with a checkpoint; run the sweep again to \
          continue them",
     );
-    let outcomes: Mutex<Vec<(usize, Outcome)>> = Mutex::new(Vec::new());
-    std::thread::scope(|scope| {
-        for _ in 0..opts.jobs.max(1) {
-            scope.spawn(|| loop {
-                if stop.load(Ordering::SeqCst) {
-                    break;
-                }
-                let Some(k) = queue.lock().expect("no poisoned lock").next() else {
-                    break;
-                };
-                let r = selected[k];
-                let bar = progress.add(ProgressBar::new(1000));
-                bar.set_style(style.clone());
-                bar.set_prefix(r.case.name.clone());
-                let outcome = run_one(r, fidelity, root, &bar, &stop);
-                outcomes
-                    .lock()
-                    .expect("no poisoned lock")
-                    .push((k, outcome));
-            });
-        }
-    });
-    let mut outcomes = outcomes.into_inner().expect("no poisoned lock");
+    let mut outcomes = run_in_parallel(root, &selected, order, fidelity, opts.jobs, &stop);
     for (k, original) in same_as.iter().enumerate() {
         let Some(original) = *original else {
             continue;
@@ -490,8 +413,7 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
 
     let described = described_speeds(&root.join("cases").join("flume").join("gates.csv"));
     let mut rows = Vec::new();
-    let (mut ran, mut skipped, mut copied, mut unsupported, mut failed) = (0, 0, 0, 0, 0);
-    let mut interrupted = 0;
+    let mut tally = Tally::default();
     for (k, outcome) in &outcomes {
         let name = &selected[*k].case.name;
         let flow = match outcome {
@@ -501,35 +423,18 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
             _ => FlowMetrics::default(),
         };
         rows.push(csv_row(name, fidelity, outcome, &flow));
-        match outcome {
-            Outcome::Done(s) => {
-                ran += 1;
-                println!(
-                    "  {name:<34} {:?}, {} steps, {:.1} s wall",
-                    s.status, s.steps, s.wall_time
-                );
-            }
-            Outcome::Skipped(_) => skipped += 1,
-            Outcome::Copied(_, from) => {
-                copied += 1;
-                println!("  {name:<34} the same case as {from}: copied");
-            }
-            Outcome::Unsupported(_) => unsupported += 1,
-            Outcome::Failed(why) => {
-                failed += 1;
-                println!("  {name:<34} FAILED: {why}");
-            }
-            Outcome::Interrupted(s) => {
-                interrupted += 1;
-                println!(
-                    "  {name:<34} interrupted at t = {} s with a checkpoint",
-                    s.simulated_time
-                );
-            }
-        }
+        tally.count(name, outcome);
     }
     let order: Vec<&str> = runs.iter().map(|r| r.case.name.as_str()).collect();
     let total = summary::write_merged(&results, HEADER, &rows, &order, summary::LOCK_TIMEOUT)?;
+    let Tally {
+        ran,
+        skipped,
+        copied,
+        unsupported,
+        failed,
+        interrupted,
+    } = tally;
     println!(
         "ran {ran}, copied {copied} (repeats of a run), skipped {skipped} (finished earlier), \
          unsupported {unsupported}, failed {failed} in {:.1} s; {} row(s) merged into {} ({total} \
@@ -555,6 +460,165 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
         );
     }
     Ok(())
+}
+
+/// Prints the selection: a header line, one line per flow case (grid, end time, file) and
+/// per analytic family, and the total cell count.
+fn list_selection(
+    root: &Path,
+    selected: &[&SourcedCase],
+    matrix_size: usize,
+    analytic: &[(String, PathBuf)],
+    opts: &SweepOptions,
+) -> Result<()> {
+    let fidelity = opts.fidelity;
+    println!(
+        "case matrix at fidelity `{fidelity}`: {} of {} flow case(s){}, {} analytic famil{}",
+        selected.len(),
+        matrix_size,
+        opts.shard
+            .map_or(String::new(), |(i, n)| format!(" (shard {i}/{n})")),
+        analytic.len(),
+        if analytic.len() == 1 { "y" } else { "ies" }
+    );
+    let mut cells = 0usize;
+    for r in selected {
+        let c = r.case.at_fidelity(fidelity);
+        let g = c.grid()?;
+        cells += g.cell_count();
+        println!(
+            "  {:<34} {:>5} x {:<4} to {:>6.3} s   {}",
+            c.name,
+            g.nx(),
+            g.ny(),
+            c.run.end_time,
+            r.file.strip_prefix(root).unwrap_or(&r.file).display()
+        );
+    }
+    for (name, f) in analytic {
+        println!(
+            "  {name:<34} closed form: `cargo xtask report analytic`   {}",
+            f.strip_prefix(root).unwrap_or(f).display()
+        );
+    }
+    println!("total cells over the selection: {cells}");
+    Ok(())
+}
+
+/// The runs to compute (not repeats, `same_as[k]` none), longest first, each worker taking
+/// the next: the sweep's duration then is not set by a long run started last. The length is
+/// the wall time of the case's row in the last results/summary.csv at this fidelity, else
+/// cells × simulated time scaled by the rows that have both (stiff runs take 10× a normal
+/// one on the same grid).
+fn longest_first(
+    selected: &[&SourcedCase],
+    same_as: &[Option<usize>],
+    results: &Path,
+    fidelity: Fidelity,
+) -> Vec<usize> {
+    let mut order: Vec<usize> = (0..selected.len())
+        .filter(|&k| same_as[k].is_none())
+        .collect();
+    let measured = previous_wall_times(results, fidelity);
+    let size = |k: usize| -> f64 {
+        let c = selected[k].case.at_fidelity(fidelity);
+        c.grid().map_or(0.0, |g| g.cell_count() as f64) * c.run.end_time
+    };
+    // seconds per (cell × simulated second) over the cases that have a measured time
+    let (t_sum, s_sum) = (0..selected.len())
+        .filter_map(|k| measured.get(&selected[k].case.name).map(|t| (t, size(k))))
+        .fold((0.0, 0.0), |(a, b), (t, s)| (a + t, b + s));
+    let rate = if s_sum > 0.0 { t_sum / s_sum } else { 1.0 };
+    let work = |k: usize| -> f64 {
+        measured
+            .get(&selected[k].case.name)
+            .copied()
+            .unwrap_or_else(|| rate * size(k))
+    };
+    order.sort_by(|&a, &b| work(b).total_cmp(&work(a)));
+    order
+}
+
+/// Runs the selected cases `order` names on `jobs` workers, each with a progress bar, until
+/// the queue is empty or a signal stops the sweep; the outcomes in the order they ended.
+fn run_in_parallel(
+    root: &Path,
+    selected: &[&SourcedCase],
+    order: Vec<usize>,
+    fidelity: Fidelity,
+    jobs: usize,
+    stop: &Arc<AtomicBool>,
+) -> Vec<(usize, Outcome)> {
+    let progress = MultiProgress::new();
+    let style = progress_style();
+    let queue = Mutex::new(order.into_iter());
+    let outcomes: Mutex<Vec<(usize, Outcome)>> = Mutex::new(Vec::new());
+    std::thread::scope(|scope| {
+        for _ in 0..jobs.max(1) {
+            scope.spawn(|| loop {
+                if stop.load(Ordering::SeqCst) {
+                    break;
+                }
+                let Some(k) = queue.lock().expect("no poisoned lock").next() else {
+                    break;
+                };
+                let r = selected[k];
+                let bar = progress.add(ProgressBar::new(1000));
+                bar.set_style(style.clone());
+                bar.set_prefix(r.case.name.clone());
+                let outcome = run_one(r, fidelity, root, &bar, stop);
+                outcomes
+                    .lock()
+                    .expect("no poisoned lock")
+                    .push((k, outcome));
+            });
+        }
+    });
+    outcomes.into_inner().expect("no poisoned lock")
+}
+
+/// How the runs of a sweep ended, counted.
+#[derive(Default)]
+struct Tally {
+    ran: usize,
+    skipped: usize,
+    copied: usize,
+    unsupported: usize,
+    failed: usize,
+    interrupted: usize,
+}
+
+impl Tally {
+    /// Counts `outcome` of run `name`, printing a line for a run made now, a copy, a failure
+    /// or an interruption.
+    fn count(&mut self, name: &str, outcome: &Outcome) {
+        match outcome {
+            Outcome::Done(s) => {
+                self.ran += 1;
+                println!(
+                    "  {name:<34} {:?}, {} steps, {:.1} s wall",
+                    s.status, s.steps, s.wall_time
+                );
+            }
+            Outcome::Skipped(_) => self.skipped += 1,
+            Outcome::Copied(_, from) => {
+                self.copied += 1;
+                println!("  {name:<34} the same case as {from}: copied");
+            }
+            Outcome::Unsupported(_) => self.unsupported += 1,
+            Outcome::Failed(why) => {
+                self.failed += 1;
+                println!("  {name:<34} FAILED: {why}");
+            }
+            Outcome::Interrupted(s) => {
+                self.interrupted += 1;
+                println!(
+                    "  {name:<34} interrupted at t = {} s with a checkpoint",
+                    s.simulated_time
+                );
+            }
+        }
+    }
 }
 
 #[cfg(test)]

@@ -29,6 +29,8 @@ use runout_solver::verify::{
 };
 use runout_solver::{Scheme, SinglePhase};
 
+use crate::figure::legend;
+
 /// Cells per side of the acceptance cavity (Ghia's grid has 129 lines).
 const CAVITY_CELLS: usize = 129;
 /// Largest centreline deviation allowed at 129 × 129 (issue 6): 1% of the lid speed.
@@ -620,13 +622,7 @@ fn draw(path: &Path, title: &str, y_label: &str, points: &[Point]) -> Result<()>
             }))
             .map_err(plot_error)?;
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperRight)
-        .background_style(WHITE.mix(0.8))
-        .border_style(BLACK)
-        .draw()
-        .map_err(plot_error)?;
+    legend(&mut chart, SeriesLabelPosition::UpperRight).map_err(plot_error)?;
     area.present().map_err(plot_error)?;
     Ok(())
 }

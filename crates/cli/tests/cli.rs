@@ -160,7 +160,11 @@ fn run_solves_the_mfix_slide_with_its_johnson_jackson_floor_at_smoke_fidelity() 
         .and_then(|l| l.split(',').nth(1))
         .and_then(|h| h.parse().ok())
         .unwrap();
-    assert_eq!(json["flow"]["h_wu_probe"].as_f64(), Some(last_h_u), "{json}");
+    assert_eq!(
+        json["flow"]["h_wu_probe"].as_f64(),
+        Some(last_h_u),
+        "{json}"
+    );
     let o = runout(&["post", std::env::temp_dir().to_str().unwrap()]);
     assert!(!o.status.success());
     assert!(text(&o).contains("not a run folder"), "{}", text(&o));
