@@ -279,11 +279,14 @@ fn copy_run(runs: &Path, from: &str, to: &str, fidelity: Fidelity) -> Outcome {
 /// what `resolved` has. The fidelity presets are not compared: a resolved case already
 /// carries its fidelity's grid and end time, and runs as it is. The solver version that
 /// made the run is not compared either.
+///
+/// Both sides are compared in the start clock ([`Case::with_start_clock`]): a run writes its
+/// case that way, so a case whose times count from the impact matches its own run.
 pub fn finished_run(dir: &Path, resolved: &Case) -> Option<RunSummary> {
     let mut stored: Case =
         ron::from_str(&std::fs::read_to_string(dir.join("resolved.ron")).ok()?).ok()?;
     stored.fidelity = resolved.fidelity.clone();
-    if &stored != resolved {
+    if stored.with_start_clock() != resolved.clone().with_start_clock() {
         return None;
     }
     serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).ok()?).ok()
@@ -625,6 +628,50 @@ impl Tally {
 mod tests {
     use super::*;
     use runout_output::{DtStats, RunStatus};
+
+    #[test]
+    fn a_run_of_a_case_timed_from_the_impact_is_found_again() {
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+        let case = runout_case::load_case(&root.join("cases/sensitivity/base.ron")).unwrap();
+        // a caller that sets its own end time on the impact clock (as error-time does)
+        let mut on_impact = case.clone();
+        on_impact.run.end_time = 0.2;
+        let dir = std::env::temp_dir().join(format!("runout-finished-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        // the run writes its case in the start clock
+        let written = ron::ser::to_string(&on_impact.clone().with_start_clock()).unwrap();
+        std::fs::write(dir.join("resolved.ron"), written).unwrap();
+        let summary = RunSummary {
+            case: case.name.clone(),
+            fidelity: "smoke".into(),
+            cells: (1, 1),
+            simulated_time: 0.2,
+            wall_time: 1.0,
+            steps: 1,
+            rejected_steps: 0,
+            outer_iterations: 1,
+            dt: DtStats {
+                min: 1e-3,
+                max: 1e-3,
+                mean: 1e-3,
+            },
+            solids_mass_change: 0.0,
+            max_mass_imbalance: 0.0,
+            max_eps_s: 0.6,
+            status: RunStatus::Completed,
+            profile: Vec::new(),
+            linear_iterations: Vec::new(),
+        };
+        summary.write_json(&dir.join("summary.json")).unwrap();
+        assert!(
+            finished_run(&dir, &on_impact).is_some(),
+            "the impact-clock case matches its start-clock record"
+        );
+        let mut other = on_impact.clone();
+        other.run.end_time = 0.3;
+        assert!(finished_run(&dir, &other).is_none(), "another end time does not");
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 
     fn columns(row: &str) -> usize {
         csv::ReaderBuilder::new()
