@@ -231,7 +231,8 @@ fn fidelity_size(case: &runout_case::Case, f: Fidelity, available: Option<u64>) 
                 s.cells,
                 s.unknowns,
                 runout_case::format_bytes(s.memory_bytes),
-                runout_mesh::short(c.run.end_time)
+                // 0.1 ms: the end time of a case timed from the impact carries the tilt time
+                (c.run.end_time * 1e4).round() / 1e4
             )
         }
         Err(e) => format!("{f} grid error: {e}"),
