@@ -158,24 +158,9 @@ pub fn at_time(rows: &[(f64, f64, f64)], t: f64) -> Option<(f64, f64)> {
 fn fields_near(dir: &Path, t: f64) -> Result<(f64, String)> {
     let pvd = std::fs::read_to_string(dir.join("fields.pvd"))
         .with_context(|| format!("reading {}/fields.pvd", dir.display()))?;
-    let mut best: Option<(f64, String)> = None;
-    for line in pvd.lines().filter(|l| l.contains("<DataSet")) {
-        let attr = |key: &str| -> Option<String> {
-            let s = line.find(&format!("{key}=\""))? + key.len() + 2;
-            let e = s + line[s..].find('"')?;
-            Some(line[s..e].to_string())
-        };
-        let (Some(time), Some(file)) = (attr("timestep"), attr("file")) else {
-            continue;
-        };
-        let time: f64 = time.parse()?;
-        if best
-            .as_ref()
-            .is_none_or(|(b, _)| (time - t).abs() < (b - t).abs())
-        {
-            best = Some((time, file));
-        }
-    }
+    let best = runout_output::read_pvd(&pvd)
+        .into_iter()
+        .min_by(|a, b| (a.0 - t).abs().total_cmp(&(b.0 - t).abs()));
     let (time, file) = best.context("no fields in fields.pvd")?;
     let text = std::fs::read_to_string(dir.join(&file))
         .with_context(|| format!("reading {}", dir.join(&file).display()))?;
@@ -189,16 +174,7 @@ fn floor_row(dir: &Path, t: f64) -> Result<(f64, f64, f64, f64)> {
     let eps = read_vtr_array(&text, "eps_s").context("eps_s missing")?;
     let u = read_vtr_array(&text, "u_s").context("u_s missing")?;
     let theta = read_vtr_array(&text, "theta").context("theta missing")?;
-    let extent = text
-        .split("WholeExtent=\"")
-        .nth(1)
-        .and_then(|s| s.split('"').next())
-        .context("WholeExtent missing")?;
-    let nx: usize = extent
-        .split_whitespace()
-        .nth(1)
-        .context("bad WholeExtent")?
-        .parse()?;
+    let (nx, _) = runout_output::read_vtr_cells(&text).context("WholeExtent missing")?;
     // u_s is written with three components per cell (VTK vectors) or one
     let stride = u.len() / eps.len();
     let (mut w, mut su, mut st, mut umax) = (0.0, 0.0, 0.0, 0.0_f64);

@@ -15,10 +15,8 @@ pub(super) fn last_fields(run_dir: &Path) -> Result<(Vec<f64>, Vec<f64>)> {
     let pvd_path = run_dir.join("fields.pvd");
     let pvd = std::fs::read_to_string(&pvd_path)
         .with_context(|| format!("reading {}", pvd_path.display()))?;
-    let last = pvd
-        .rsplit("file=\"")
-        .next()
-        .and_then(|s| s.split('"').next())
+    let (_, last) = runout_output::read_pvd(&pvd)
+        .pop()
         .context("fields.pvd lists no file")?;
     let path = run_dir.join(last);
     let xml =
