@@ -8,7 +8,9 @@
 //!     vary: [Specularity([1.0, 0.1, 0.01])], // Cartesian product of all lists
 //! )
 //! ```
-//! expands to `S-JJ-phi_phi=1`, `S-JJ-phi_phi=0.1`, `S-JJ-phi_phi=0.01`.
+//! expands to `S-JJ-phi_phi=1`, `S-JJ-phi_phi=0.1`, `S-JJ-phi_phi=0.01`. A sweep may also
+//! give every case side walls (`sidewalls: Some((width: 0.30, solids: …, gas: NoSlip))`,
+//! docs/model.md §8), set before the `set` parameters.
 
 use runout_mesh::short;
 use serde::{Deserialize, Serialize};
