@@ -78,16 +78,16 @@ fn the_solids_condition_is_validated_as_the_floors() {
             "[0, 1]",
         ],
     );
-    let t = with_sidewalls(&format!(
+    let t = with_sidewalls(
         "Some((width: 0.3, solids: PartialSlip(h_u: -1.0, h_theta: 1.0, theta_w: 0.01, c: 0.1), \
-         gas: NoSlip))"
-    ));
+         gas: NoSlip))",
+    );
     rejected("ps.ron", &t, &["sidewalls.solids.h_u = -1"]);
     // the side walls are at rest
-    let t = with_sidewalls(&format!(
+    let t = with_sidewalls(
         "Some((width: 0.3, solids: Jenkins(wall_restitution: 0.7, wall_friction_angle: 11.0, \
-         u_w: 1.0), gas: NoSlip))"
-    ));
+         u_w: 1.0), gas: NoSlip))",
+    );
     rejected(
         "moving.ron",
         &t,

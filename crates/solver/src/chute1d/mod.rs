@@ -428,7 +428,7 @@ fn check_parameters(p: &ChuteParams) -> Result<(), Chute1dError> {
         return invalid("grid cells", p.grid.len() as f64, "[2, inf)");
     }
     if let Some(w) = p.sidewalls {
-        if !(w.width > 0.0) {
+        if w.width.is_nan() || w.width <= 0.0 {
             return invalid("sidewalls.width", w.width, "(0, inf]");
         }
     }
