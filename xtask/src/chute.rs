@@ -2,7 +2,7 @@
 //! (`runout_solver::chute_check`). The 2-D two-fluid solver on a periodic column, marched to
 //! a steady state, against the 1-D steady boundary-value solve (`chute1d`) of the same
 //! equations on the same 80-cell y grid, at 15°, 25° (docs/chute1d.md's reference case) and
-//! 35°. Passes when every run is steady and εs, u_s and θ agree within 2 % of their largest
+//! 35°, and at 25° with side walls (docs/model.md §8). Passes when every run is steady and εs, u_s and θ agree within 2 % of their largest
 //! value. Writes docs/chute.md and docs/chute/profiles-25deg.svg.
 
 use std::fmt::Write as _;
@@ -10,10 +10,16 @@ use std::path::Path;
 
 use anyhow::{bail, Context, Result};
 use plotters::prelude::*;
-use runout_solver::chute_check::{run, ChuteCheck, ChuteCheckSetup};
+use runout_solver::chute_check::{run, ChuteCheck, ChuteCheckSetup, SIDEWALL_WIDTH};
 
-/// Slopes of the check [deg].
-const SLOPES: [f64; 3] = [15.0, 25.0, 35.0];
+/// The runs of the check: slope [deg] and side-wall width [m] (docs/model.md §8), none for
+/// a plane flow.
+const RUNS: [(f64, Option<f64>); 4] = [
+    (15.0, None),
+    (25.0, None),
+    (35.0, None),
+    (25.0, Some(SIDEWALL_WIDTH)),
+];
 /// Acceptance: largest difference relative to the largest value (issue 7).
 const TOLERANCE: f64 = 0.02;
 /// SVG size [px].
@@ -41,29 +47,42 @@ pub fn verify(root: &Path) -> Result<()> {
          force on the solids relative to their weight along the slope, and the buoyancy \
          ρ_g/ρ_s = 5e-7.\n\n\
          Errors are max over cells of |2-D − 1-D| divided by the largest 1-D value; θ also \
-         pointwise (|θ/θ_ref − 1|, θ spans three decades across the layer).\n"
+         pointwise (|θ/θ_ref − 1|, θ spans three decades across the layer). The last row \
+         adds side walls with the floor's condition (docs/model.md §8) to both solvers; its \
+         \"u_s change\" is the largest change of the 1-D u_s from the plane 25° reference \
+         relative to that reference's largest u_s, so the walls' effect is material.\n"
     )?;
     writeln!(
         md,
-        "| slope | εs error | u_s error | θ error (of max) | θ error (pointwise) | floor slip 1-D [m/s] | steps (rejected) | simulated [s] | final rate [s⁻¹] | mass change | drag/weight | wall [s] | verdict |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|---|---|"
+        "| slope | side walls | εs error | u_s error | θ error (of max) | θ error (pointwise) | floor slip 1-D [m/s] | u_s change | steps (rejected) | simulated [s] | final rate [s⁻¹] | mass change | drag/weight | wall [s] | verdict |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
     )?;
     let mut failures = Vec::new();
     let mut at_25 = None;
-    for slope in SLOPES {
-        eprintln!("chute at {slope}°…");
-        let setup = ChuteCheckSetup {
+    for (slope, sidewalls) in RUNS {
+        eprintln!("chute at {slope}°, side walls {sidewalls:?}…");
+        let mut setup = ChuteCheckSetup {
             slope_deg: slope,
             ..ChuteCheckSetup::default()
         };
+        if let Some(width) = sidewalls {
+            setup = setup.with_floor_sidewalls(width);
+        }
         let c = run(&setup).with_context(|| format!("chute check at {slope}°"))?;
+        let (walls, change) = match (sidewalls, &at_25) {
+            (Some(width), Some(plane)) => (
+                format!("W = {width} m, floor's JJ"),
+                format!("{:.2}", relative_change(&c, plane)),
+            ),
+            _ => ("none".to_string(), "–".to_string()),
+        };
         let ok = c.steady
             && c.eps_error < TOLERANCE
             && c.velocity_error < TOLERANCE
             && c.theta_error < TOLERANCE;
         if !ok {
             failures.push(format!(
-                "{slope}°: steady {}, errors eps {:.2e}, u {:.2e}, theta {:.2e}",
+                "{slope}° (side walls {sidewalls:?}): steady {}, errors eps {:.2e}, u {:.2e}, theta {:.2e}",
                 c.steady, c.eps_error, c.velocity_error, c.theta_error
             ));
         }
@@ -73,7 +92,7 @@ pub fn verify(root: &Path) -> Result<()> {
         );
         writeln!(
             md,
-            "| {slope}° | {:.1e} | {:.1e} | {:.1e} | {:.1e} | {:.3} | {} ({}) | {:.2} | {:.1e} | {:.1e} | {:.1e} | {:.1} | {} |",
+            "| {slope}° | {walls} | {:.1e} | {:.1e} | {:.1e} | {:.1e} | {:.3} | {change} | {} ({}) | {:.2} | {:.1e} | {:.1e} | {:.1e} | {:.1} | {} |",
             c.eps_error,
             c.velocity_error,
             c.theta_error,
@@ -88,7 +107,7 @@ pub fn verify(root: &Path) -> Result<()> {
             c.wall_time,
             if ok { "PASS" } else { "FAIL" }
         )?;
-        if slope == 25.0 {
+        if slope == 25.0 && sidewalls.is_none() {
             at_25 = Some(c);
         }
     }
@@ -122,6 +141,23 @@ pub fn verify(root: &Path) -> Result<()> {
         bail!("chute check failed:\n  {}", failures.join("\n  "));
     }
     Ok(())
+}
+
+/// Largest change of the 1-D u_s of `c` from that of `plane`, relative to the plane's
+/// largest u_s.
+fn relative_change(c: &ChuteCheck, plane: &ChuteCheck) -> f64 {
+    let largest = plane
+        .reference
+        .u_s
+        .iter()
+        .fold(0.0_f64, |m, u| m.max(u.abs()));
+    c.reference
+        .u_s
+        .iter()
+        .zip(&plane.reference.u_s)
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max)
+        / largest
 }
 
 fn plot_error<E: std::fmt::Debug>(e: E) -> anyhow::Error {

@@ -32,8 +32,8 @@ use runout_output::RunStatus;
 use crate::metrics::{mse_vs_described, PROFILE_TIME};
 use data::{CaseData, Cases, Profile};
 use paper::{
-    reading, ProfileFigure, CUSHION_LIMIT_H_U, FIELD_FIGURES, FLUME, MFIX_CASE, MFIX_SLIDE,
-    PAPER_NUMBERS, PROBE_CURVES, PROFILE_FIGURES,
+    reading, ProfileFigure, CUSHION_LIMIT_H_U, FIELD_FIGURES, FLUME, FLUME_SIDEWALLS, MFIX_CASE,
+    MFIX_SLIDE, PAPER_NUMBERS, PROBE_CURVES, PROFILE_FIGURES,
 };
 use plots::{Mark, Panel, Series};
 
@@ -510,7 +510,7 @@ fn flume_table(
             .collect::<Vec<_>>()
             .join(" | ")
     );
-    for (case, _, paper_mse) in FLUME {
+    for (case, _, paper_mse) in FLUME.iter().chain(FLUME_SIDEWALLS) {
         let d = cases.get(case);
         let (fidelity, speeds, mse) = match d.gate_pairs() {
             Ok(pairs) => {
@@ -678,7 +678,9 @@ pub fn write_report(paths: &ReportPaths, requested: Option<Fidelity>) -> Result<
          paper *describes* (cases/flume/gates.csv: ~4.0 m/s at L2–L6 and the last peak of \
          5.4 m/s at L7; L1 lies in the initial rise and has none), over the gates both have; \
          the paper's MSEs are MFIX's against the *measured* speeds, which are not in its text, \
-         so the two columns are not the same error.\n\n",
+         so the two columns are not the same error. The `FSW-` rows are the same cases with \
+         the channel's side walls (0.30 m apart, the floor's solids condition, gas no-slip; \
+         docs/model.md §8), which the paper's 2-D runs and the `F-` rows leave out.\n\n",
     );
     flume_table(&mut md, &cases, &gates, &described);
 

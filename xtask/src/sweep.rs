@@ -669,7 +669,10 @@ mod tests {
         );
         let mut other = on_impact.clone();
         other.run.end_time = 0.3;
-        assert!(finished_run(&dir, &other).is_none(), "another end time does not");
+        assert!(
+            finished_run(&dir, &other).is_none(),
+            "another end time does not"
+        );
         let _ = std::fs::remove_dir_all(&dir);
     }
 

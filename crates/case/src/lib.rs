@@ -17,6 +17,7 @@ mod name;
 mod read;
 mod ron_error;
 mod schema;
+mod sidewalls;
 mod size;
 mod sweep;
 mod sweep_base;

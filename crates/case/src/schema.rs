@@ -8,6 +8,8 @@ pub use runout_closures::{Drag, FrictionModel, RadialDistribution};
 use runout_mesh::{short, AxisSpec, Side, Sides};
 use serde::{Deserialize, Serialize};
 
+pub use crate::sidewalls::{GasSidewall, Sidewalls};
+
 /// One simulation case (a `Case(...)` file).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -31,6 +33,10 @@ pub struct Case {
     pub models: Models,
     /// Boundary condition of each side; the floor is `south`.
     pub boundaries: Sides<Boundary>,
+    /// Two side walls in the plane of the slice, a channel width apart, as a width-averaged
+    /// friction (docs/model.md §8); none (the default): a plane 2-D flow.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sidewalls: Option<Sidewalls>,
     /// Initial state.
     pub initial: Initial,
     /// Gravity and its schedule.

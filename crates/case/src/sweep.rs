@@ -8,13 +8,15 @@
 //!     vary: [Specularity([1.0, 0.1, 0.01])], // Cartesian product of all lists
 //! )
 //! ```
-//! expands to `S-JJ-phi_phi=1`, `S-JJ-phi_phi=0.1`, `S-JJ-phi_phi=0.01`.
+//! expands to `S-JJ-phi_phi=1`, `S-JJ-phi_phi=0.1`, `S-JJ-phi_phi=0.01`. A sweep may also
+//! give every case side walls (`sidewalls: Some((width: 0.30, solids: …, gas: NoSlip))`,
+//! docs/model.md §8), set before the `set` parameters.
 
 use runout_mesh::short;
 use serde::{Deserialize, Serialize};
 
 use crate::limits::MAX_SWEEP_CASES;
-use crate::schema::{Boundary, Case, Clock, Gravity, SolidsWall};
+use crate::schema::{Boundary, Case, Clock, Gravity, Sidewalls, SolidsWall};
 
 /// A sweep file (`Sweep(...)`).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -33,6 +35,10 @@ pub struct Sweep {
     /// Parameters varied; the sweep is the Cartesian product of their lists.
     #[serde(default)]
     pub vary: Vec<Param>,
+    /// Side walls for every case of the sweep (docs/model.md §8), set before `set`; none:
+    /// the base case's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sidewalls: Option<Sidewalls>,
     /// A study apart from the paper's matrix (e.g. `"release"`): its cases run only under
     /// `cargo xtask sweep --study NAME`, never in the main sweep or its report.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -74,7 +80,7 @@ impl ReleaseBlock {
 pub enum Param {
     /// particle diameter of every solids phase [m]
     Diameter(Vec<f64>),
-    /// specularity of every Johnson–Jackson wall [-]
+    /// specularity of every Johnson–Jackson wall, the side walls' included [-]
     Specularity(Vec<f64>),
     /// h_w^u of every user partial-slip solids wall [m⁻¹]
     PartialSlipHu(Vec<f64>),
@@ -84,7 +90,7 @@ pub enum Param {
     PartialSlipC(Vec<f64>),
     /// slope of the gravity schedule [deg]
     Slope(Vec<f64>),
-    /// the solids condition of every wall side
+    /// the solids condition of every wall side (not of the side walls: [`Sweep::sidewalls`])
     SolidsWalls(Vec<SolidsWall>),
     /// the release block (the case's one initial region; its solids state is kept)
     Release(Vec<ReleaseBlock>),
@@ -211,10 +217,16 @@ impl Param {
                 }
                 Ok(())
             }
-            Param::SolidsWalls(v) => on_walls(case, "any wall side", &mut |w| {
-                *w = v[k].clone();
-                true
-            }),
+            Param::SolidsWalls(v) => {
+                // the four sides only: the side walls keep their own condition
+                let sidewalls = case.sidewalls.take();
+                let applied = on_walls(case, "any wall side", &mut |w| {
+                    *w = v[k].clone();
+                    true
+                });
+                case.sidewalls = sidewalls;
+                applied
+            }
             Param::Release(v) => {
                 let n = case.initial.regions.len();
                 let [region] = case.initial.regions.as_mut_slice() else {
@@ -240,8 +252,8 @@ impl Param {
     }
 }
 
-/// Calls `f` on the solids condition of every wall side; `f` says whether the wall had
-/// the field it sets. An error if no wall had it.
+/// Calls `f` on the solids condition of every wall side and of the side walls; `f` says
+/// whether the wall had the field it sets. An error if no wall had it.
 fn for_each_solids_wall(
     case: &mut Case,
     what: &str,
@@ -256,6 +268,11 @@ fn for_each_solids_wall(
             }
         }
     }
+    if let Some(sidewalls) = &mut case.sidewalls {
+        if f(&mut sidewalls.solids) {
+            hits += 1;
+        }
+    }
     if hits == 0 {
         Err(format!("the base case has no wall with {what}"))
     } else {
@@ -263,10 +280,13 @@ fn for_each_solids_wall(
     }
 }
 
-/// `base` with the sweep's `set` parameters applied (what every expanded case starts
+/// `base` with the sweep's side walls and `set` parameters applied (what every expanded case starts
 /// from). Errors are (field path, message).
 pub fn apply_set(sweep: &Sweep, base: &Case) -> Result<Case, (String, String)> {
     let mut fixed = base.clone();
+    if let Some(sidewalls) = &sweep.sidewalls {
+        fixed.sidewalls = Some(sidewalls.clone());
+    }
     for (k, p) in sweep.set.iter().enumerate() {
         if p.len() != 1 {
             return Err((

@@ -10,6 +10,7 @@ use crate::checker::{Checker, FieldError, B};
 use crate::limits::*;
 use crate::name::name_error;
 use crate::schema::*;
+use crate::sidewalls::check_sidewalls;
 use crate::validate_grid::check_grids;
 
 /// Validates a case; `Ok` means every field is in range and plausible, and every
@@ -84,6 +85,10 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
             b,
             case.gas.is_some(),
         );
+    }
+
+    if let Some(sidewalls) = &case.sidewalls {
+        check_sidewalls(&mut c, sidewalls, check_solids_wall);
     }
 
     // Initial state.
@@ -517,65 +522,69 @@ fn check_boundary(c: &mut Checker, p: &str, b: &Boundary, has_gas: bool) {
                 GasWall::Moving { u_w } => c.band(format!("{p}.gas.u_w"), *u_w, &VELOCITY),
                 GasWall::NoSlip | GasWall::FreeSlip => {}
             }
-            let q = format!("{p}.solids");
-            let wall_angle = |c: &mut Checker, v: f64| {
-                c.range(
-                    format!("{q}.wall_friction_angle"),
-                    v,
-                    B::Closed(0.0),
-                    B::Open(90.0),
-                )
-            };
-            let wall_velocity = |c: &mut Checker, v: f64| c.band(format!("{q}.u_w"), v, &VELOCITY);
-            match solids {
-                SolidsWall::NoSlip | SolidsWall::FreeSlip => {}
-                SolidsWall::PartialSlip {
-                    h_u,
-                    u_w,
-                    h_theta,
-                    theta_w,
-                    c: flux,
-                } => {
-                    c.band(format!("{q}.h_u"), *h_u, &SLIP_COEFFICIENT);
-                    wall_velocity(c, *u_w);
-                    c.band(format!("{q}.h_theta"), *h_theta, &SLIP_COEFFICIENT);
-                    c.band(format!("{q}.theta_w"), *theta_w, &THETA);
-                    c.band(format!("{q}.c"), *flux, &THETA_FLUX);
-                }
-                SolidsWall::JohnsonJackson {
-                    specularity,
-                    wall_restitution,
-                    wall_friction_angle,
-                    u_w,
-                } => {
-                    c.unit(format!("{q}.specularity"), *specularity);
-                    c.unit(format!("{q}.wall_restitution"), *wall_restitution);
-                    wall_angle(c, *wall_friction_angle);
-                    wall_velocity(c, *u_w);
-                }
-                SolidsWall::RevisitedJohnsonJackson {
-                    wall_restitution,
-                    wall_friction_angle,
-                    phi0,
-                    u_w,
-                } => {
-                    c.unit(format!("{q}.wall_restitution"), *wall_restitution);
-                    wall_angle(c, *wall_friction_angle);
-                    if let Some(phi0) = phi0 {
-                        c.range(format!("{q}.phi0"), *phi0, B::Open(0.0), B::Closed(1.0));
-                    }
-                    wall_velocity(c, *u_w);
-                }
-                SolidsWall::Jenkins {
-                    wall_restitution,
-                    wall_friction_angle,
-                    u_w,
-                } => {
-                    c.unit(format!("{q}.wall_restitution"), *wall_restitution);
-                    wall_angle(c, *wall_friction_angle);
-                    wall_velocity(c, *u_w);
-                }
+            check_solids_wall(c, &format!("{p}.solids"), solids);
+        }
+    }
+}
+
+/// A solids wall condition's parameters (a side's or the side walls'), fields under `q`.
+fn check_solids_wall(c: &mut Checker, q: &str, solids: &SolidsWall) {
+    let wall_angle = |c: &mut Checker, v: f64| {
+        c.range(
+            format!("{q}.wall_friction_angle"),
+            v,
+            B::Closed(0.0),
+            B::Open(90.0),
+        )
+    };
+    let wall_velocity = |c: &mut Checker, v: f64| c.band(format!("{q}.u_w"), v, &VELOCITY);
+    match solids {
+        SolidsWall::NoSlip | SolidsWall::FreeSlip => {}
+        SolidsWall::PartialSlip {
+            h_u,
+            u_w,
+            h_theta,
+            theta_w,
+            c: flux,
+        } => {
+            c.band(format!("{q}.h_u"), *h_u, &SLIP_COEFFICIENT);
+            wall_velocity(c, *u_w);
+            c.band(format!("{q}.h_theta"), *h_theta, &SLIP_COEFFICIENT);
+            c.band(format!("{q}.theta_w"), *theta_w, &THETA);
+            c.band(format!("{q}.c"), *flux, &THETA_FLUX);
+        }
+        SolidsWall::JohnsonJackson {
+            specularity,
+            wall_restitution,
+            wall_friction_angle,
+            u_w,
+        } => {
+            c.unit(format!("{q}.specularity"), *specularity);
+            c.unit(format!("{q}.wall_restitution"), *wall_restitution);
+            wall_angle(c, *wall_friction_angle);
+            wall_velocity(c, *u_w);
+        }
+        SolidsWall::RevisitedJohnsonJackson {
+            wall_restitution,
+            wall_friction_angle,
+            phi0,
+            u_w,
+        } => {
+            c.unit(format!("{q}.wall_restitution"), *wall_restitution);
+            wall_angle(c, *wall_friction_angle);
+            if let Some(phi0) = phi0 {
+                c.range(format!("{q}.phi0"), *phi0, B::Open(0.0), B::Closed(1.0));
             }
+            wall_velocity(c, *u_w);
+        }
+        SolidsWall::Jenkins {
+            wall_restitution,
+            wall_friction_angle,
+            u_w,
+        } => {
+            c.unit(format!("{q}.wall_restitution"), *wall_restitution);
+            wall_angle(c, *wall_friction_angle);
+            wall_velocity(c, *u_w);
         }
     }
 }

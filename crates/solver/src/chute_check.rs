@@ -22,10 +22,12 @@ use runout_closures::{ClosureParams, Gas};
 use runout_mesh::{Axis, Grid, Sides};
 use runout_walls::{RobinFace, SolidsWallModel};
 
-use crate::chute1d::{self, ChuteParams, ChuteProfile, SolverSettings, WallTreatment};
+use crate::chute1d::{
+    self, ChuteParams, ChuteProfile, ChuteSidewalls, SolverSettings, WallTreatment,
+};
 use crate::single_phase::{Fluid, SideBc};
 use crate::transport::Scheme;
-use crate::two_fluid::{SolidsSpec, TwoFluid, TwoFluidSettings};
+use crate::two_fluid::{Sidewalls, SolidsSpec, TwoFluid, TwoFluidSettings};
 
 /// What to run.
 #[derive(Clone, Debug)]
@@ -40,6 +42,9 @@ pub struct ChuteCheckSetup {
     pub slope_deg: f64,
     /// floor condition
     pub floor: SolidsWallModel,
+    /// side walls a width apart (docs/model.md §8; the gas slips freely on them); none: a
+    /// plane flow
+    pub sidewalls: Option<ChuteSidewalls>,
     /// ρ_g of the negligible gas [kg m⁻³]
     pub gas_density: f64,
     /// μ_g of the negligible gas [Pa s]
@@ -65,12 +70,31 @@ impl Default for ChuteCheckSetup {
             slope_deg: 25.0,
             floor: SolidsWallModel::johnson_jackson(0.1, 0.7, 11.0, 0.0)
                 .expect("valid JJ parameters"),
+            sidewalls: None,
             gas_density: 1e-3,
             gas_viscosity: 1e-8,
             end_time: 20.0,
             steady_rate: 1e-4,
             dt_max: 2e-2,
             verbose: false,
+        }
+    }
+}
+
+/// Width of the side walls of the check with side walls [m]: narrow enough for them to
+/// carry a large share of the weight along the slope (docs/model.md §8).
+pub const SIDEWALL_WIDTH: f64 = 0.02;
+
+impl ChuteCheckSetup {
+    /// This setup with side walls `width` apart that have the floor's solids condition
+    /// (docs/model.md §8).
+    pub fn with_floor_sidewalls(self, width: f64) -> Self {
+        Self {
+            sidewalls: Some(ChuteSidewalls {
+                width,
+                solids: self.floor,
+            }),
+            ..self
         }
     }
 }
@@ -140,31 +164,45 @@ fn relative_error(values: &[f64], reference: &[f64]) -> f64 {
         / max_abs(reference)
 }
 
-/// Runs the 1-D reference and the 2-D column and compares them.
-pub fn run(setup: &ChuteCheckSetup) -> Result<ChuteCheck, ChuteCheckError> {
-    let axis = Axis::uniform(0.0, setup.height, setup.cells)
-        .map_err(|e| ChuteCheckError::Column(e.to_string()))?;
-    let dry = ClosureParams {
+/// |g| of the check [m s⁻²].
+const GRAVITY: f64 = 9.81;
+
+/// The paper's material, dry (the 1-D reference's closures).
+fn dry_closures() -> ClosureParams {
+    ClosureParams {
         gas: Gas {
             density: 0.0,
             ..Gas::default()
         },
         ..ClosureParams::default()
-    };
-    let g = 9.81;
-    let reference = chute1d::solve(
+    }
+}
+
+/// The 1-D steady reference of a setup (`chute1d`), on its y grid.
+pub fn reference(setup: &ChuteCheckSetup) -> Result<ChuteProfile, ChuteCheckError> {
+    let axis = Axis::uniform(0.0, setup.height, setup.cells)
+        .map_err(|e| ChuteCheckError::Column(e.to_string()))?;
+    Ok(chute1d::solve(
         &ChuteParams {
-            closures: dry,
+            closures: dry_closures(),
             slope_deg: setup.slope_deg,
-            gravity: g,
+            gravity: GRAVITY,
             holdup: setup.holdup,
             floor: setup.floor,
-            grid: axis.clone(),
+            grid: axis,
             wall_treatment: WallTreatment::FluidCell,
+            sidewalls: setup.sidewalls,
         },
         &SolverSettings::default(),
-    )?;
+    )?)
+}
 
+/// Runs the 1-D reference and the 2-D column and compares them.
+pub fn run(setup: &ChuteCheckSetup) -> Result<ChuteCheck, ChuteCheckError> {
+    let reference = reference(setup)?;
+    let axis = Axis::uniform(0.0, setup.height, setup.cells)
+        .map_err(|e| ChuteCheckError::Column(e.to_string()))?;
+    let (dry, g) = (dry_closures(), GRAVITY);
     let ny = setup.cells;
     let mut tf = column(setup, axis, dry, g)?;
     let rho_s = tf.solids_density(0);
@@ -282,6 +320,11 @@ fn column(
     };
     let mut tf = TwoFluid::new(grid, gas, gas_walls, vec![spec], gravity, settings)
         .map_err(|e| ChuteCheckError::Column(e.to_string()))?;
+    tf.set_sidewalls(setup.sidewalls.map(|w| Sidewalls {
+        width: w.width,
+        solids: w.solids,
+        gas_no_slip: false,
+    }));
     // start: uniform εs = holdup/H, gas and solids sliding at 0.3 m/s, θ = 1e-3 m²/s²
     let eps0 = setup.holdup / setup.height;
     {

@@ -83,6 +83,7 @@ fn with_treatment(grid: Axis, wall_treatment: WallTreatment) -> ChuteParams {
         holdup: HOLDUP,
         floor: jj_floor(),
         grid,
+        sidewalls: None,
     }
 }
 

@@ -671,6 +671,31 @@ pub const FLUME: &[(&str, &str, &str)] = &[
     ("F-RJJ", "revisited JJ", "0.53 (§4; §5 prints 0.93)"),
 ];
 
+/// The flume cases with the channel's side walls, 0.30 m apart with the floor's condition
+/// (docs/model.md §8; issue 23): (case, label, the paper's MSE: none, it has no side walls).
+pub const FLUME_SIDEWALLS: &[(&str, &str, &str)] = &[
+    (
+        "FSW-JJ_phi=0.1",
+        "JJ phi = 0.1, side walls",
+        "— (no side walls in the paper)",
+    ),
+    (
+        "FSW-JJ_phi=0.01",
+        "JJ phi = 0.01, side walls",
+        "— (no side walls in the paper)",
+    ),
+    (
+        "FSW-JEN",
+        "Jenkins, side walls",
+        "— (no side walls in the paper)",
+    ),
+    (
+        "FSW-RJJ",
+        "revisited JJ, side walls",
+        "— (no side walls in the paper)",
+    ),
+];
+
 /// The family-M case (shared/docs/cases.md).
 pub const MFIX_CASE: &str = "M-JJ";
 

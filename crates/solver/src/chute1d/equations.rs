@@ -209,13 +209,28 @@ impl<'a> Problem<'a> {
                 scale[row + EPS] = self.p.holdup;
             }
             let body = rho * eps(j) * self.g_tangential * dy[j];
-            residual[row + U] = shear_flux[j + 1] - shear_flux[j] + body;
-            scale[row + U] = shear_flux[j + 1].abs() + shear_flux[j].abs() + body.abs();
-            let net_source = (production[j] - dissipation[j]) * dy[j];
+            // the side walls' width-averaged friction and θ flux (docs/model.md §8)
+            let side = self.p.sidewalls.map(|w| {
+                w.load(
+                    &self.p.closures,
+                    (eps(j), u[j], theta[j]),
+                    shear_rate[j],
+                    (mu_s[j], kappa[j]),
+                )
+            });
+            let (side_drag, side_gain, side_loss) = side.map_or((0.0, 0.0, 0.0), |s| {
+                (s.momentum, s.generation, s.dissipation)
+            });
+            residual[row + U] = shear_flux[j + 1] - shear_flux[j] + body - side_drag * dy[j];
+            scale[row + U] = shear_flux[j + 1].abs()
+                + shear_flux[j].abs()
+                + body.abs()
+                + side_drag.abs() * dy[j];
+            let net_source = (production[j] - dissipation[j] + side_gain - side_loss) * dy[j];
             residual[row + THETA] = energy_flux[j + 1] - energy_flux[j] + net_source;
             scale[row + THETA] = energy_flux[j + 1].abs()
                 + energy_flux[j].abs()
-                + (production[j] + dissipation[j]) * dy[j];
+                + (production[j] + dissipation[j] + side_gain + side_loss) * dy[j];
         }
         Evaluation {
             residual,

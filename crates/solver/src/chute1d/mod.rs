@@ -59,6 +59,9 @@ use runout_walls::{
 
 mod equations;
 mod newton;
+mod sidewalls;
+
+pub use sidewalls::ChuteSidewalls;
 
 use equations::*;
 use newton::*;
@@ -150,6 +153,8 @@ pub struct ChuteParams {
     /// bulk values of the floor closure: MFIX's fluid-cell values (default) or second-order
     /// extrapolated ones
     pub wall_treatment: WallTreatment,
+    /// side walls a width apart (docs/model.md §8); none: a plane flow
+    pub sidewalls: Option<ChuteSidewalls>,
 }
 
 /// Starting point of the iteration.
@@ -421,6 +426,11 @@ fn check_parameters(p: &ChuteParams) -> Result<(), Chute1dError> {
     }
     if p.grid.len() < 2 {
         return invalid("grid cells", p.grid.len() as f64, "[2, inf)");
+    }
+    if let Some(w) = p.sidewalls {
+        if w.width.is_nan() || w.width <= 0.0 {
+            return invalid("sidewalls.width", w.width, "(0, inf]");
+        }
     }
     Ok(())
 }

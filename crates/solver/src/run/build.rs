@@ -92,6 +92,11 @@ pub fn single_phase_solver(case: &Case) -> Result<SinglePhase, RunError> {
         .gas
         .as_ref()
         .ok_or_else(|| unsupported("has neither gas nor solids"))?;
+    if case.sidewalls.is_some() {
+        return Err(unsupported(
+            "has sidewalls, which act on solids (docs/model.md §8): two-fluid cases only",
+        ));
+    }
     let gravity = match case.gravity {
         Gravity::Constant { magnitude, slope } => gravity_vector(magnitude, slope),
         Gravity::TiltOnImpact { .. } => {
@@ -215,6 +220,7 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
     };
     let mut tf = TwoFluid::new(grid.clone(), fluid, gas_walls, specs, gravity, settings)
         .map_err(|e| unsupported(format!("setting up the two-fluid solver: {e}")))?;
+    tf.set_sidewalls(super::sidewalls::sidewalls(case)?);
     fill_initial_state(&mut tf, case, gas, gravity, &grid);
     zero_normal_velocity_on_walls(b, &grid, &mut tf.u_g, &mut tf.v_g);
     for s in tf.solids.iter_mut() {

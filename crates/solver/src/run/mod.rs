@@ -13,6 +13,7 @@ pub mod checkpoint;
 mod dt_controller;
 mod monitors;
 pub mod out_dir;
+mod sidewalls;
 pub mod signals;
 
 use std::path::Path;

@@ -18,6 +18,7 @@ use runout_linsolve::Stencil5;
 
 use super::diagnostics::since;
 use super::dilute::{dilute_cell_row, next_dilute_class};
+use super::sidewalls::add_theta_flux;
 use super::{lin, SolidsFields, TwoFluid, TwoFluidError, DIL_EP_S, THETA_SMALL};
 use crate::energy::{assemble_theta, EnergyInputs};
 use crate::momentum::{fixed_row, neighbour_sum};
@@ -59,6 +60,9 @@ impl TwoFluid {
                 &mut self.c_faces,
                 &mut s.a_theta,
             );
+            if self.sidewalls.is_some() {
+                add_theta_flux(&self.grid, s); // docs/model.md §8
+            }
             classify_rows(s, freeze);
             // Schaeffer: θ = θ_small where εg < εg* (docs/model.md §1.3)
             let eps_g_star = (spec.params.friction_model == FrictionModel::Schaeffer)

@@ -49,11 +49,13 @@ mod momentum_pea;
 mod pressure;
 mod residuals;
 mod setup;
+mod sidewalls;
 mod walls;
 
 pub use closures::CellClosures;
 pub use diagnostics::{LinearIterations, Profile};
 pub use residuals::TwoFluidResiduals;
+pub use sidewalls::{SidewallCell, SidewallTerms, Sidewalls};
 
 use runout_closures::ClosureParams;
 use runout_linsolve::{LinSolveError, LinearSolver, Stencil5};
@@ -252,6 +254,8 @@ pub struct SolidsFields {
     theta_class_changes: Vec<u8>,
     /// h_w^u of the last floor evaluation per u-node (the wall probe of paper Fig. 9)
     pub floor_h_u: Vec<f64>,
+    /// the side walls' terms per cell (docs/model.md §8; all zero without side walls)
+    sidewall: Vec<SidewallTerms>,
 }
 
 impl SolidsFields {
@@ -347,6 +351,8 @@ pub struct TwoFluid {
     profile: Profile,
     /// where the residuals of the last outer iteration were largest
     worst: Worst,
+    /// the side walls of a quasi-2-D channel (docs/model.md §8), none in a plane flow
+    sidewalls: Option<Sidewalls>,
 }
 
 fn lin(equation: &str) -> impl Fn(LinSolveError) -> TwoFluidError + '_ {
@@ -360,6 +366,11 @@ impl TwoFluid {
     /// The grid.
     pub fn grid(&self) -> &Grid {
         &self.grid
+    }
+
+    /// Sets the side walls of a quasi-2-D channel (docs/model.md §8); `None`: a plane flow.
+    pub fn set_sidewalls(&mut self, sidewalls: Option<Sidewalls>) {
+        self.sidewalls = sidewalls;
     }
 
     /// Stores the current fields as the old time level and refreshes the bulk densities.
@@ -439,6 +450,16 @@ impl TwoFluid {
         }
         let t = Instant::now();
         self.update_walls();
+        if let Some(sidewalls) = &self.sidewalls {
+            let gas = (&self.u_g[..], &self.v_g[..]);
+            sidewalls::update_sidewalls(
+                &self.grid,
+                sidewalls,
+                gas,
+                &mut self.solids,
+                &self.solids_specs,
+            );
+        }
         self.profile.walls += since(t);
         // 2. momentum of every phase, drag by partial elimination
         let t = Instant::now();

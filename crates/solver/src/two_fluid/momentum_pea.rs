@@ -25,6 +25,7 @@ use super::component::Component;
 use super::diagnostics::since;
 use super::dilute::{dilute_faces, dilute_row};
 use super::residuals::CoupledNode;
+use super::sidewalls::add_momentum_sinks;
 use super::{lin, SolidsFields, SolidsSpec, TwoFluid, TwoFluidError, MAX_SOLIDS_PHASES};
 use crate::momentum::{assemble_u, assemble_v, fixed_row, neighbour_sum, Context, PhaseFields};
 use crate::pea::eliminate_node;
@@ -49,6 +50,11 @@ impl TwoFluid {
                 v: &self.v_g,
                 eps: &self.eps_g,
             };
+            if let Some(sidewalls) = &self.sidewalls {
+                // docs/model.md §8: the side walls' sinks join the rows before the elimination
+                let gas_drag = sidewalls.gas_drag(self.gas.viscosity);
+                add_momentum_sinks(&self.grid, c, (&mut *gas.a, gas_drag), &mut self.solids);
+            }
             residual += eliminate_drag(
                 &self.grid,
                 c,

@@ -8,8 +8,8 @@ use runout_mesh::{Grid, Sides};
 
 use super::diagnostics::{Profile, Worst};
 use super::{
-    lin, CellClosures, SolidsFields, SolidsSpec, TwoFluid, TwoFluidError, TwoFluidSettings,
-    MAX_SOLIDS_PHASES, PRESSURE_RTOL, THETA_SMALL,
+    lin, CellClosures, SidewallTerms, SolidsFields, SolidsSpec, TwoFluid, TwoFluidError,
+    TwoFluidSettings, MAX_SOLIDS_PHASES, PRESSURE_RTOL, THETA_SMALL,
 };
 use crate::kinematics::Strain;
 use crate::momentum::WallFaces;
@@ -79,6 +79,7 @@ impl TwoFluid {
             theta_class_fresh: true,
             profile: Profile::default(),
             worst: Worst::default(),
+            sidewalls: None,
             grid,
             gas,
             gas_walls,
@@ -229,6 +230,7 @@ impl SolidsFields {
             theta_dense: vec![false; n],
             theta_class_changes: vec![0; n],
             floor_h_u: vec![0.0; nx + 1],
+            sidewall: vec![SidewallTerms::default(); n],
         }
     }
 }
