@@ -17,15 +17,33 @@ use crate::validate_grid::check_grids;
 /// fidelity's grid builds within the size limits (see [`crate::limits`]).
 pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
     let mut c = Checker::default();
+    check_materials(&mut c, case);
+    check_initial(&mut c, case);
+    check_gravity(&mut c, case);
+    check_run(&mut c, case);
+    check_monitors(&mut c, case);
+    check_presets(&mut c, case);
+    c.into_result()
+}
+
+/// The run's end time where it is in its band, else the band's low end (the bound other
+/// checks compare with).
+fn bounded_end_time(case: &Case) -> f64 {
+    if TIME.contains(case.run.end_time) {
+        case.run.end_time
+    } else {
+        TIME.lo
+    }
+}
+
+/// The name, the grids, the gas, the solids phases, the closure models, the boundaries and the side walls.
+fn check_materials(c: &mut Checker, case: &Case) {
     if let Some(e) = name_error("name", &case.name) {
         c.errors.push(e);
     }
 
     // Grid: sizes bounded before anything is built; then every fidelity's grid.
-    check_grids(&mut c, case);
-    let x_end = case.domain.x.end();
-    let y_end = case.domain.y.end();
-    let (x0, y0) = (case.domain.x.origin, case.domain.y.origin);
+    check_grids(c, case);
 
     if let Some(gas) = &case.gas {
         c.band("gas.density", gas.density, &GAS_DENSITY);
@@ -80,7 +98,7 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
 
     for (side, b) in case.boundaries.iter() {
         check_boundary(
-            &mut c,
+            c,
             &format!("boundaries.{}", side.name()),
             b,
             case.gas.is_some(),
@@ -88,10 +106,14 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
     }
 
     if let Some(sidewalls) = &case.sidewalls {
-        check_sidewalls(&mut c, sidewalls, check_solids_wall);
+        check_sidewalls(c, sidewalls, check_solids_wall);
     }
+}
 
-    // Initial state.
+/// The initial state: θ, velocities and the regions (inside the domain).
+fn check_initial(c: &mut Checker, case: &Case) {
+    let (x0, x_end) = (case.domain.x.origin, case.domain.x.end());
+    let (y0, y_end) = (case.domain.y.origin, case.domain.y.end());
     c.band("initial.theta", case.initial.theta, &THETA);
     c.band(
         "initial.gas_velocity.0",
@@ -108,8 +130,8 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
     }
     for (k, block) in case.initial.regions.iter().enumerate() {
         let p = format!("initial.regions[{k}]");
-        check_span(&mut c, &format!("{p}.x"), block.x, x0, x_end);
-        check_span(&mut c, &format!("{p}.y"), block.y, y0, y_end);
+        check_span(c, &format!("{p}.x"), block.x, x0, x_end);
+        check_span(c, &format!("{p}.y"), block.y, y0, y_end);
         if block.solids.len() != case.solids.len() {
             c.fail(
                 format!("{p}.solids"),
@@ -120,7 +142,7 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
         let mut total = 0.0;
         for (m, (bs, phase)) in block.solids.iter().zip(&case.solids).enumerate() {
             let q = format!("{p}.solids[{m}]");
-            check_packing(&mut c, &format!("{q}.eps_s"), bs.eps_s, phase.max_packing);
+            check_packing(c, &format!("{q}.eps_s"), bs.eps_s, phase.max_packing);
             c.band(format!("{q}.velocity.0"), bs.velocity.0, &VELOCITY);
             c.band(format!("{q}.velocity.1"), bs.velocity.1, &VELOCITY);
             c.band(format!("{q}.theta"), bs.theta, &THETA);
@@ -132,16 +154,13 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
             .map(|s| s.max_packing)
             .fold(0.0, f64::max);
         if block.solids.len() > 1 {
-            check_packing(
-                &mut c,
-                &format!("{p}.solids (sum of eps_s)"),
-                total,
-                max_pack,
-            );
+            check_packing(c, &format!("{p}.solids (sum of eps_s)"), total, max_pack);
         }
     }
+}
 
-    // Gravity.
+/// Gravity: magnitude and slope, and the impact criterion of a tilt on impact.
+fn check_gravity(c: &mut Checker, case: &Case) {
     let (magnitude, slope) = match &case.gravity {
         Gravity::Constant { magnitude, slope } => (*magnitude, *slope),
         Gravity::TiltOnImpact {
@@ -157,7 +176,7 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
                 B::Open(0.0),
                 B::Open(1.0),
             );
-            check_impact_criterion(&mut c, criterion, case);
+            check_impact_criterion(c, criterion, case);
             if *clock == Clock::Impact
                 && !matches!(
                     criterion,
@@ -178,8 +197,10 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
         c.band("gravity.magnitude", magnitude, &GRAVITY);
     }
     c.range("gravity.slope", slope, B::Closed(0.0), B::Open(90.0));
+}
 
-    // Run control.
+/// Run control: end time, time steps, tolerances and numerics.
+fn check_run(c: &mut Checker, case: &Case) {
     let run = &case.run;
     c.band("run.end_time", run.end_time, &TIME);
     let end = if TIME.contains(run.end_time) {
@@ -249,7 +270,7 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
         MAX_ITERATIONS,
     );
     check_interval(
-        &mut c,
+        c,
         "run.output_interval",
         run.output_interval,
         end,
@@ -257,7 +278,7 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
     );
     if let Some(interval) = run.checkpoint_interval {
         check_interval(
-            &mut c,
+            c,
             "run.checkpoint_interval",
             interval,
             end,
@@ -275,8 +296,14 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
     ] {
         c.band(format!("numerics.relaxation.{name}"), v, &RELAXATION);
     }
+}
 
-    // Monitors.
+/// Monitors: profiles, wall probes, bulk and front (inside the domain and the run).
+fn check_monitors(c: &mut Checker, case: &Case) {
+    let (x0, x_end) = (case.domain.x.origin, case.domain.x.end());
+    let (y0, y_end) = (case.domain.y.origin, case.domain.y.end());
+    let run = &case.run;
+    let end = bounded_end_time(case);
     for (k, prof) in case.monitors.profiles.iter().enumerate() {
         let p = format!("monitors.profiles[{k}]");
         c.range(format!("{p}.x"), prof.x, B::Closed(x0), B::Closed(x_end));
@@ -315,7 +342,7 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
             );
         }
         check_interval(
-            &mut c,
+            c,
             &format!("{p}.interval"),
             probe.interval,
             end,
@@ -346,7 +373,7 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
         }
         c.increasing(&format!("{p}.gates"), &front.gates);
         check_interval(
-            &mut c,
+            c,
             &format!("{p}.interval"),
             front.interval,
             end,
@@ -355,7 +382,7 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
     }
     if let Some(bulk) = &case.monitors.bulk {
         check_interval(
-            &mut c,
+            c,
             "monitors.bulk.interval",
             bulk.interval,
             end,
@@ -368,9 +395,11 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
             B::Open(1.0),
         );
     }
+}
 
-    // Fidelity presets: coarsening ≥ 1, end times in the band and ≤ the paper end time
-    // (their grids are checked with the domain's).
+/// Fidelity presets: coarsening ≥ 1, end times in the band and ≤ the paper end time (their grids are checked with the domain's).
+fn check_presets(c: &mut Checker, case: &Case) {
+    let run = &case.run;
     for (name, preset) in [
         ("smoke", Some(&case.fidelity.smoke)),
         ("coarse", Some(&case.fidelity.coarse)),
@@ -396,8 +425,6 @@ pub fn validate_case(case: &Case) -> Result<(), Vec<FieldError>> {
             B::Closed(run.end_time),
         );
     }
-
-    c.into_result()
 }
 
 /// The impact criterion of a tilt-on-impact schedule: its numbers in range, and a release
