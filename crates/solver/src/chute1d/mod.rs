@@ -608,7 +608,7 @@ mod tests {
                 } else {
                     1.0 + (i * 3 + j * 5) as f64 % 7.0
                 };
-                m.set(i, j, value);
+                m.add(i, j, value);
                 dense[i][j] = value;
             }
         }

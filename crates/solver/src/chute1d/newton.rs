@@ -56,8 +56,8 @@ pub(super) fn normalised_residual(e: &Evaluation) -> (f64, usize) {
         )
 }
 
-/// A banded matrix with lower and upper bandwidths `kl`, `ku`, stored row-wise with room for
-/// the fill-in of partial pivoting (row i holds columns i − kl … i + kl + ku).
+/// A banded matrix with lower and upper bandwidths `kl`, `ku`, stored row-wise (row i holds
+/// columns i − kl … i + ku); assembled here, factorised by faer ([`BandMatrix::solve_in_place`]).
 pub(super) struct BandMatrix {
     pub(super) n: usize,
     pub(super) kl: usize,
@@ -68,7 +68,7 @@ pub(super) struct BandMatrix {
 
 impl BandMatrix {
     pub(super) fn new(n: usize, kl: usize, ku: usize) -> Self {
-        let width = 2 * kl + ku + 1;
+        let width = kl + ku + 1;
         Self {
             n,
             kl,
@@ -80,7 +80,7 @@ impl BandMatrix {
 
     #[inline]
     pub(super) fn index(&self, i: usize, j: usize) -> usize {
-        debug_assert!(j + self.kl >= i && j <= i + self.kl + self.ku);
+        debug_assert!(j + self.kl >= i && j <= i + self.ku);
         i * self.width + (j + self.kl - i)
     }
 
@@ -93,59 +93,39 @@ impl BandMatrix {
         self.data[self.index(i, j)]
     }
 
-    pub(super) fn set(&mut self, i: usize, j: usize, value: f64) {
-        let k = self.index(i, j);
-        self.data[k] = value;
-    }
-
-    /// Gaussian elimination with partial pivoting, applied to every right-hand side in
-    /// `rhs` (each of length n), which are overwritten with the solutions.
-    pub(super) fn solve_in_place(mut self, rhs: &mut [Vec<f64>]) -> Result<(), Chute1dError> {
+    /// Solves the system for every right-hand side in `rhs` (each of length n, overwritten
+    /// with the solutions) by faer's sparse LU with partial pivoting: the band's entries
+    /// (structural zeros left out) as a compressed-column matrix.
+    pub(super) fn solve_in_place(self, rhs: &mut [Vec<f64>]) -> Result<(), Chute1dError> {
+        use faer::linalg::solvers::SolveCore;
         let n = self.n;
-        let reach = self.kl + self.ku;
-        for k in 0..n {
-            let last_row = (k + self.kl).min(n - 1);
-            let last_col = (k + reach).min(n - 1);
-            let pivot = (k..=last_row)
-                .max_by(|&a, &b| self.get(a, k).abs().total_cmp(&self.get(b, k).abs()))
-                .expect("non-empty range");
-            if self.get(pivot, k) == 0.0 {
-                return Err(Chute1dError::Singular(k));
-            }
-            if pivot != k {
-                for j in k..=last_col {
-                    let (a, b) = (self.get(k, j), self.get(pivot, j));
-                    self.set(k, j, b);
-                    self.set(pivot, j, a);
-                }
-                for r in rhs.iter_mut() {
-                    r.swap(k, pivot);
-                }
-            }
-            let diagonal = self.get(k, k);
-            for i in k + 1..=last_row {
-                let factor = self.get(i, k) / diagonal;
-                if factor == 0.0 {
-                    continue;
-                }
-                self.set(i, k, 0.0);
-                for j in k + 1..=last_col {
-                    let v = self.get(k, j);
-                    self.add(i, j, -factor * v);
-                }
-                for r in rhs.iter_mut() {
-                    r[i] -= factor * r[k];
+        let mut triplets = Vec::new();
+        for i in 0..n {
+            let first = i.saturating_sub(self.kl);
+            let last = (i + self.ku).min(n - 1);
+            for j in first..=last {
+                let v = self.get(i, j);
+                if v != 0.0 {
+                    triplets.push(faer::sparse::Triplet::new(i, j, v));
                 }
             }
         }
+        let matrix =
+            faer::sparse::SparseColMat::<usize, f64>::try_new_from_triplets(n, n, &triplets)
+                .map_err(|_| Chute1dError::Singular(0))?;
+        let lu = matrix.as_ref().sp_lu().map_err(|e| match e {
+            faer::sparse::linalg::LuError::SymbolicSingular { index } => {
+                Chute1dError::Singular(index)
+            }
+            _ => Chute1dError::Singular(n),
+        })?;
         for r in rhs.iter_mut() {
-            for i in (0..n).rev() {
-                let last_col = (i + reach).min(n - 1);
-                let mut sum = r[i];
-                for j in i + 1..=last_col {
-                    sum -= self.get(i, j) * r[j];
-                }
-                r[i] = sum / self.get(i, i);
+            lu.solve_in_place_with_conj(
+                faer::Conj::No,
+                faer::MatMut::from_column_major_slice_mut(r, n, 1),
+            );
+            if let Some(k) = r.iter().position(|v| !v.is_finite()) {
+                return Err(Chute1dError::Singular(k));
             }
         }
         Ok(())
