@@ -42,8 +42,8 @@
 //! pressure is not lost beside a dense one's. Pseudo-transient continuation on the u_s and θ
 //! rows (ρs εs ∂u/∂t, (3/2) ρs εs ∂θ/∂t with switched evolution relaxation) makes it robust
 //! from a poor start; steps are limited to one decade in εs and θ and to 90 % of the distance
-//! to εs = 1. The banded Jacobian plus the dense holdup row is solved by banded LU with partial
-//! pivoting and a Sherman–Morrison correction.
+//! to εs = 1. The banded Jacobian plus the dense holdup row is solved by faer's sparse LU with
+//! partial pivoting and a Sherman–Morrison correction.
 //!
 //! Limits (`docs/chute1d.md` §3): a free surface with a dilute layer above the bed is not
 //! resolved (the discrete hydrostatic balance has no positive solution once g cos α Δy/2

@@ -1,6 +1,6 @@
 //! The Newton solver of the 1-D chute (module doc of [`super`]): the progress norms of the
-//! pseudo-transient continuation, the banded finite-difference Jacobian with partial
-//! pivoting, the Sherman–Morrison step for the holdup row (docs/model.md §4.1 grid) and the
+//! pseudo-transient continuation, the banded finite-difference Jacobian (factorised by faer's
+//! sparse LU with partial pivoting), the Sherman–Morrison step for the holdup row (docs/model.md §4.1 grid) and the
 //! step length that keeps ln εs, ln θ and εs < 1 in range.
 
 use super::*;
