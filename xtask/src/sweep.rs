@@ -636,33 +636,17 @@ mod tests {
         // a caller that sets its own end time on the impact clock (as error-time does)
         let mut on_impact = case.clone();
         on_impact.run.end_time = 0.2;
-        let dir = std::env::temp_dir().join(format!("runout-finished-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
         // the run writes its case in the start clock
+        let tmp = crate::report::data::fixture::TempDir::new("finished-impact-clock");
         let written = ron::ser::to_string(&on_impact.clone().with_start_clock()).unwrap();
-        std::fs::write(dir.join("resolved.ron"), written).unwrap();
-        let summary = RunSummary {
-            case: case.name.clone(),
-            fidelity: "smoke".into(),
-            cells: (1, 1),
-            simulated_time: 0.2,
-            wall_time: 1.0,
-            steps: 1,
-            rejected_steps: 0,
-            outer_iterations: 1,
-            dt: DtStats {
-                min: 1e-3,
-                max: 1e-3,
-                mean: 1e-3,
-            },
-            solids_mass_change: 0.0,
-            max_mass_imbalance: 0.0,
-            max_eps_s: 0.6,
-            status: RunStatus::Completed,
-            profile: Vec::new(),
-            linear_iterations: Vec::new(),
-        };
-        summary.write_json(&dir.join("summary.json")).unwrap();
+        crate::report::data::fixture::write_run(
+            &tmp.0,
+            &case.name,
+            "smoke",
+            0.2,
+            &[("resolved.ron", &written)],
+        );
+        let dir = tmp.0.join(&case.name).join("smoke");
         assert!(
             finished_run(&dir, &on_impact).is_some(),
             "the impact-clock case matches its start-clock record"

@@ -16,7 +16,7 @@ use runout_output::{read_pvd, read_vtr_array, read_vtr_cells};
 use super::data::{Cases, Run};
 use super::paper::FieldFigure;
 use super::plots::plot_error;
-use super::{coverage, figure_section, legend, remove_stale};
+use super::{figure_section, legend, remove_stale, Coverage};
 
 /// Along-slope window of the maps [m]: from behind the release to past the furthest front.
 pub const WINDOW_X: (f64, f64) = (5.5, 15.0);
@@ -92,15 +92,24 @@ pub fn gas_map(run: &Run, time: f64) -> Result<GasMap, String> {
 
 /// Draws `fig` from the runs of `cases` into `out` and writes its section of results.md.
 pub fn draw_figure(md: &mut String, fig: &FieldFigure, cases: &Cases, out: &Path) -> Result<()> {
-    let map_of = |case: &str| {
+    // each field is read once: for the caption's coverage and for the panels
+    let mut cov = Coverage::default();
+    let mut panels: Vec<(String, GasMap)> = Vec::new();
+    for (case, label) in fig.panels {
         let d = cases.get(case);
-        let run = d.run.as_ref().map_err(Clone::clone)?;
-        gas_map(run, d.station_time)
-    };
-    let cov = coverage(cases, fig.panels.iter().map(|p| p.0), |d| {
-        let run = d.run.as_ref().map_err(Clone::clone)?;
-        gas_map(run, d.station_time).map(|_| ())
-    });
+        match d
+            .run
+            .as_ref()
+            .map_err(Clone::clone)
+            .and_then(|run| gas_map(run, d.station_time))
+        {
+            Ok(map) => {
+                cov.add_drawn(case, d.fidelity());
+                panels.push((legend(label, d.fidelity()), map));
+            }
+            Err(why) => cov.add_missing(case, &why),
+        }
+    }
     let title = format!("Fig. {} — gas volume fraction near the station", fig.number);
     let caption = format!(
         "Paper Fig. {}: {}. εg = 1 − εs over x = {}–{} m, up to {} m above the floor (the \
@@ -120,14 +129,6 @@ pub fn draw_figure(md: &mut String, fig: &FieldFigure, cases: &Cases, out: &Path
         figure_section(md, &title, None, &caption);
         return Ok(());
     }
-    let panels: Vec<(String, GasMap)> = fig
-        .panels
-        .iter()
-        .filter_map(|(case, label)| {
-            let map = map_of(case).ok()?;
-            Some((legend(label, cases.get(case).fidelity()), map))
-        })
-        .collect();
     draw(&path, &panels)?;
     figure_section(md, &title, Some(fig.file), &caption);
     Ok(())
