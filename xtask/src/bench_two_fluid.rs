@@ -25,7 +25,7 @@ use clap::Parser;
 use runout_case::{load, Case, Fidelity, Loaded};
 use runout_mesh::{AxisSpec, Segment};
 use runout_output::RunSummary;
-use runout_solver::run::{run_case_with, RunOptions};
+use runout_run::{run_case_with, RunOptions};
 
 use crate::mfix_slope::cpu_seconds;
 

@@ -19,7 +19,7 @@ use std::time::Instant;
 use anyhow::{bail, Context, Result};
 use runout_case::{load, Fidelity, Loaded, SourcedCase};
 use runout_output::{read_vtr_array, RunSummary};
-use runout_solver::run_case;
+use runout_run::run_case;
 
 /// MFIX's results (cases.md "Family M"): (t, front x, ū_s).
 pub const MFIX: [(f64, f64, f64); 3] = [(0.3, 1.04, 1.25), (0.5, 1.66, 1.97), (0.8, 2.92, 3.01)];

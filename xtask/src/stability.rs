@@ -20,7 +20,8 @@ use indicatif::{MultiProgress, ProgressBar};
 use rayon::prelude::*;
 use runout_case::{Fidelity, SourcedCase};
 use runout_output::{RunStatus, RunSummary};
-use runout_solver::{run_case, RunError};
+use runout_run::store::{self, Request, Reuse};
+use runout_run::RunError;
 
 use crate::sweep::{csv_field, matrix, progress_style};
 
@@ -228,16 +229,24 @@ fn row_from_summary(base: Row, s: &RunSummary) -> Row {
     }
 }
 
-/// Runs one case at `fidelity` into `dir` (cleared first) and makes its row.
+/// Runs one case at `fidelity` into `dir` through the run store (never reused, never
+/// continued: every suite run is made afresh) and makes its row from the finished run, or
+/// from what its `.partial` folder holds when it failed.
 pub fn run_one(case: &SourcedCase, fidelity: Fidelity, dir: &Path, bar: &ProgressBar) -> Row {
     let c = case.case.at_fidelity(fidelity);
     let cells = c.grid().map_or((0, 0), |g| (g.nx(), g.ny()));
+    // an earlier suite's run is not this one's
     let _ = std::fs::remove_dir_all(dir);
     // accepted steps as the progress reports them, for a run that ends without a summary
     let (mut time, mut steps, mut min_dt) = (0.0_f64, 0_u64, f64::INFINITY);
     let started = Instant::now();
     let result = catch_unwind(AssertUnwindSafe(|| {
-        run_case(&case.case, fidelity, dir, |p| {
+        let request = Request {
+            reuse: Reuse::Never,
+            resume: false,
+            ..Request::default()
+        };
+        store::obtain(dir, &case.case, fidelity, &request, |p| {
             min_dt = min_dt.min(p.time - time);
             time = p.time;
             steps = p.steps;
@@ -247,8 +256,14 @@ pub fn run_one(case: &SourcedCase, fidelity: Fidelity, dir: &Path, bar: &Progres
                 p.time, p.dt, p.iterations
             ));
         })
+        .map(|stored| stored.summary().clone())
     }));
     bar.finish_and_clear();
+    let written = if dir.exists() {
+        dir.to_path_buf()
+    } else {
+        store::partial_dir(dir)
+    };
     let base = Row {
         case: c.name.clone(),
         stresses: c
@@ -267,7 +282,7 @@ pub fn run_one(case: &SourcedCase, fidelity: Fidelity, dir: &Path, bar: &Progres
         max_eps_s: None,
         eps_s_max: c.solids.iter().map(|s| s.max_packing).fold(0.0, f64::max),
         wall_time: started.elapsed().as_secs_f64(),
-        non_finite: scan_run(dir),
+        non_finite: scan_run(&written),
     };
     match result {
         Ok(Ok(summary)) => row_from_summary(base, &summary),

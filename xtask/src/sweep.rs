@@ -25,9 +25,9 @@ use std::time::Instant;
 use anyhow::{bail, Context, Result};
 use indicatif::{MultiProgress, ProgressBar, ProgressStyle};
 use runout_case::{case_files, load, Case, Fidelity, Loaded, SourcedCase};
-use runout_output::{RunStatus, RunSummary};
-use runout_solver::run::{checkpoint, run_case_with, signals, RunOptions};
-use runout_solver::{Progress, RunError};
+use runout_output::RunSummary;
+use runout_run::store::{self, Request, Reuse, Stored};
+use runout_run::{signals, Progress, RunError};
 
 use crate::collapse::COLLAPSE_DIR;
 use crate::metrics::{described_speeds, flow_metrics, FlowMetrics};
@@ -122,10 +122,6 @@ pub(crate) enum Outcome {
     Interrupted(RunSummary),
 }
 
-fn read_summary(dir: &Path) -> Option<RunSummary> {
-    serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).ok()?).ok()
-}
-
 /// Runs one case into its folder, atomically.
 fn run_one(
     case: &SourcedCase,
@@ -140,30 +136,26 @@ fn run_one(
         Ok(dir) => dir,
         Err(e) => return Outcome::Failed(e.to_string()),
     };
-    if let Some(summary) = read_summary(&done) {
-        return Outcome::Skipped(summary);
-    }
-    run_into(&case.case, fidelity, &done, bar, stop)
+    // a finished run of the same resolved case is kept
+    run_into(&case.case, fidelity, &done, Reuse::SameCase, bar, stop)
 }
 
-/// Runs `case` at `fidelity` into `done` through `<done>.partial` (renamed when the run
-/// ends; continued from its checkpoint if one is there).
+/// Runs `case` at `fidelity` into `done` through the run store (`<done>.partial`, renamed
+/// when the run ends; continued from its checkpoint if one is there), or takes the finished
+/// run there as `reuse` says.
 pub(crate) fn run_into(
     case: &Case,
     fidelity: Fidelity,
     done: &Path,
+    reuse: Reuse,
     bar: &ProgressBar,
     stop: &Arc<AtomicBool>,
 ) -> Outcome {
-    let name = &case.name;
-    let partial = done.with_file_name(format!("{}.partial", fidelity.name()));
-    // an unfinished run continues from its checkpoint; one that cannot (another case,
-    // another runout) starts again
-    let mut options = RunOptions {
-        restart: checkpoint::exists(&partial),
-        replace: true,
+    let request = Request {
+        reuse,
         checkpoint_every: Some(CHECKPOINT_EVERY),
         stop: Some(stop.clone()),
+        ..Request::default()
     };
     let show = |p: &Progress| {
         bar.set_position((1000.0 * p.time / p.end_time) as u64);
@@ -172,31 +164,13 @@ pub(crate) fn run_into(
             p.time, p.dt, p.iterations
         ));
     };
-    let mut result = run_case_with(case, fidelity, &partial, &options, show);
-    if let Err(RunError::Checkpoint { source, .. }) = &result {
-        bar.println(format!("{name}: starting again ({source})"));
-        options.restart = false;
-        let _ = std::fs::remove_dir_all(&partial);
-        result = run_case_with(case, fidelity, &partial, &options, show);
-    }
+    let result = store::obtain(done, case, fidelity, &request, show);
     bar.finish_and_clear();
     match result {
-        Ok(summary) if summary.status == RunStatus::Interrupted => Outcome::Interrupted(summary),
-        Ok(summary) => {
-            let _ = std::fs::remove_dir_all(done);
-            match std::fs::rename(&partial, done) {
-                Ok(()) => Outcome::Done(summary),
-                Err(e) => Outcome::Failed(format!(
-                    "renaming {} to {}: {e}",
-                    partial.display(),
-                    done.display()
-                )),
-            }
-        }
-        Err(RunError::Unsupported { reason, .. }) => {
-            let _ = std::fs::remove_dir_all(&partial);
-            Outcome::Unsupported(reason)
-        }
+        Ok(Stored::Interrupted(summary)) => Outcome::Interrupted(summary),
+        Ok(Stored::Ran(summary)) => Outcome::Done(summary),
+        Ok(Stored::Reused(summary)) => Outcome::Skipped(summary),
+        Err(RunError::Unsupported { reason, .. }) => Outcome::Unsupported(reason),
         Err(e) => Outcome::Failed(e.to_string()),
     }
 }
@@ -241,7 +215,7 @@ fn duplicates(selected: &[&SourcedCase], fidelity: Fidelity) -> Vec<Option<usize
 /// finished already.
 fn copy_run(runs: &Path, from: &str, to: &str, fidelity: Fidelity) -> Outcome {
     let done = runs.join(to).join(fidelity.name());
-    if let Some(summary) = read_summary(&done) {
+    if let Some(summary) = store::read_summary(&done) {
         return Outcome::Skipped(summary);
     }
     let source = runs.join(from).join(fidelity.name());
@@ -253,7 +227,7 @@ fn copy_run(runs: &Path, from: &str, to: &str, fidelity: Fidelity) -> Outcome {
             let entry = entry?;
             std::fs::copy(entry.path(), partial.join(entry.file_name()))?;
         }
-        let mut summary = read_summary(&partial)
+        let mut summary = store::read_summary(&partial)
             .with_context(|| format!("no summary in {}", source.display()))?;
         summary.case = to.to_string();
         summary.write_json(&partial.join("summary.json"))?;
@@ -273,24 +247,7 @@ fn copy_run(runs: &Path, from: &str, to: &str, fidelity: Fidelity) -> Outcome {
     }
 }
 
-/// The finished run in `dir` if it ran exactly `resolved`: its `resolved.ron` is read back
-/// as a case and compared field by field, so a run made before a schema field was added
-/// (whose file lacks it, read with the field's default) still counts when the default is
-/// what `resolved` has. The fidelity presets are not compared: a resolved case already
-/// carries its fidelity's grid and end time, and runs as it is. The solver version that
-/// made the run is not compared either.
-///
-/// Both sides are compared in the start clock ([`Case::with_start_clock`]): a run writes its
-/// case that way, so a case whose times count from the impact matches its own run.
-pub fn finished_run(dir: &Path, resolved: &Case) -> Option<RunSummary> {
-    let mut stored: Case =
-        ron::from_str(&std::fs::read_to_string(dir.join("resolved.ron")).ok()?).ok()?;
-    stored.fidelity = resolved.fidelity.clone();
-    if stored.with_start_clock() != resolved.clone().with_start_clock() {
-        return None;
-    }
-    serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).ok()?).ok()
-}
+pub use runout_run::store::finished_run;
 
 /// CSV field quoting (RFC 4180).
 pub fn csv_field(s: &str) -> String {

@@ -21,7 +21,7 @@ use clap::{Parser, Subcommand};
 use indicatif::{ProgressBar, ProgressStyle};
 use runout_case::{case_files, load, Fidelity, Loaded};
 use runout_output::{RunStatus, RunSummary};
-use runout_solver::run::{signals, RunOptions};
+use runout_run::{signals, RunOptions};
 use tracing::info;
 
 #[derive(Parser, Debug)]
@@ -393,7 +393,7 @@ fn run(file: &Path, target: &Target, quiet: bool, options: &RunOptions) -> ExitC
                 .progress_chars("=> "),
         );
         bar.set_prefix(sc.case.name.clone());
-        let result = runout_solver::run::run_case_with(&sc.case, fidelity, &dir, options, |p| {
+        let result = runout_run::run_case_with(&sc.case, fidelity, &dir, options, |p| {
             bar.set_position((1000.0 * p.time / p.end_time) as u64);
             bar.set_message(format!(
                 "t = {:.4} s, dt = {:.2e} s, {} it, {} steps",

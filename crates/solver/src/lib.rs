@@ -3,7 +3,6 @@
 //! - [`transport`]: upwind/Superbee convection and diffusion on a structured block;
 //! - [`momentum`]: one phase's momentum equations with variable ρε, ε, μ (docs/model.md §4.4);
 //! - [`single_phase`]: the incompressible SIMPLE core on a stretched staggered grid;
-//! - [`run`]: the time loop with MFIX's adaptive Δt, output and diagnosis;
 //! - [`two_fluid`]: the first two-fluid model (gas + M solids, docs/model.md §4.9) built from
 //!   [`energy`] (granular energy, §4.8),
 //!   [`kinematics`] (cell strain rates), [`pea`] (partial elimination of drag, §4.5),
@@ -23,7 +22,6 @@ pub mod energy;
 pub mod kinematics;
 pub mod momentum;
 pub mod pea;
-pub mod run;
 pub mod single_phase;
 pub mod state;
 pub mod stress;
@@ -32,7 +30,6 @@ pub mod two_fluid;
 pub mod verify;
 pub mod volume_fraction;
 
-pub use run::{run_case, DtController, Progress, RunError};
 pub use single_phase::{
     Fluid, Residuals, Settings, SideBc, SinglePhase, SolverError, SteadyReport,
 };

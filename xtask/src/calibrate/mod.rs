@@ -21,7 +21,9 @@ use std::sync::Arc;
 use anyhow::{bail, Context, Result};
 use indicatif::{MultiProgress, ProgressBar};
 use runout_case::{is_valid_name, load, Case, Fidelity, Loaded};
-use runout_solver::run::signals;
+use runout_run::signals;
+
+use runout_run::store::Reuse;
 
 use crate::sweep::{finished_run, progress_style, run_into, Outcome as RunOutcome};
 use measurements::Measurements;
@@ -171,7 +173,7 @@ impl Model for CaseModel<'_> {
             let bar = self.progress.add(ProgressBar::new(1000));
             bar.set_style(progress_style());
             bar.set_prefix(shown.clone());
-            match run_into(&case, self.fidelity, &done, &bar, &self.stop) {
+            match run_into(&case, self.fidelity, &done, Reuse::Never, &bar, &self.stop) {
                 RunOutcome::Done(s) | RunOutcome::Skipped(s) | RunOutcome::Copied(s, _) => {
                     format!("ran: {:?}, {:.0} s", s.status, s.wall_time)
                 }

@@ -1,4 +1,5 @@
 //! One collapse run: run (or with `--reuse` read) a column into `runs/<case>/<fidelity>/`
+//! through the run store (`runout_run::store`)
 //! and measure it (front metrics, the dense deposit's runout, the deposit's and the dilute
 //! fringe's θ).
 
@@ -7,12 +8,11 @@ use std::path::Path;
 use anyhow::{Context, Result};
 use runout_case::{Case, Fidelity};
 use runout_output::{RunStatus, RunSummary};
-use runout_solver::run_case;
+use runout_run::store::{self, finished_run, Request, Reuse, Stored};
 
 use super::column::Column;
 use super::fields::{floor_front, last_fields, median};
 use super::front::{front_metrics, read_bulk, FrontMetrics};
-use crate::sweep::finished_run;
 
 /// εs threshold of the dense-deposit front read from the last field file [-] (the bulk
 /// monitor's front uses the case's threshold, 0.01).
@@ -56,23 +56,12 @@ pub(super) fn run_one(
     let column = Column::of(case)?;
     let resolved = case.at_fidelity(fidelity);
     let grid = resolved.grid()?;
-    let runs = root.join("runs").join(&case.name);
-    let done = runs.join(fidelity.name());
-    let partial = runs.join(format!("{}.partial", fidelity.name()));
-    let previous = if reuse {
-        finished_run(&done, &resolved)
-    } else {
-        None
+    let done = root.join("runs").join(&case.name).join(fidelity.name());
+    let request = Request {
+        reuse: if reuse { Reuse::SameCase } else { Reuse::Never },
+        ..Request::default()
     };
-    let summary = if let Some(summary) = previous {
-        println!(
-            "{}: reusing the finished run in {}",
-            case.name,
-            done.display()
-        );
-        summary
-    } else {
-        let _ = std::fs::remove_dir_all(&partial);
+    if !reuse || finished_run(&done, &resolved).is_none() {
         println!(
             "{}: a = {}, {} × {} cells, to t = {} s ...",
             case.name,
@@ -81,20 +70,24 @@ pub(super) fn run_one(
             grid.ny(),
             resolved.run.end_time
         );
-        let summary = run_case(case, fidelity, &partial, |p| {
-            if p.steps % 250 == 0 {
-                eprintln!(
-                    "  t = {:.3} s, dt = {:.1e} s, {} it",
-                    p.time, p.dt, p.iterations
-                );
-            }
-        })
-        .with_context(|| format!("running {}", case.name))?;
-        let _ = std::fs::remove_dir_all(&done);
-        std::fs::rename(&partial, &done)
-            .with_context(|| format!("renaming {} to {}", partial.display(), done.display()))?;
-        summary
-    };
+    }
+    let stored = store::obtain(&done, case, fidelity, &request, |p| {
+        if p.steps % 250 == 0 {
+            eprintln!(
+                "  t = {:.3} s, dt = {:.1e} s, {} it",
+                p.time, p.dt, p.iterations
+            );
+        }
+    })
+    .with_context(|| format!("running {}", case.name))?;
+    if let Stored::Reused(_) = stored {
+        println!(
+            "{}: reusing the finished run in {}",
+            case.name,
+            done.display()
+        );
+    }
+    let summary = stored.summary().clone();
     let rows = read_bulk(&done.join("bulk.csv"))?;
     let front = front_metrics(&rows, &column, grid.x.end());
     let (eps, theta) = last_fields(&done)?;

@@ -3,18 +3,17 @@
 
 use std::path::Path;
 
-use anyhow::{bail, Context, Result};
+use anyhow::{bail, Result};
 use runout_case::{
     validate_case, Case, Convection, DiluteCellClass, Fidelity, WallRelaxationScope,
 };
 use runout_output::RunSummary;
-use runout_solver::run_case;
+use runout_run::store::{self, finished_run, Request, Reuse};
 
 use super::ladder::{scheme_name, Level};
 use super::quantity::LevelData;
 use super::read::{read_gates, read_history, read_profile};
 use super::{Options, NOT_RUN, RUNS_DIR};
-use crate::sweep::finished_run;
 
 /// One run of the ladder.
 pub(super) struct Run {
@@ -82,7 +81,6 @@ pub(super) fn run_level(
     let folder = root.join(RUNS_DIR).join(&case.name);
     let tag = format!("{level}-{}", scheme_name(scheme));
     let done = folder.join(&tag);
-    let partial = folder.join(format!("{tag}.partial"));
     let previous = if opts.reuse || opts.no_run {
         finished_run(&done, &resolved)
     } else {
@@ -98,13 +96,18 @@ pub(super) fn run_level(
             "{NOT_RUN}: no finished run of this case at this level"
         ))
     } else {
-        let _ = std::fs::remove_dir_all(&partial);
         println!(
             "{} {tag}: {} × {} cells to t = {} s ...",
             case.name, cells.0, cells.1, resolved.run.end_time
         );
-        // `Paper` runs the resolved case as it is (at_fidelity(Paper) is the identity)
-        match run_case(&resolved, Fidelity::Paper, &partial, |p| {
+        // `Paper` runs the resolved case as it is (at_fidelity(Paper) is the identity); the
+        // summary names the level, not the `Paper` the runner was handed
+        let request = Request {
+            reuse: Reuse::Never,
+            label: Some(format!("error-time {level}")),
+            ..Request::default()
+        };
+        match store::obtain(&done, &resolved, Fidelity::Paper, &request, |p| {
             if p.steps % 500 == 0 {
                 eprintln!(
                     "  t = {:.3} s, dt = {:.1e} s, {} it",
@@ -112,14 +115,8 @@ pub(super) fn run_level(
                 );
             }
         }) {
-            Ok(mut s) => {
-                // the summary names the level, not the `Paper` the runner was handed
-                s.fidelity = format!("error-time {level}");
-                s.write_json(&partial.join("summary.json"))?;
-                let _ = std::fs::remove_dir_all(&done);
-                std::fs::rename(&partial, &done).with_context(|| {
-                    format!("renaming {} to {}", partial.display(), done.display())
-                })?;
+            Ok(stored) => {
+                let s = stored.summary().clone();
                 println!(
                     "  {:?} at t = {:.3} s: {} steps, {:.1} s wall",
                     s.status, s.simulated_time, s.steps, s.wall_time

@@ -2,8 +2,6 @@
 //! `mod common;`, so not every item is used by every file).
 #![allow(dead_code)]
 
-use std::path::Path;
-
 use runout_closures::{
     ClosureParams, Drag, FrictionModel, FrictionParams, Gas, Particles, RadialDistribution,
 };
@@ -27,15 +25,4 @@ pub fn paper_particles_in_air(friction_model: FrictionModel, eps_max: f64) -> Cl
         friction_model,
         drag: Drag::Gidaspow,
     }
-}
-
-/// The last row of a run's `bulk.csv`: t, solids mass, front x, mean u_s.
-pub fn last_bulk_row(run_dir: &Path) -> Vec<f64> {
-    let bulk = std::fs::read_to_string(run_dir.join("bulk.csv")).unwrap();
-    bulk.lines()
-        .last()
-        .unwrap()
-        .split(',')
-        .map(|v| v.parse().unwrap())
-        .collect()
 }

@@ -18,7 +18,7 @@ fn a_failed_write_ends_the_run_with_a_summary_and_no_temporary_file() {
     let _ = std::fs::remove_dir_all(&out);
     // the smoke run writes fields_00000.vtr at t = 0 and fields_00001.vtr at its end
     let blocker = out.join("fields_00001.vtr");
-    let err = runout_solver::run_case(case, Fidelity::Smoke, &out, |_| {
+    let err = runout_run::run_case(case, Fidelity::Smoke, &out, |_| {
         if !blocker.exists() {
             std::fs::create_dir_all(blocker.join("in-the-way")).unwrap();
         }

@@ -5,11 +5,11 @@ use runout_case::{Case, Gravity, ImpactCriterion};
 use runout_mesh::Grid;
 use runout_output::{CellField, OutputError, PvdSeries};
 
-use super::build::gravity_vector;
-use super::RunError;
-use crate::single_phase::SinglePhase;
-use crate::state::{SolverState, StateError};
-use crate::two_fluid::TwoFluid;
+use crate::build::gravity_vector;
+use crate::RunError;
+use runout_solver::single_phase::SinglePhase;
+use runout_solver::state::{SolverState, StateError};
+use runout_solver::two_fluid::TwoFluid;
 
 /// What one time step of a case solver reports to the time loop.
 pub(super) struct StepReport {

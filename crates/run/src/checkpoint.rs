@@ -17,9 +17,9 @@ use std::path::{Path, PathBuf};
 use runout_output::{OutputError, RunSummary};
 use serde::{Deserialize, Serialize};
 
-use super::dt_controller::DtController;
-use super::monitors::MonitorsState;
-use crate::state::SolverState;
+use crate::dt_controller::DtController;
+use crate::monitors::MonitorsState;
+use runout_solver::state::SolverState;
 
 /// The folder of a run's checkpoints.
 pub const CHECKPOINT_DIR: &str = "checkpoints";

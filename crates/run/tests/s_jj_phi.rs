@@ -29,7 +29,7 @@ fn run(fidelity: Fidelity) -> (RunSummary, f64) {
         fidelity.name(),
         std::process::id()
     ));
-    let summary = runout_solver::run_case(&case, fidelity, &out, |_| {}).unwrap();
+    let summary = runout_run::run_case(&case, fidelity, &out, |_| {}).unwrap();
     eprintln!(
         "S-JJ-phi φ = 0.1 at {}: {:?}, t = {} s, {} steps ({} rejected), {:.1} outer it./step, \
          mass change {:.2e}, max εs {:.4}, {:.1} s wall, {:.1} s wall per simulated second",

@@ -14,8 +14,6 @@ use std::path::Path;
 use runout_case::{load, Case, Fidelity, Loaded, WallRelaxationScope};
 use runout_output::{RunStatus, RunSummary};
 
-mod common;
-
 fn case() -> Case {
     let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../cases/sensitivity/S-JJ-phi.ron");
     let Loaded::Cases(cases) = load(&file).unwrap() else {
@@ -42,8 +40,8 @@ fn run(wall_closures: f64, scope: WallRelaxationScope) -> (RunSummary, Vec<f64>)
         "runout-wall-relax-{wall_closures}-{scope:?}-{}",
         std::process::id()
     ));
-    let summary = runout_solver::run_case(&case, Fidelity::Smoke, &out, |_| {}).unwrap();
-    let last = common::last_bulk_row(&out);
+    let summary = runout_run::run_case(&case, Fidelity::Smoke, &out, |_| {}).unwrap();
+    let last = last_bulk_row(&out);
     eprintln!(
         "ω = {wall_closures} ({scope:?}): {:?} at t = {} s, {} steps ({} rejected), front {} m, mean u_s {} m/s",
         summary.status,
@@ -55,6 +53,16 @@ fn run(wall_closures: f64, scope: WallRelaxationScope) -> (RunSummary, Vec<f64>)
     );
     let _ = std::fs::remove_dir_all(&out);
     (summary, last)
+}
+
+/// The last row of a run's `bulk.csv` (t, solids mass, front x, mean u_s), read with the
+/// post-processing library's one CSV reader.
+fn last_bulk_row(run_dir: &Path) -> Vec<f64> {
+    let bulk = runout_post::table::Table::read(&run_dir.join("bulk.csv")).unwrap();
+    ["t", "solids_mass", "front_x", "mean_u_s"]
+        .iter()
+        .map(|c| *bulk.column(c).unwrap().last().unwrap())
+        .collect()
 }
 
 #[test]

@@ -8,8 +8,8 @@ use std::path::Path;
 
 use runout_case::{load, Case, Fidelity, Gravity, ImpactCriterion, Loaded};
 
-use super::case_solver::{PendingTilt, TwoFluidCase};
-use super::{run_solver, two_fluid_solver, RunOptions};
+use crate::case_solver::{PendingTilt, TwoFluidCase};
+use crate::{run_solver, two_fluid_solver, RunOptions};
 
 fn with(criterion: ImpactCriterion) -> Case {
     let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../cases/sensitivity/base.ron");
@@ -86,7 +86,7 @@ fn free_fall_and_given_times_are_hit_exactly_and_dense_contact_comes_later() {
 #[test]
 fn thresholds_and_times_come_from_the_release() {
     let tilt = |c| PendingTilt::of(&with(c)).unwrap().trigger;
-    use super::case_solver::ImpactTrigger as T;
+    use crate::case_solver::ImpactTrigger as T;
     assert_eq!(tilt(ImpactCriterion::FloorCell), T::FloorEpsS(0.01));
     assert_eq!(
         tilt(ImpactCriterion::DenseContact { fraction: 0.5 }),

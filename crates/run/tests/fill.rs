@@ -5,7 +5,7 @@
 use std::path::Path;
 
 use runout_case::{load, Case, Fidelity, Fill, Loaded};
-use runout_solver::run::two_fluid_solver;
+use runout_run::two_fluid_solver;
 
 fn base() -> Case {
     let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../cases/sensitivity/base.ron");

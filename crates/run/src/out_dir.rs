@@ -4,8 +4,8 @@
 
 use std::path::Path;
 
-use super::checkpoint::CHECKPOINT_DIR;
-use super::monitors::FIELDS_FILE;
+use crate::checkpoint::CHECKPOINT_DIR;
+use crate::monitors::FIELDS_FILE;
 
 /// The files a run writes, by name: the summary, the resolved case, the field series and
 /// its `.vtr` files, the monitors' CSV files and any temporary file of an atomic write.

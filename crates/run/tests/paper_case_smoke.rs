@@ -10,11 +10,19 @@ use std::path::Path;
 use runout_case::{load, Fidelity, Loaded};
 use runout_output::RunStatus;
 
-mod common;
-
 /// The values of the DataArray `name` in a .vtr file written by runout-output.
 fn vtr_array(xml: &str, name: &str) -> Vec<f64> {
     runout_output::read_vtr_array(xml, name).expect("array present")
+}
+
+/// The last row of a run's `bulk.csv` (t, solids mass, front x, mean u_s), read with the
+/// post-processing library's one CSV reader.
+fn last_bulk_row(run_dir: &Path) -> Vec<f64> {
+    let bulk = runout_post::table::Table::read(&run_dir.join("bulk.csv")).unwrap();
+    ["t", "solids_mass", "front_x", "mean_u_s"]
+        .iter()
+        .map(|c| *bulk.column(c).unwrap().last().unwrap())
+        .collect()
 }
 
 #[test]
@@ -30,7 +38,7 @@ fn s_ps_d_smoke_runs_conserves_mass_and_slides() {
         .case;
     let out = std::env::temp_dir().join(format!("runout-sps-smoke-{}", std::process::id()));
     let verbose = std::env::var("RUNOUT_VERBOSE").is_ok();
-    let summary = runout_solver::run_case(&case, Fidelity::Smoke, &out, |p| {
+    let summary = runout_run::run_case(&case, Fidelity::Smoke, &out, |p| {
         if verbose && p.steps % 20 == 0 {
             eprintln!(
                 "t = {:.4} s, dt = {:.2e} s, {} it",
@@ -60,6 +68,6 @@ fn s_ps_d_smoke_runs_conserves_mass_and_slides() {
     let max_eps = eps.iter().cloned().fold(0.0, f64::max);
     assert!(max_eps <= 0.65 + 0.02, "max eps {max_eps}");
     // εs-weighted mean solids velocity downslope at the end (bulk monitor)
-    let last_row = common::last_bulk_row(&out);
+    let last_row = last_bulk_row(&out);
     assert!(last_row[3] > 0.1, "mean u_s {}", last_row[3]);
 }

@@ -9,10 +9,10 @@ use runout_closures::{ClosureParams, FrictionParams, Gas, Particles};
 use runout_mesh::{Grid, Sides};
 use runout_walls::{RobinFace, SolidsWallModel};
 
-use super::RunError;
-use crate::single_phase::{Fluid, Settings, SideBc, SinglePhase};
-use crate::transport::Scheme;
-use crate::two_fluid::{SolidsSpec, TwoFluid, TwoFluidSettings};
+use crate::RunError;
+use runout_solver::single_phase::{Fluid, Settings, SideBc, SinglePhase};
+use runout_solver::transport::Scheme;
+use runout_solver::two_fluid::{SolidsSpec, TwoFluid, TwoFluidSettings};
 
 fn wall_closure(gas: &GasWall) -> RobinFace {
     match *gas {

@@ -4,8 +4,8 @@
 use runout_case::{Case, GasSidewall, SolidsWall};
 use runout_walls::SolidsWallModel;
 
-use super::RunError;
-use crate::two_fluid::Sidewalls;
+use crate::RunError;
+use runout_solver::two_fluid::Sidewalls;
 
 /// The side walls of a two-fluid case, their solids condition as a wall model (validated
 /// as a floor's), or none.

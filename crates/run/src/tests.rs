@@ -8,9 +8,9 @@ use runout_case::{load, Case, Fidelity, Loaded, RunControl};
 use runout_mesh::Grid;
 use runout_output::{OutputError, PvdSeries, RunStatus};
 
-use super::case_solver::{CaseSolver, StepReport};
-use super::{run_solver, RunError, RunOptions};
-use crate::state::{SolverState, StateError};
+use crate::case_solver::{CaseSolver, StepReport};
+use crate::{run_solver, RunError, RunOptions};
+use runout_solver::state::{SolverState, StateError};
 
 /// A solver whose step errors while the step is longer than `largest_good_dt` or for
 /// its first `errors` attempts; otherwise it converges in 3 iterations.

@@ -1,4 +1,4 @@
-//! Running a case: the time loop with MFIX's adaptive time step (docs/model.md §4.12) and its
+//! runout-run, the driver: running a case: the time loop with MFIX's adaptive time step (docs/model.md §4.12) and its
 //! retries, the monitors, checkpoints and restarts, stopping on a signal, and the run
 //! summary.
 //!
@@ -6,6 +6,8 @@
 //! loop's view of a solver, [`dt_controller`] the Δt rule, [`monitors`] the scheduled
 //! output, [`checkpoint`] the restart files, [`out_dir`] the run folder's protection,
 //! [`signals`] the stop on SIGINT/SIGTERM.
+
+#![deny(missing_docs)]
 
 mod build;
 mod case_solver;
@@ -15,6 +17,7 @@ mod monitors;
 pub mod out_dir;
 mod sidewalls;
 pub mod signals;
+pub mod store;
 
 use std::path::Path;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -27,10 +30,10 @@ use runout_output::{DtStats, OutputError, RunStatus, RunSummary};
 pub use build::{single_phase_solver, two_fluid_solver};
 pub use dt_controller::DtController;
 
-use crate::single_phase::SolverError;
 use case_solver::{CaseSolver, PendingTilt, SinglePhaseCase, StepReport, TwoFluidCase};
 use checkpoint::Checkpoint;
 use monitors::Monitors;
+use runout_solver::single_phase::SolverError;
 
 /// Why a case cannot run or stopped.
 #[derive(Debug, thiserror::Error)]

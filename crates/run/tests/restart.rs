@@ -18,7 +18,7 @@ use std::sync::Arc;
 
 use runout_case::{load, Case, Fidelity, Loaded};
 use runout_output::{RunStatus, RunSummary};
-use runout_solver::run::{checkpoint, run_case_with, RunOptions};
+use runout_run::{checkpoint, run_case_with, RunOptions};
 
 fn slide() -> Case {
     let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../cases/sensitivity/S-JJ-phi.ron");

@@ -37,7 +37,7 @@ fn run_a1(tag: &str) -> (Case, PathBuf, RunSummary) {
     let case = cases.remove(0).case;
     let out = std::env::temp_dir().join(format!("runout-collapse-{tag}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&out);
-    let summary = runout_solver::run_case(&case, Fidelity::Smoke, &out, |_| {}).unwrap();
+    let summary = runout_run::run_case(&case, Fidelity::Smoke, &out, |_| {}).unwrap();
     eprintln!("{summary:?}");
     (case, out, summary)
 }

@@ -7,7 +7,7 @@
 use std::path::Path;
 
 use runout_case::{load_case, Fidelity, GasSidewall, Gravity, Sidewalls, SolidsWall};
-use runout_solver::run::two_fluid_solver;
+use runout_run::two_fluid_solver;
 use runout_solver::two_fluid::TwoFluid;
 
 /// Steps of the comparison and their Δt [s].

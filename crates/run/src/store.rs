@@ -1,0 +1,192 @@
+//! The run store: how every tool that runs cases (the sweep, the stability suite, the error
+//! study, the collapses, the calibration) keeps its runs, one folder per finished run.
+//!
+//! A run is written into `<done>.partial/` and renamed to `<done>/` only when it ends, so a
+//! folder without the suffix always holds a finished run (completed or stopped with a
+//! diagnosis), never a half-written one. An interrupted run keeps its `.partial` folder
+//! with its checkpoint, and the next request continues it (when the checkpoint is of the
+//! same case and solver version; otherwise it starts again). A finished run is reused
+//! when the case it ran, as resolved at its fidelity, is the case asked for
+//! ([`finished_run`]).
+
+use std::path::{Path, PathBuf};
+use std::sync::atomic::AtomicBool;
+use std::sync::Arc;
+use std::time::Duration;
+
+use runout_case::{Case, Fidelity};
+use runout_output::{RunStatus, RunSummary};
+
+use crate::{checkpoint, run_case_with, Progress, RunError, RunOptions};
+
+/// The folder a run is written into before it is finished: `<done>.partial`.
+pub fn partial_dir(done: &Path) -> PathBuf {
+    let name = done
+        .file_name()
+        .map_or_else(String::new, |n| n.to_string_lossy().into_owned());
+    done.with_file_name(format!("{name}.partial"))
+}
+
+/// The summary in `dir`, if it holds one that reads.
+pub fn read_summary(dir: &Path) -> Option<RunSummary> {
+    serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).ok()?).ok()
+}
+
+/// The finished run in `dir` if it ran exactly `resolved`: its `resolved.ron` is read back
+/// as a case and compared field by field, so a run made before a schema field was added
+/// (whose file lacks it, read with the field's default) still counts when the default is
+/// what `resolved` has. The fidelity presets are not compared: a resolved case already
+/// carries its fidelity's grid and end time, and runs as it is. The solver version that
+/// made the run is not compared either.
+///
+/// Both sides are compared in the start clock ([`Case::with_start_clock`]): a run writes its
+/// case that way, so a case whose times count from the impact matches its own run.
+pub fn finished_run(dir: &Path, resolved: &Case) -> Option<RunSummary> {
+    let mut stored: Case =
+        ron::from_str(&std::fs::read_to_string(dir.join("resolved.ron")).ok()?).ok()?;
+    stored.fidelity = resolved.fidelity.clone();
+    if stored.with_start_clock() != resolved.clone().with_start_clock() {
+        return None;
+    }
+    read_summary(dir)
+}
+
+/// When a finished run in the store is taken instead of running again.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Reuse {
+    /// never: the run is made again
+    Never,
+    /// when it ran the same resolved case ([`finished_run`])
+    SameCase,
+    /// whenever the folder holds a finished run's summary (the caller vouches for the case)
+    AnyFinished,
+}
+
+/// How a run is requested from the store.
+#[derive(Clone, Debug)]
+pub struct Request {
+    /// when a finished run is taken instead
+    pub reuse: Reuse,
+    /// continue an interrupted run from the checkpoint in its `.partial` folder
+    pub resume: bool,
+    /// also checkpoint after every this much wall time
+    pub checkpoint_every: Option<Duration>,
+    /// set (by a signal handler) to stop at the end of the current step with a checkpoint
+    pub stop: Option<Arc<AtomicBool>>,
+    /// the fidelity written into the summary, when it is not the one the case ran at (the
+    /// error study runs resolved levels as `Paper`)
+    pub label: Option<String>,
+}
+
+impl Default for Request {
+    fn default() -> Self {
+        Request {
+            reuse: Reuse::SameCase,
+            resume: true,
+            checkpoint_every: None,
+            stop: None,
+            label: None,
+        }
+    }
+}
+
+/// What the store gave.
+#[derive(Clone, Debug)]
+pub enum Stored {
+    /// a finished run found in the store
+    Reused(RunSummary),
+    /// run now (completed, or stopped with a diagnosis) and moved into its folder
+    Ran(RunSummary),
+    /// stopped by a signal: its `.partial` folder holds a checkpoint to continue from
+    Interrupted(RunSummary),
+}
+
+impl Stored {
+    /// The run's summary.
+    pub fn summary(&self) -> &RunSummary {
+        match self {
+            Stored::Reused(s) | Stored::Ran(s) | Stored::Interrupted(s) => s,
+        }
+    }
+}
+
+/// The run of `case` at `fidelity` in folder `done`: reused, continued or made, as
+/// `request` says. A run the solver cannot make leaves no folder; a run that fails to
+/// write keeps its `.partial` folder for inspection.
+pub fn obtain(
+    done: &Path,
+    case: &Case,
+    fidelity: Fidelity,
+    request: &Request,
+    mut progress: impl FnMut(&Progress),
+) -> Result<Stored, RunError> {
+    let previous = match request.reuse {
+        Reuse::Never => None,
+        Reuse::SameCase => finished_run(done, &case.at_fidelity(fidelity)),
+        Reuse::AnyFinished => read_summary(done),
+    };
+    if let Some(summary) = previous {
+        return Ok(Stored::Reused(summary));
+    }
+    let partial = partial_dir(done);
+    let mut options = RunOptions {
+        restart: request.resume && checkpoint::exists(&partial),
+        replace: true,
+        checkpoint_every: request.checkpoint_every,
+        stop: request.stop.clone(),
+    };
+    if !options.restart {
+        let _ = std::fs::remove_dir_all(&partial);
+    }
+    let mut result = run_case_with(case, fidelity, &partial, &options, &mut progress);
+    if let (true, Err(RunError::Checkpoint { source, .. })) = (options.restart, &result) {
+        // another case or another runout wrote that checkpoint: start again
+        tracing::warn!("{}: starting again ({source})", case.name);
+        options.restart = false;
+        let _ = std::fs::remove_dir_all(&partial);
+        result = run_case_with(case, fidelity, &partial, &options, &mut progress);
+    }
+    let mut summary = match result {
+        Err(e @ RunError::Unsupported { .. }) => {
+            let _ = std::fs::remove_dir_all(&partial);
+            return Err(e);
+        }
+        other => other?,
+    };
+    if summary.status == RunStatus::Interrupted {
+        return Ok(Stored::Interrupted(summary));
+    }
+    if let Some(label) = &request.label {
+        summary.fidelity = label.clone();
+        summary
+            .write_json(&partial.join("summary.json"))
+            .map_err(|source| RunError::Output {
+                case: case.name.clone(),
+                source,
+            })?;
+    }
+    move_into_place(&partial, done)?;
+    Ok(Stored::Ran(summary))
+}
+
+/// Replaces `done` (an earlier run, if any) by the finished run in `partial`.
+fn move_into_place(partial: &Path, done: &Path) -> Result<(), RunError> {
+    let _ = std::fs::remove_dir_all(done);
+    std::fs::rename(partial, done).map_err(|e| RunError::OutDir {
+        dir: done.to_path_buf(),
+        reason: format!("renaming {} to it: {e}", partial.display()),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_partial_folder_sits_beside_the_finished_one() {
+        assert_eq!(
+            partial_dir(Path::new("runs/M-JJ/coarse")),
+            Path::new("runs/M-JJ/coarse.partial")
+        );
+    }
+}
