@@ -6,9 +6,10 @@
 //!   cases that need the two-fluid model (issue 7) are reported as unsupported.
 //! - `bench linsolve`: the linear-solver timing table of docs/performance.md;
 //! - `bench two-fluid`: the two-fluid solver's cost table (issue 22).
-//! - `verify <name> [--report]`: the verification suite of the single-phase core;
+//! - `verify <name> [--report]`: the checks of runout-verification's registry at full size
+//!   ([`verify`]): one check (cavity, poiseuille, taylor-green, chute, haff, cooling,
+//!   settling, fluidized-bed, s-jj-phi) or a group (single-phase, two-fluid, all);
 //!   `verify mfix-slope`: family M against MFIX (issue 9, [`mfix_slope`]);
-//!   `verify two-fluid`: issue 7's cooling, settling and S-JJ-phi checks at full size;
 //!   `verify collapse [--fidelity smoke|coarse] [--reuse]`: issue 7's granular column collapse
 //!   check;
 //! - `report analytic`: family A, the closed-form profiles of paper Fig. 1, as SVG and CSV
@@ -168,13 +169,13 @@ enum Task {
         #[arg(long)]
         end_time: Option<f64>,
     },
-    /// Verification: the single-phase core (issue 6: cavity, cavity-re1000, poiseuille,
-    /// taylor-green, all), the steady chute and the granular column collapse (issue 7:
-    /// chute, collapse) and family M
-    /// against MFIX (issue 9: mfix-slope).
+    /// Verification: the checks of runout-verification at full size (cavity, poiseuille,
+    /// taylor-green, chute, haff, cooling, settling, fluidized-bed, s-jj-phi; groups
+    /// single-phase, two-fluid, all), the Re = 1000 cavity study (cavity-re1000), the
+    /// granular column collapse (collapse) and family M against MFIX (mfix-slope).
     Verify {
-        /// cavity, cavity-re1000, poiseuille, taylor-green, all, two-fluid, chute, collapse
-        /// or mfix-slope
+        /// a check, a group (single-phase, two-fluid, all), cavity-re1000, collapse or
+        /// mfix-slope
         name: String,
         /// also write error against run time (CSV/SVG/Markdown) into docs/verification/
         #[arg(long)]
@@ -394,8 +395,9 @@ fn error_time_task(
     error_time::error_time(&root(), &opts)
 }
 
-/// `cargo xtask verify <name>`: family M against MFIX, the two-fluid test suite at full
-/// size, the chute, the column collapse, or the single-phase core.
+/// `cargo xtask verify <name>`: family M against MFIX, the column collapse, or the checks of
+/// runout-verification's registry at full size (one, or a group: single-phase, two-fluid,
+/// all).
 fn verify_task(
     name: &str,
     report: bool,
@@ -417,32 +419,6 @@ fn verify_task(
             };
             mfix_slope::check(&root(), &opts)
         }
-        // issue 7's two-fluid checks at full size: homogeneous cooling, the settling
-        // column, the fluidized bed's gas pressure drop and S-JJ-phi φ = 0.1 at smoke
-        // and coarse fidelity to 1.25 s (the test suite runs all but the coarse one)
-        "two-fluid" => cargo(
-            &[
-                "test",
-                "--release",
-                "-p",
-                "runout-solver",
-                "--test",
-                "tfm_cooling",
-                "--test",
-                "settling",
-                "--test",
-                "fluidized_bed",
-                "--test",
-                "s_jj_phi",
-                "--",
-                "--include-ignored",
-                "--nocapture",
-                "--test-threads",
-                "1",
-            ],
-            "two-fluid verification",
-        ),
-        "chute" => chute::verify(&root()),
         "collapse" => collapse::verify(
             &root(),
             parse_fidelity(fidelity.unwrap_or("coarse"))?,

@@ -21,12 +21,10 @@ use runout_case::{load, Fidelity, Loaded, SourcedCase};
 use runout_output::{read_vtr_array, RunSummary};
 use runout_run::run_case;
 
-/// MFIX's results (cases.md "Family M"): (t, front x, ū_s).
-pub const MFIX: [(f64, f64, f64); 3] = [(0.3, 1.04, 1.25), (0.5, 1.66, 1.97), (0.8, 2.92, 3.01)];
-/// MFIX's cost: CPU s per simulated second, serial (cases.md).
-pub const MFIX_CPU_PER_SIMULATED_SECOND: f64 = 490.0;
-/// MFIX's rejected steps over the 1 s run (cases.md).
-pub const MFIX_REJECTED: u64 = 72;
+use runout_verification::references::mfix_family_m::{
+    MFIX, MFIX_CPU_PER_SIMULATED_SECOND, MFIX_REJECTED,
+};
+
 /// Largest relative difference allowed (issue 9).
 pub const TOLERANCE: f64 = 0.05;
 /// The time of the floor-variant comparison (issue 9, item 4) [s].

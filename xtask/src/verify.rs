@@ -1,42 +1,35 @@
-//! `cargo xtask verify <name> [--report]`: the full-size verification problems of the
-//! single-phase core (issue 6), from `runout_solver::verify`.
+//! `cargo xtask verify <name> [--report]`: the checks of runout-verification at full size
+//! ([`runout_verification::registry`]), one by name or a group of them:
 //!
-//! - `cavity`: 129 × 129 lid-driven cavity with Superbee at Re = 100 and 1000 against Ghia,
-//!   Ghia & Shin (1982), target: largest centreline deviation < 1% of the lid speed; at
-//!   Re = 1000 also against the spectral values of Botella & Peyret (1998).
+//! - a check: `cavity`, `poiseuille`, `taylor-green`, `chute`, `haff`, `cooling`,
+//!   `settling`, `fluidized-bed`, `s-jj-phi` (`chute` also writes docs/chute.md,
+//!   [`crate::chute`]);
+//! - a group: `single-phase` (cavity, poiseuille, taylor-green), `two-fluid` (haff,
+//!   cooling, settling, fluidized-bed, s-jj-phi) or `all` (every check);
 //! - `cavity-re1000`: the investigation of the Re = 1000 deviation (docs/verification.md):
 //!   every sample against both references, centreline extrema, a tighter steady tolerance
-//!   and the 65 × 65 grid.
-//! - `poiseuille`: partial-slip channel, observed order on uniform and stretched grids.
-//! - `taylor-green`: space order (Richardson in time) and time order (self-convergence),
-//!   and the per-step mass check.
-//! - `all`: cavity, poiseuille and taylor-green.
+//!   and the 65 × 65 grid (a study without a limit, not a check).
 //!
 //! `--report` adds the error-against-run-time study over grid levels and both convection
-//! schemes (for `cavity`, `poiseuille` or both with `all`): CSV, SVG and a Markdown table
-//! per problem in docs/verification/.
+//! schemes (for `cavity` and `poiseuille`, also when a group holds them): CSV, SVG and a
+//! Markdown table per problem in docs/verification/.
 
 use std::fmt::Write as _;
 use std::path::Path;
 
 use anyhow::{bail, Context, Result};
 use plotters::prelude::*;
-use runout_solver::verify::{
-    cavity, cavity_solve, centreline_extrema, compare_centrelines, mass_conservation,
-    poiseuille_order, taylor_green_space_order, taylor_green_time_order, CavitySetup,
-    CentrelineComparison, ChannelGrid, OrderStudy, BOTELLA_PEYRET_RE1000,
-    BOTELLA_PEYRET_RE1000_EXTREMA, GHIA_RE1000, MASS_TOLERANCE,
-};
 use runout_solver::{Scheme, SinglePhase};
+use runout_verification::checks::CAVITY_CELLS;
+use runout_verification::problems::{
+    cavity, cavity_solve, centreline_extrema, compare_centrelines, poiseuille_order, CavitySetup,
+    CentrelineComparison, ChannelGrid, BOTELLA_PEYRET_RE1000, BOTELLA_PEYRET_RE1000_EXTREMA,
+    GHIA_RE1000,
+};
+use runout_verification::{find, group, registry, Outcome, Size};
 
 use crate::figure::legend;
 
-/// Cells per side of the acceptance cavity (Ghia's grid has 129 lines).
-const CAVITY_CELLS: usize = 129;
-/// Largest centreline deviation allowed at 129 × 129 (issue 6): 1% of the lid speed.
-const CAVITY_TARGET: f64 = 0.01;
-/// Smallest observed order of the Poiseuille velocity (issue 6).
-const POISEUILLE_MIN_ORDER: f64 = 1.8;
 /// Output directory of `--report`, relative to the workspace root.
 const OUTPUT_DIR: &str = "docs/verification";
 /// SVG size [px].
@@ -51,33 +44,59 @@ const COLOURS: [RGBColor; 6] = [
     RGBColor(0, 0, 0),
 ];
 
-/// Runs verification `name` (`cavity`, `cavity-re1000`, `poiseuille`, `taylor-green`,
-/// `all`) and prints its numbers; with `report`, also writes the error-against-run-time
-/// study into `root/docs/verification/`. Fails if a check misses its target.
-pub fn verify(name: &str, report: bool, root: &Path) -> Result<()> {
-    let mut failures = Vec::new();
-    match name {
-        "cavity" => cavity_check(&mut failures)?,
-        "cavity-re1000" => cavity_re1000()?,
-        "poiseuille" => poiseuille_check(&mut failures)?,
-        "taylor-green" => taylor_green_check(&mut failures)?,
-        "all" => {
-            cavity_check(&mut failures)?;
-            poiseuille_check(&mut failures)?;
-            taylor_green_check(&mut failures)?;
+/// The checks `name` stands for: a group or one registered check.
+fn selection(name: &str) -> Result<Vec<&'static str>> {
+    if let Some(names) = group(name) {
+        return Ok(names);
+    }
+    match find(name) {
+        Some(check) => Ok(vec![check.name()]),
+        None => {
+            let known: Vec<&str> = registry().iter().map(|c| c.name()).collect();
+            bail!(
+                "unknown verification `{name}` (checks: {}; groups: single-phase, two-fluid, \
+                 all; studies: cavity-re1000, collapse, mfix-slope)",
+                known.join(", ")
+            )
         }
-        other => bail!(
-            "unknown verification `{other}` (known: cavity, cavity-re1000, poiseuille, \
-             taylor-green, all, two-fluid, chute, collapse, mfix-slope)"
-        ),
+    }
+}
+
+/// Runs the full-size check `name`; `chute` through [`crate::chute::verify`], which also
+/// writes its page.
+fn run_check(name: &str, root: &Path) -> Result<Outcome> {
+    if name == "chute" {
+        return crate::chute::verify(root);
+    }
+    let check = find(name).with_context(|| format!("no check `{name}`"))?;
+    println!("== {name}: {}", check.description());
+    check.run(Size::Full)
+}
+
+/// Runs verification `name` (a check, a group or `cavity-re1000`) at full size and prints
+/// its numbers; with `report`, also writes the error-against-run-time study into
+/// `root/docs/verification/`. Fails if a check misses its target.
+pub fn verify(name: &str, report: bool, root: &Path) -> Result<()> {
+    if name == "cavity-re1000" {
+        return cavity_re1000();
+    }
+    let names = selection(name)?;
+    let mut failures = Vec::new();
+    for n in &names {
+        let outcome = run_check(n, root)?;
+        print!("{outcome}");
+        failures.extend(outcome.failures().map(|m| format!("{n}: {m}")));
+        if outcome.measures.is_empty() {
+            failures.push(format!("{n}: nothing measured"));
+        }
     }
     if report {
         let out = root.join(OUTPUT_DIR);
         std::fs::create_dir_all(&out).with_context(|| format!("creating {}", out.display()))?;
-        if matches!(name, "cavity" | "all") {
+        if names.contains(&"cavity") {
             cavity_error_time(&out)?;
         }
-        if matches!(name, "poiseuille" | "all") {
+        if names.contains(&"poiseuille") {
             poiseuille_error_time(&out)?;
         }
     }
@@ -87,43 +106,6 @@ pub fn verify(name: &str, report: bool, root: &Path) -> Result<()> {
             failures.len(),
             failures.join("\n  ")
         );
-    }
-    Ok(())
-}
-
-fn verdict(ok: bool) -> &'static str {
-    if ok {
-        "PASS"
-    } else {
-        "FAIL"
-    }
-}
-
-fn cavity_check(failures: &mut Vec<String>) -> Result<()> {
-    println!("lid-driven cavity, {CAVITY_CELLS} x {CAVITY_CELLS}, Superbee, against Ghia, Ghia & Shin (1982)");
-    for re in [100.0, 1000.0] {
-        let r = cavity(&CavitySetup::new(CAVITY_CELLS, re, Scheme::Superbee))?;
-        let (which, worst) = r.ghia.worst();
-        let ok = r.converged && r.max_error < CAVITY_TARGET && r.mass_ratio <= MASS_TOLERANCE;
-        println!(
-            "  Re = {re:>4}: max |error| {:.5} ({which} at {:.4}: ours {:.5}, Ghia {:.5}); \
-             {} outer iterations, {:.1} s, mass ratio {:.1e}  {}",
-            r.max_error,
-            worst.position,
-            worst.computed,
-            worst.reference,
-            r.outer_iterations,
-            r.wall_time,
-            r.mass_ratio,
-            verdict(ok)
-        );
-        if !ok {
-            failures.push(format!(
-                "cavity Re = {re}: max centreline error {:.5} (target < {CAVITY_TARGET}), \
-                 converged {}, mass ratio {:.1e}",
-                r.max_error, r.converged, r.mass_ratio
-            ));
-        }
     }
     Ok(())
 }
@@ -315,94 +297,6 @@ fn cavity_re1000() -> Result<()> {
         against(fine, &GHIA_RE1000),
         against(finer, &GHIA_RE1000)
     );
-    Ok(())
-}
-
-fn print_study(study: &OrderStudy) {
-    println!("  {}", study.label);
-    for (k, level) in study.levels.iter().enumerate() {
-        let error = study
-            .errors
-            .get(k)
-            .map_or(String::from("-"), |e| format!("{e:.3e}"));
-        let order = if k == 0 {
-            String::from("-")
-        } else {
-            study
-                .orders
-                .get(k - 1)
-                .map_or(String::from("-"), |p| format!("{p:.3}"))
-        };
-        println!(
-            "    cells {:>4} steps {:>3}: error {error:>10}  order {order:>6}  {:>6} outer its  {:>8.3} s  mass {:.1e}",
-            level.cells, level.steps, level.outer_iterations, level.wall_time, level.mass_ratio
-        );
-    }
-}
-
-fn poiseuille_check(failures: &mut Vec<String>) -> Result<()> {
-    println!("plane Poiseuille flow, partial-slip walls, against the closed form");
-    for (grid, levels) in [
-        (ChannelGrid::Uniform, vec![8, 16, 32, 64, 128]),
-        (
-            ChannelGrid::Stretched { growth: 1.2 },
-            vec![4, 8, 16, 32, 64],
-        ),
-    ] {
-        let study = poiseuille_order(grid, &levels, Scheme::Superbee)?;
-        print_study(&study);
-        let ok =
-            study.min_order() >= POISEUILLE_MIN_ORDER && study.worst_mass_ratio() <= MASS_TOLERANCE;
-        println!(
-            "    smallest order {:.3} (target >= {POISEUILLE_MIN_ORDER})  {}",
-            study.min_order(),
-            verdict(ok)
-        );
-        if !ok {
-            failures.push(format!("{}: orders {:?}", study.label, study.orders));
-        }
-    }
-    Ok(())
-}
-
-fn taylor_green_check(failures: &mut Vec<String>) -> Result<()> {
-    println!("Taylor-Green vortex in a free-slip box (manufactured unsteady solution)");
-    let space = taylor_green_space_order(&[8, 16, 32], 8)?;
-    print_study(&space);
-    let ok = space.min_order() >= 1.8;
-    println!(
-        "    smallest space order {:.3} (expect 2)  {}",
-        space.min_order(),
-        verdict(ok)
-    );
-    if !ok {
-        failures.push(format!("{}: orders {:?}", space.label, space.orders));
-    }
-    let time = taylor_green_time_order(32, &[5, 10, 20, 40])?;
-    print_study(&time);
-    let ok = time.orders.iter().all(|p| (0.9..1.2).contains(p));
-    println!(
-        "    time orders {:?} (expect 1)  {}",
-        time.orders,
-        verdict(ok)
-    );
-    if !ok {
-        failures.push(format!("{}: orders {:?}", time.label, time.orders));
-    }
-    let mass = mass_conservation(32, 20)?;
-    let worst = mass
-        .worst
-        .max(space.worst_mass_ratio())
-        .max(time.worst_mass_ratio());
-    let ok = mass.passed() && worst <= MASS_TOLERANCE;
-    println!(
-        "  mass: net continuity imbalance of every converged step / flow through the domain: \
-         worst {worst:.2e} over all runs above (limit {MASS_TOLERANCE:e})  {}",
-        verdict(ok)
-    );
-    if !ok {
-        failures.push(format!("mass conservation: worst ratio {worst:e}"));
-    }
     Ok(())
 }
 

@@ -7,17 +7,15 @@
 //!   [`energy`] (granular energy, §4.8),
 //!   [`kinematics`] (cell strain rates), [`pea`] (partial elimination of drag, §4.5),
 //!   [`volume_fraction`] (the solids volume-fraction correction, §4.7);
-//! - [`chute1d`]: a 1-D steady inclined-chute boundary-value solver, the reference of
-//!   issue 7's chute check;
-//! - [`state`]: a solver's state between steps as named arrays (checkpoints);
-//! - [`verify`]: the verification problems of the single-phase core.
+//! - [`state`]: a solver's state between steps as named arrays (checkpoints).
+//!
+//! The verification problems, the reference solutions and the 1-D chute reference solver
+//! are in `runout-verification` (crates/verification).
 #![deny(missing_docs)]
 // Stencil loops index several staggered arrays with the same (i, j); indices read better
 // than zipped iterators there.
 #![allow(clippy::needless_range_loop)]
 
-pub mod chute1d;
-pub mod chute_check;
 pub mod energy;
 pub mod kinematics;
 pub mod momentum;
@@ -27,7 +25,6 @@ pub mod state;
 pub mod stress;
 pub mod transport;
 pub mod two_fluid;
-pub mod verify;
 pub mod volume_fraction;
 
 pub use single_phase::{

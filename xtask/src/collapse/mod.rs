@@ -12,7 +12,7 @@
 //! `resolved.ron` equals the case as it would run now is read instead of rerun (its
 //! recorded wall time is reported), e.g. to regenerate the report after changing it.
 //!
-//! The parts, one a file: [`column`] (the initial column and its scales), [`laws`] (the
+//! The parts, one a file: [`column`] (the initial column and its scales), `runout_verification::references::runout_laws` (the
 //! laboratory runout laws), [`run`] (running or reusing one column and measuring it, from
 //! [`front`], the bulk monitor's front history, and [`fields`], the last field file),
 //! [`page`] (the report) and [`plot`] (the figure); this file holds the check's stages.
@@ -20,7 +20,6 @@
 mod column;
 mod fields;
 mod front;
-mod laws;
 mod page;
 mod plot;
 mod run;

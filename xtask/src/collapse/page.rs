@@ -5,8 +5,8 @@ use std::fmt::Write as _;
 
 use runout_case::Fidelity;
 
-use super::laws::{LAJEUNESSE, LUBE};
 use super::run::Outcome;
+use runout_verification::references::{LAJEUNESSE, LUBE};
 
 fn yes_no(b: bool) -> &'static str {
     if b {

@@ -6,9 +6,9 @@ use std::path::Path;
 use anyhow::Result;
 use plotters::prelude::*;
 
-use super::laws::{LAJEUNESSE, LUBE};
 use super::run::Outcome;
 use crate::figure::legend;
+use runout_verification::references::{LAJEUNESSE, LUBE};
 
 /// SVG size [px].
 const FIGURE_SIZE: (u32, u32) = (900, 650);

@@ -2,8 +2,9 @@
 //! Johnson–Jackson floor, computed by the 2-D two-fluid solver on a periodic column
 //! ([`TwoFluidSettings::periodic_x`]) marched in time to a steady state, against the 1-D
 //! steady boundary-value solve of the same equations and closures ([`crate::chute1d`]),
-//! on the same y grid. Shared by `crates/solver/tests/chute_column.rs` (fast) and
-//! `cargo xtask verify chute` (docs/chute.md).
+//! on the same y grid. Run by the `chute` check ([`crate::checks::chute`]): fast in
+//! `crates/verification/tests/chute_column.rs`, full by `cargo xtask verify chute`
+//! (docs/chute.md).
 //!
 //! The reference is dry (ρ_g = 0, docs/chute1d.md §1) and the two-fluid solver always carries
 //! a gas, so the column's gas is made negligible rather than absent: ρ_g and μ_g are tiny
@@ -22,12 +23,12 @@ use runout_closures::{ClosureParams, Gas};
 use runout_mesh::{Axis, Grid, Sides};
 use runout_walls::{RobinFace, SolidsWallModel};
 
+use runout_solver::two_fluid::{Sidewalls, SolidsSpec, TwoFluid, TwoFluidSettings};
+use runout_solver::{Fluid, Scheme, SideBc};
+
 use crate::chute1d::{
     self, ChuteParams, ChuteProfile, ChuteSidewalls, SolverSettings, WallTreatment,
 };
-use crate::single_phase::{Fluid, SideBc};
-use crate::transport::Scheme;
-use crate::two_fluid::{Sidewalls, SolidsSpec, TwoFluid, TwoFluidSettings};
 
 /// What to run.
 #[derive(Clone, Debug)]

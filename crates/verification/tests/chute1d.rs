@@ -1,11 +1,11 @@
-//! Verification of the 1-D steady chute solver (`runout_solver::chute1d`, docs/chute1d.md):
+//! Verification of the 1-D steady chute solver (`runout_verification::chute1d`, docs/chute1d.md):
 //! the discrete diffusion operator against closed forms, the integral momentum and energy
 //! balances of a converged profile, grid convergence of u_s and θ on uniform and stretched
 //! grids against a fine-grid solution, and the error paths.
 
 use runout_closures::{ClosureParams, Gas};
 use runout_mesh::{Axis, Segment};
-use runout_solver::chute1d::{
+use runout_verification::chute1d::{
     diffusive_fluxes, interpolate, solve, solve_linear_diffusion, Chute1dError, ChuteParams,
     ChuteProfile, InitialGuess, SolverSettings, WallTreatment,
 };

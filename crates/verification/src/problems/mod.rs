@@ -1,9 +1,9 @@
-//! Verification problems of the single-phase core (issue 6), shared by the fast tests and
-//! `cargo xtask verify`.
+//! The verification problems: each sets up a solver, runs it and returns a structured
+//! result (errors against the reference, observed orders, outer iterations, wall time). The
+//! checks of [`crate::checks`] run them at a fast size (the tests of
+//! `crates/verification/tests/`) and a full size (`cargo xtask verify`).
 //!
-//! Each problem sets up a [`SinglePhase`], runs it and returns a structured result: errors
-//! against the reference, observed orders, outer iterations and wall time. The tests in
-//! `crates/solver/tests/` call them at small sizes; `cargo xtask verify` runs full sizes.
+//! Single-phase core (issue 6):
 //!
 //! - [`cavity`]: lid-driven cavity against the centreline velocities of Ghia, Ghia & Shin
 //!   (1982) ([`GHIA_RE100`], [`GHIA_RE1000`]); [`BOTELLA_PEYRET_RE1000`] and
@@ -15,6 +15,16 @@
 //!   vortex in a free-slip box as a manufactured unsteady solution.
 //! - [`mass_conservation`]: the net continuity imbalance after every converged step,
 //!   relative to the flow through the domain ([`section_flow`]).
+//!
+//! Two-fluid model (issue 7):
+//!
+//! - [`chute_column`]: steady chute flow on a periodic column against the 1-D reference
+//!   ([`crate::chute1d`]);
+//! - [`haff_energy`]: the assembled granular-energy equation against Haff's law;
+//! - [`cooling_box`]: homogeneous cooling through the whole two-fluid step;
+//! - [`settling_column`]: a suspension settling into a packed bed that carries its weight;
+//! - [`fluidized_bed`]: a bed hanging on the gas pressure drop;
+//! - [`s_jj_phi`]: the paper's slide with a Johnson–Jackson floor through the driver.
 
 use std::f64::consts::PI;
 use std::time::Instant;
@@ -23,8 +33,12 @@ use runout_linsolve::LinearSolverKind;
 use runout_mesh::{Axis, Grid, MeshError, Segment, Sides};
 use runout_walls::RobinFace;
 
-use crate::single_phase::{Fluid, Settings, SideBc, SinglePhase, SolverError, SteadyReport};
-use crate::transport::Scheme;
+use runout_solver::{Fluid, Scheme, Settings, SideBc, SinglePhase, SolverError, SteadyReport};
+
+pub use crate::references::{
+    ghia, CentrelineExtrema, CentrelineReference, BOTELLA_PEYRET_RE1000,
+    BOTELLA_PEYRET_RE1000_EXTREMA, GHIA_RE100, GHIA_RE1000, GHIA_X, GHIA_Y,
+};
 
 /// Largest allowed net continuity imbalance of a converged step relative to the flow
 /// through the domain (issue 6).
@@ -65,13 +79,18 @@ pub enum VerifyError {
 }
 
 mod channel;
+pub mod chute_column;
+pub mod cooling_box;
+pub mod fluidized_bed;
+pub mod haff_energy;
 mod lid_driven;
-mod references;
+pub mod paper_material;
+pub mod s_jj_phi;
+pub mod settling_column;
 mod vortex;
 
 pub use channel::*;
 pub use lid_driven::*;
-pub use references::*;
 pub use vortex::*;
 
 // ---------------------------------------------------------------------------------------

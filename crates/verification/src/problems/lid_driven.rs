@@ -1,5 +1,5 @@
 //! The lid-driven cavity against the centreline velocities of the references
-//! ([`super::references`]).
+//! ([`crate::references`]).
 
 use super::*;
 

@@ -1,4 +1,5 @@
-//! The laboratory runout laws the collapse is set beside: (L∞ − L0)/L0 = λ1 a below the
+//! The laboratory runout laws of the granular column collapse (`cargo xtask verify collapse`,
+//! docs/collapse.md): (L∞ − L0)/L0 = λ1 a below the
 //! crossover aspect ratio, λ2 a^{2/3} above it, after Lajeunesse et al. (2005) and Lube et
 //! al. (2005).
 
@@ -62,7 +63,7 @@ impl ScalingLaw {
     }
 
     /// The runout as a table entry: one value, or "low–high" in the crossover range.
-    pub(super) fn label(&self, a: f64) -> String {
+    pub fn label(&self, a: f64) -> String {
         let (lo, hi) = self.runout(a);
         if hi - lo < 1e-9 {
             format!("{lo:.2}")
