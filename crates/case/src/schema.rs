@@ -5,10 +5,13 @@
 //! Defaults are MFIX 21.3.2's (docs/model.md §5) unless a field says otherwise.
 
 pub use runout_closures::{Drag, FrictionModel, RadialDistribution};
-use runout_mesh::{short, AxisSpec, Side, Sides};
+use runout_mesh::{AxisSpec, Side, Sides};
 use serde::{Deserialize, Serialize};
 
 pub use crate::sidewalls::{GasSidewall, Sidewalls};
+/// A side's solids condition: the wall crate's type, with its validation
+/// ([`SolidsWall::model`]).
+pub use runout_walls::SolidsWall;
 
 /// One simulation case (a `Case(...)` file).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -208,94 +211,6 @@ pub enum GasWall {
         #[serde(default)]
         u_w: f64,
     },
-}
-
-/// Solids condition on a wall: the paper's subject (paper §2.2, docs/model.md §3).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub enum SolidsWall {
-    /// Zero solids velocity on the wall; zero granular-energy flux (MFIX NSW, `BC_JJ_PS = 0`).
-    NoSlip,
-    /// Zero tangential stress; zero granular-energy flux (MFIX FSW, `BC_JJ_PS = 0`).
-    FreeSlip,
-    /// User-set partial slip (paper Eqs. 12–13, MFIX PSW with `BC_JJ_PS = 0`):
-    /// du/dn + h_u (u − u_w) = 0 and dθ/dn + h_θ (θ − θ_w) = c, both in MFIX's manual
-    /// units (docs/model.md §3.3): h in m⁻¹, c in m s⁻² (no conductivity factor).
-    PartialSlip {
-        /// h_w^u [m⁻¹] (MFIX `BC_HW_S`)
-        h_u: f64,
-        /// wall velocity U_w [m s⁻¹] (MFIX `BC_UW_S`)
-        #[serde(default)]
-        u_w: f64,
-        /// h_w^θ [m⁻¹] (MFIX `BC_HW_THETA_M`)
-        h_theta: f64,
-        /// θ_w [m² s⁻²] (MFIX `BC_THETAW_M`)
-        theta_w: f64,
-        /// c_w [m s⁻²] (MFIX `BC_C_THETA_M`)
-        c: f64,
-    },
-    /// Johnson & Jackson (1987) with a constant specularity (paper Eqs. 14, 18–19;
-    /// docs/model.md §3.5–3.6).
-    JohnsonJackson {
-        /// specularity coefficient φ [-] (MFIX `PHIP`)
-        specularity: f64,
-        /// particle–wall restitution e_w [-] (MFIX `E_W`)
-        wall_restitution: f64,
-        /// wall friction angle δ_w [deg] (MFIX `PHI_W`)
-        wall_friction_angle: f64,
-        /// wall velocity [m s⁻¹] (MFIX `BC_UW_S`)
-        #[serde(default)]
-        u_w: f64,
-    },
-    /// Johnson–Jackson with Li & Benyahia's (2012) specularity φ(r), the paper's
-    /// "revisited JJ" (paper Eqs. 16–17 as MFIX codes them, docs/model.md §3.7).
-    RevisitedJohnsonJackson {
-        /// particle–wall restitution e_w [-]
-        wall_restitution: f64,
-        /// wall friction angle δ_w [deg]
-        wall_friction_angle: f64,
-        /// φ₀ override (MFIX `PHIP0`); computed from k when absent
-        #[serde(default)]
-        phi0: Option<f64>,
-        /// wall velocity [m s⁻¹]
-        #[serde(default)]
-        u_w: f64,
-    },
-    /// Jenkins (1992) small-friction, all-sliding limit (paper Eq. 20, docs/model.md §3.8).
-    Jenkins {
-        /// particle–wall restitution e_w [-]
-        wall_restitution: f64,
-        /// wall friction angle δ_w [deg]
-        wall_friction_angle: f64,
-        /// wall velocity [m s⁻¹]
-        #[serde(default)]
-        u_w: f64,
-    },
-}
-
-impl SolidsWall {
-    /// A short label for case names and messages, e.g. `jj-phi0.1`, `jenkins`.
-    pub fn label(&self) -> String {
-        match self {
-            SolidsWall::NoSlip => "noslip".into(),
-            SolidsWall::FreeSlip => "freeslip".into(),
-            SolidsWall::PartialSlip {
-                h_u, h_theta, c, ..
-            } => {
-                format!(
-                    "ps-hu{}-htheta{}-c{}",
-                    short(*h_u),
-                    short(*h_theta),
-                    short(*c)
-                )
-            }
-            SolidsWall::JohnsonJackson { specularity, .. } => {
-                format!("jj-phi{}", short(*specularity))
-            }
-            SolidsWall::RevisitedJohnsonJackson { .. } => "rjj".into(),
-            SolidsWall::Jenkins { .. } => "jenkins".into(),
-        }
-    }
 }
 
 /// Gas pressure held on an outlet.

@@ -39,13 +39,7 @@ pub(crate) fn check_sidewalls(
 ) {
     c.range("sidewalls.width", s.width, B::Open(0.0), B::Inf);
     check_solids_wall(c, "sidewalls.solids", &s.solids);
-    let u_w = match &s.solids {
-        SolidsWall::NoSlip | SolidsWall::FreeSlip => 0.0,
-        SolidsWall::PartialSlip { u_w, .. }
-        | SolidsWall::JohnsonJackson { u_w, .. }
-        | SolidsWall::RevisitedJohnsonJackson { u_w, .. }
-        | SolidsWall::Jenkins { u_w, .. } => *u_w,
-    };
+    let u_w = s.solids.wall_velocity();
     if u_w != 0.0 {
         c.fail(
             "sidewalls.solids.u_w",

@@ -554,65 +554,36 @@ fn check_boundary(c: &mut Checker, p: &str, b: &Boundary, has_gas: bool) {
     }
 }
 
-/// A solids wall condition's parameters (a side's or the side walls'), fields under `q`.
+/// A solids wall condition's parameters (a side's or the side walls'), fields under `q`:
+/// the dimensional ones in their plausibility bands, then every field the wall model's
+/// validated constructors reject ([`SolidsWall::model`]) that no band did.
 fn check_solids_wall(c: &mut Checker, q: &str, solids: &SolidsWall) {
-    let wall_angle = |c: &mut Checker, v: f64| {
-        c.range(
-            format!("{q}.wall_friction_angle"),
-            v,
-            B::Closed(0.0),
-            B::Open(90.0),
-        )
-    };
-    let wall_velocity = |c: &mut Checker, v: f64| c.band(format!("{q}.u_w"), v, &VELOCITY);
-    match solids {
-        SolidsWall::NoSlip | SolidsWall::FreeSlip => {}
-        SolidsWall::PartialSlip {
-            h_u,
-            u_w,
-            h_theta,
-            theta_w,
-            c: flux,
-        } => {
-            c.band(format!("{q}.h_u"), *h_u, &SLIP_COEFFICIENT);
-            wall_velocity(c, *u_w);
-            c.band(format!("{q}.h_theta"), *h_theta, &SLIP_COEFFICIENT);
-            c.band(format!("{q}.theta_w"), *theta_w, &THETA);
-            c.band(format!("{q}.c"), *flux, &THETA_FLUX);
+    let mut banded = Vec::new();
+    for (name, v) in solids.parameters() {
+        let Some(band) = wall_band(name) else {
+            continue;
+        };
+        let before = c.errors.len();
+        c.band(format!("{q}.{name}"), v, band);
+        if c.errors.len() > before {
+            banded.push(name);
         }
-        SolidsWall::JohnsonJackson {
-            specularity,
-            wall_restitution,
-            wall_friction_angle,
-            u_w,
-        } => {
-            c.unit(format!("{q}.specularity"), *specularity);
-            c.unit(format!("{q}.wall_restitution"), *wall_restitution);
-            wall_angle(c, *wall_friction_angle);
-            wall_velocity(c, *u_w);
+    }
+    if let Err(e) = solids.model() {
+        for f in e.fields.iter().filter(|f| !banded.contains(&f.field)) {
+            c.fail(format!("{q}.{}", f.field), short(f.value), f.range);
         }
-        SolidsWall::RevisitedJohnsonJackson {
-            wall_restitution,
-            wall_friction_angle,
-            phi0,
-            u_w,
-        } => {
-            c.unit(format!("{q}.wall_restitution"), *wall_restitution);
-            wall_angle(c, *wall_friction_angle);
-            if let Some(phi0) = phi0 {
-                c.range(format!("{q}.phi0"), *phi0, B::Open(0.0), B::Closed(1.0));
-            }
-            wall_velocity(c, *u_w);
-        }
-        SolidsWall::Jenkins {
-            wall_restitution,
-            wall_friction_angle,
-            u_w,
-        } => {
-            c.unit(format!("{q}.wall_restitution"), *wall_restitution);
-            wall_angle(c, *wall_friction_angle);
-            wall_velocity(c, *u_w);
-        }
+    }
+}
+
+/// The plausibility band of a dimensional wall parameter, by its case-file name.
+fn wall_band(name: &str) -> Option<&'static Band> {
+    match name {
+        "h_u" | "h_theta" => Some(&SLIP_COEFFICIENT),
+        "u_w" => Some(&VELOCITY),
+        "theta_w" => Some(&THETA),
+        "c" => Some(&THETA_FLUX),
+        _ => None,
     }
 }
 

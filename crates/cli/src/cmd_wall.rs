@@ -3,10 +3,13 @@
 //! the solids tangential velocity and of θ, with the diagnostics the paper plots
 //! (h_w^u, φ, COL, FRI, slip), as pretty JSON.
 
-use anyhow::{ensure, Context};
-use clap::ValueEnum;
+use anyhow::{anyhow, ensure};
+use clap::builder::PossibleValuesParser;
 use runout_closures::{ClosureParams, Drag};
-use runout_walls::{MomentumWall, MomentumWallState, SolidsWallModel, ThetaWall, ThetaWallState};
+use runout_walls::{
+    MissingParameter, MomentumWall, MomentumWallState, SolidsWall, SolidsWallModel, ThetaWall,
+    ThetaWallState,
+};
 use serde::Serialize;
 use std::io::Write;
 
@@ -36,23 +39,6 @@ The momentum condition uses --eps-s (interpolated at the velocity face) and --ep
 (the fluid cell: dilute skip and friction test); the theta condition uses --eps-s-fluid.
 Sources: docs/model.md §3; rustdoc of runout-walls.";
 
-/// Solids wall condition (paper §2.2, docs/model.md §3).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum, Serialize)]
-pub enum WallModelChoice {
-    /// zero solids velocity on the wall, zero theta flux
-    NoSlip,
-    /// zero tangential stress, zero theta flux
-    FreeSlip,
-    /// user partial slip, paper Eqs. 12-13 (--h-u, --h-theta, --c-theta, --theta-w)
-    PartialSlip,
-    /// Johnson & Jackson (1987) with a constant --specularity
-    JohnsonJackson,
-    /// Johnson-Jackson with Li & Benyahia's specularity phi(r) (optional --phi0)
-    RevisitedJj,
-    /// Jenkins (1992) small-friction, all-sliding limit
-    Jenkins,
-}
-
 /// Print the Robin coefficients and diagnostics of one solids wall model at one near-wall
 /// state as JSON. Material defaults are the paper's sensitivity-analysis values (paper
 /// Table 3: d = 0.5 mm, rho_s = 2000, e = 0.9, e_w = 0.7, wall friction 11 deg, internal
@@ -60,9 +46,12 @@ pub enum WallModelChoice {
 #[derive(clap::Args, Debug, Clone)]
 #[command(after_help = OUTPUT_FIELDS)]
 pub struct WallArgs {
-    /// wall model
-    #[arg(long, value_enum)]
-    pub model: WallModelChoice,
+    /// solids wall condition (paper §2.2, docs/model.md §3): no-slip, free-slip (zero theta
+    /// flux), partial-slip (paper Eqs. 12-13: --h-u, --h-theta, --c-theta, --theta-w),
+    /// johnson-jackson (constant --specularity), revisited-jj (Li & Benyahia's phi(r),
+    /// optional --phi0), jenkins (small-friction, all-sliding limit)
+    #[arg(long, value_parser = PossibleValuesParser::new(SolidsWall::KINDS))]
+    pub model: String,
     /// specularity coefficient phi [-] (johnson-jackson; MFIX PHIP)
     #[arg(long)]
     pub specularity: Option<f64>,
@@ -124,7 +113,7 @@ pub struct WallArgs {
 /// The echoed inputs of the JSON output.
 #[derive(Serialize)]
 struct Inputs<'a> {
-    model: WallModelChoice,
+    model: &'a str,
     momentum_state: MomentumWallState,
     theta_state: ThetaWallState,
     material: &'a MaterialArgs,
@@ -175,40 +164,49 @@ impl WallArgs {
         self.gas_slip.unwrap_or((self.slip + self.u_w).abs())
     }
 
+    /// The wall condition of `--model` with its options, as a case file would write it.
+    fn spec(&self) -> anyhow::Result<SolidsWall> {
+        SolidsWall::from_parameters(&self.model, |name| self.parameter(name)).map_err(|e| match e {
+            MissingParameter::Field(name) => {
+                anyhow!("--model {} needs {}", self.model, option_of(name))
+            }
+            kind => anyhow!("--model: {kind}"),
+        })
+    }
+
+    /// The option of a wall parameter ([`SolidsWall::parameters`] names), with its default.
+    fn parameter(&self, name: &str) -> Option<f64> {
+        match name {
+            "specularity" => self.specularity,
+            "phi0" => self.phi0,
+            "wall_restitution" => Some(self.wall_restitution),
+            "wall_friction_angle" => Some(self.wall_friction_angle),
+            "u_w" => Some(self.u_w),
+            "h_u" => self.h_u,
+            "h_theta" => self.h_theta,
+            "theta_w" => Some(self.theta_w.unwrap_or(DEFAULT_THETA_W)),
+            "c" => self.c_theta,
+            _ => None,
+        }
+    }
+
     /// The wall model, its parameters validated by runout-walls.
     fn model(&self) -> anyhow::Result<SolidsWallModel> {
-        let (e_w, angle, u_w) = (self.wall_restitution, self.wall_friction_angle, self.u_w);
-        let model = match self.model {
-            WallModelChoice::NoSlip => SolidsWallModel::NoSlip,
-            WallModelChoice::FreeSlip => SolidsWallModel::FreeSlip,
-            WallModelChoice::PartialSlip => SolidsWallModel::partial_slip(
-                self.h_u.context("--model partial-slip needs --h-u")?,
-                u_w,
-                self.h_theta
-                    .context("--model partial-slip needs --h-theta")?,
-                self.theta_w.unwrap_or(DEFAULT_THETA_W),
-                self.c_theta
-                    .context("--model partial-slip needs --c-theta")?,
-            )?,
-            WallModelChoice::JohnsonJackson => SolidsWallModel::johnson_jackson(
-                self.specularity
-                    .context("--model johnson-jackson needs --specularity")?,
-                e_w,
-                angle,
-                u_w,
-            )?,
-            WallModelChoice::RevisitedJj => {
-                SolidsWallModel::revisited_johnson_jackson(e_w, angle, self.phi0, u_w)?
-            }
-            WallModelChoice::Jenkins => SolidsWallModel::jenkins(e_w, angle, u_w)?,
-        };
-        Ok(model)
+        Ok(self.spec()?.model()?)
     }
 
     fn params(&self) -> ClosureParams {
         // the drag law is not used by the wall models (they estimate drag with Wen-Yu,
         // docs/model.md §2.6)
         self.material.params(Drag::default())
+    }
+}
+
+/// The option that sets a wall parameter ([`SolidsWall::parameters`] names).
+fn option_of(name: &str) -> String {
+    match name {
+        "c" => "--c-theta".into(),
+        other => format!("--{}", other.replace('_', "-")),
     }
 }
 
@@ -237,7 +235,7 @@ pub fn run(args: &WallArgs) -> anyhow::Result<()> {
     };
     let output = Output {
         inputs: Inputs {
-            model: args.model,
+            model: &args.model,
             momentum_state,
             theta_state,
             material: &args.material,

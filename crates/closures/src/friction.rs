@@ -384,6 +384,43 @@ pub enum FrictionModel {
 }
 
 impl FrictionModel {
+    /// Whether the model has a plastic pressure P* that enters the solids momentum as its
+    /// own gradient −∇P* and is rebuilt from the corrected εs (Schaeffer: P* = A (εg* − εg)^10,
+    /// paper Eq. 8; docs/model.md §2.4.1, §4.4, §4.9 step 5). Princeton has none: MFIX never
+    /// computes P* with it (§2.4.2).
+    #[inline]
+    pub fn has_plastic_pressure(self) -> bool {
+        matches!(self, Self::Schaeffer)
+    }
+
+    /// The gas fraction εg* = 1 − εs,max below which the model holds θ at θ_small (a fixed
+    /// row of the θ system: Schaeffer, docs/model.md §1.3 last bullet, where its plastic
+    /// regime εg < εg* has no granular temperature); `None` if θ is never pinned.
+    #[inline]
+    pub fn pins_theta_below(self, p: &FrictionParams) -> Option<f64> {
+        matches!(self, Self::Schaeffer).then_some(1.0 - p.eps_s_max)
+    }
+
+    /// The most solids phases the model is implemented for (`None`: no limit). Schaeffer's
+    /// P* of several phases uses the mixture εg and εs/Σε_cp weights, not implemented
+    /// (docs/model.md §2.4.1 last paragraph, departure M11).
+    #[inline]
+    pub fn max_solids_phases(self) -> Option<usize> {
+        match self {
+            Self::Schaeffer => Some(1),
+            Self::None | Self::Princeton => None,
+        }
+    }
+
+    /// Whether a Johnson–Jackson or Jenkins wall adds the frictional wall stress
+    /// FRI = tan δ_w (P_f − 2 μ_f S_nn) and μ_f to its slip coefficient, h_w^u =
+    /// (COL + FRI)/(μ_k + μ_f), where the fluid cell's εs > εs,min (Princeton only, as MFIX
+    /// `calc_grbdry.f`: docs/model.md §3.5 step 3).
+    #[inline]
+    pub fn has_wall_friction(self) -> bool {
+        matches!(self, Self::Princeton)
+    }
+
     /// Frictional stresses of the chosen model (docs/model.md §2.4); all zero for `None`.
     #[inline]
     pub fn stress(
@@ -420,5 +457,32 @@ impl FrictionModel {
             Self::Schaeffer => dp_star_deps(eps_s, p),
             Self::Princeton => k_cp_princeton(eps_s, theta, d_p, tr_d, s_ddot_s, p),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The solver's questions: only Schaeffer has P*, pins θ below εg* = 1 − εs,max and is
+    /// limited to one phase; only Princeton adds FRI at a JJ/Jenkins wall.
+    #[test]
+    fn each_model_answers_the_solvers_questions() {
+        let p = FrictionParams::default();
+        let answers = |m: FrictionModel| {
+            (
+                m.has_plastic_pressure(),
+                m.pins_theta_below(&p),
+                m.max_solids_phases(),
+                m.has_wall_friction(),
+            )
+        };
+        let eps_g_star = 1.0 - p.eps_s_max;
+        assert_eq!(
+            answers(FrictionModel::Schaeffer),
+            (true, Some(eps_g_star), Some(1), false)
+        );
+        assert_eq!(answers(FrictionModel::Princeton), (false, None, None, true));
+        assert_eq!(answers(FrictionModel::None), (false, None, None, false));
     }
 }

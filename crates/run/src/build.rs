@@ -2,8 +2,8 @@
 //! for a case with solids, with their initial state and boundary conditions.
 
 use runout_case::{
-    Block, Boundary, Case, Convection, Fill, FrictionModel, GasWall, Gravity, InitialPressure,
-    KineticTheory, OutletPressure, SolidsWall,
+    Block, Boundary, Case, Convection, Fill, GasWall, Gravity, InitialPressure, KineticTheory,
+    OutletPressure,
 };
 use runout_closures::{ClosureParams, FrictionParams, Gas, Particles};
 use runout_mesh::{Grid, Sides};
@@ -189,12 +189,14 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
             "only the Lun 1984 kinetic theory with the θ PDE is implemented".into(),
         ));
     }
-    // one phase only: MFIX's P* of several phases uses the mixture εg and εs/Σε_cp weights
-    // (docs/model.md §2.4.1, §4.4), not implemented
-    if case.models.friction == FrictionModel::Schaeffer && case.solids.len() > 1 {
-        return Err(unsupported(
-            "Schaeffer friction with more than one solids phase is not implemented".into(),
-        ));
+    // e.g. Schaeffer: one phase only (docs/model.md §2.4.1)
+    if let Some(max) = case.models.friction.max_solids_phases() {
+        if case.solids.len() > max {
+            return Err(unsupported(format!(
+                "{:?} friction with more than {max} solids phase(s) is not implemented",
+                case.models.friction
+            )));
+        }
     }
     let grid = case.grid().map_err(|source| RunError::Mesh {
         case: case.name.clone(),
@@ -239,76 +241,20 @@ fn solids_side(case: &Case, gas: &runout_case::Gas, b: &Boundary) -> Result<Soli
         case: case.name.clone(),
         reason,
     };
-    let model_err = |e: runout_walls::WallError| unsupported(format!("wall model: {e}"));
-    // placeholders that the per-face closures of a state-dependent model replace
-    let by_model = |m: SolidsWallModel| {
-        (
-            SideBc::Wall(RobinFace::ZERO_GRADIENT),
-            Some(RobinFace::ZERO_GRADIENT),
-            Some(m),
-        )
-    };
     Ok(match b {
         Boundary::PressureOutlet { .. } => (outlet_bc(b, gas), None, None),
-        Boundary::Wall { solids, .. } => match solids {
-            SolidsWall::NoSlip => (
-                SideBc::Wall(RobinFace::dirichlet(0.0)),
-                Some(RobinFace::ZERO_GRADIENT),
-                None,
-            ),
-            SolidsWall::FreeSlip => (
-                SideBc::Wall(RobinFace::ZERO_GRADIENT),
-                Some(RobinFace::ZERO_GRADIENT),
-                None,
-            ),
-            SolidsWall::PartialSlip {
-                h_u,
-                u_w,
-                h_theta,
-                theta_w,
-                c,
-            } => (
-                SideBc::Wall(RobinFace::partial_slip(*h_u, *u_w)),
-                Some(RobinFace::user_theta(*h_theta, *theta_w, *c)),
-                None,
-            ),
-            SolidsWall::JohnsonJackson {
-                specularity,
-                wall_restitution,
-                wall_friction_angle,
-                u_w,
-            } => by_model(
-                SolidsWallModel::johnson_jackson(
-                    *specularity,
-                    *wall_restitution,
-                    *wall_friction_angle,
-                    *u_w,
-                )
-                .map_err(model_err)?,
-            ),
-            SolidsWall::RevisitedJohnsonJackson {
-                wall_restitution,
-                wall_friction_angle,
-                phi0,
-                u_w,
-            } => by_model(
-                SolidsWallModel::revisited_johnson_jackson(
-                    *wall_restitution,
-                    *wall_friction_angle,
-                    *phi0,
-                    *u_w,
-                )
-                .map_err(model_err)?,
-            ),
-            SolidsWall::Jenkins {
-                wall_restitution,
-                wall_friction_angle,
-                u_w,
-            } => by_model(
-                SolidsWallModel::jenkins(*wall_restitution, *wall_friction_angle, *u_w)
-                    .map_err(model_err)?,
-            ),
-        },
+        Boundary::Wall { solids, .. } => {
+            let model = solids.model().map_err(|e| unsupported(format!("{e}")))?;
+            match model.fixed_faces() {
+                Some((momentum, theta)) => (SideBc::Wall(momentum), Some(theta), None),
+                // placeholders that the per-face closures of a state-dependent model replace
+                None => (
+                    SideBc::Wall(RobinFace::ZERO_GRADIENT),
+                    Some(RobinFace::ZERO_GRADIENT),
+                    Some(model),
+                ),
+            }
+        }
     })
 }
 

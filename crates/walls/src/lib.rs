@@ -6,6 +6,9 @@
 //! across the wall face as g (φ_G − φ_F)/Δ + h (φ_G + φ_F)/2 = c (docs/model.md §3.2), and
 //! [`RobinFace`] eliminates the ghost value into the face flux and face value the solver uses.
 //!
+//! A case file's wall condition is a [`SolidsWall`] (serde); [`SolidsWall::model`] validates it
+//! into the model the solver evaluates.
+//!
 //! The models ([`SolidsWallModel`]):
 //! - no-slip, free-slip (MFIX NSW, FSW with `BC_JJ_PS = 0`);
 //! - user partial slip, paper Eqs. 12–13 in MFIX's manual units (docs/model.md §3.3);
@@ -49,14 +52,16 @@ pub mod coefficients;
 mod error;
 mod face;
 pub mod model;
+pub mod spec;
 pub mod specularity;
 pub mod state;
 
-pub use error::WallError;
+pub use error::{OutOfRange, WallError};
 pub use face::RobinFace;
 pub use model::{
     MomentumBranch, MomentumDiagnostics, MomentumWall, SolidsWallModel, Specularity, ThetaBranch,
     ThetaDiagnostics, ThetaWall, UserPartialSlip, WallContact,
 };
+pub use spec::{MissingParameter, SolidsWall};
 pub use specularity::LiBenyahia;
 pub use state::{MomentumWallState, ThetaWallState, WallStrain};

@@ -15,12 +15,12 @@ use crate::coefficients::{
     c_theta_jenkins, c_theta_johnson_jackson, collisional_jenkins, collisional_johnson_jackson,
     frictional, h_theta_jenkins, h_theta_johnson_jackson,
 };
-use crate::error::{check, WallError};
+use crate::error::{Checks, WallError};
 use crate::face::RobinFace;
 use crate::specularity::LiBenyahia;
 use crate::state::{wall_theta, MomentumWallState, ThetaWallState, WALL_S_DDOT_S_FLOOR};
 use runout_closures::drag::{dga_wall_wen_yu, DragInputs};
-use runout_closures::friction::{princeton, FrictionModel};
+use runout_closures::friction::princeton;
 use runout_closures::guards::DIL_EP_S;
 use runout_closures::kinetic::{lun_1984, GasCoupling, KineticStress, SolidsState};
 use runout_closures::ClosureParams;
@@ -46,22 +46,23 @@ impl WallContact {
         wall_friction_angle: f64,
         wall_velocity: f64,
     ) -> Result<Self, WallError> {
-        let wall_restitution = check("wall_restitution", wall_restitution, "[0, 1]", |v| {
+        let mut checks = Checks::default();
+        let wall_restitution = checks.check("wall_restitution", wall_restitution, "[0, 1]", |v| {
             (0.0..=1.0).contains(&v)
-        })?;
-        let wall_friction_angle = check(
+        });
+        let wall_friction_angle = checks.check(
             "wall_friction_angle",
             wall_friction_angle,
             "[0, 90) degrees",
             |v| (0.0..90.0).contains(&v),
-        )?;
-        let wall_velocity = check("u_w", wall_velocity, "(-inf, inf)", f64::is_finite)?;
-        Ok(Self {
+        );
+        let wall_velocity = checks.check("u_w", wall_velocity, "(-inf, inf)", f64::is_finite);
+        checks.finish(Some(Self {
             wall_restitution,
             wall_friction_angle,
             tan_wall_friction: wall_friction_angle.to_radians().tan(),
             wall_velocity,
-        })
+        }))
     }
 }
 
@@ -94,13 +95,15 @@ impl UserPartialSlip {
     /// Validated user coefficients: h_u, h_θ ≥ 0, θ_w ≥ 0, U_w and c finite.
     pub fn new(h_u: f64, u_w: f64, h_theta: f64, theta_w: f64, c: f64) -> Result<Self, WallError> {
         let non_negative = |v: f64| v >= 0.0 && v.is_finite();
-        Ok(Self {
-            h_u: check("h_u", h_u, "[0, inf)", non_negative)?,
-            u_w: check("u_w", u_w, "(-inf, inf)", f64::is_finite)?,
-            h_theta: check("h_theta", h_theta, "[0, inf)", non_negative)?,
-            theta_w: check("theta_w", theta_w, "[0, inf)", non_negative)?,
-            c: check("c", c, "(-inf, inf)", f64::is_finite)?,
-        })
+        let mut checks = Checks::default();
+        let user = Self {
+            h_u: checks.check("h_u", h_u, "[0, inf)", non_negative),
+            u_w: checks.check("u_w", u_w, "(-inf, inf)", f64::is_finite),
+            h_theta: checks.check("h_theta", h_theta, "[0, inf)", non_negative),
+            theta_w: checks.check("theta_w", theta_w, "[0, inf)", non_negative),
+            c: checks.check("c", c, "(-inf, inf)", f64::is_finite),
+        };
+        checks.finish(Some(user))
     }
 }
 
@@ -169,13 +172,15 @@ impl SolidsWallModel {
         wall_friction_angle: f64,
         u_w: f64,
     ) -> Result<Self, WallError> {
-        let phi = check("specularity", specularity, "[0, 1]", |v| {
+        let mut checks = Checks::default();
+        let phi = checks.check("specularity", specularity, "[0, 1]", |v| {
             (0.0..=1.0).contains(&v)
-        })?;
-        Ok(Self::JohnsonJackson {
+        });
+        let contact = checks.take(WallContact::new(wall_restitution, wall_friction_angle, u_w));
+        checks.finish(contact.map(|contact| Self::JohnsonJackson {
             specularity: Specularity::Constant(phi),
-            contact: WallContact::new(wall_restitution, wall_friction_angle, u_w)?,
-        })
+            contact,
+        }))
     }
 
     /// Revisited Johnson–Jackson: Li & Benyahia's φ(r) (paper Eqs. 16–17 in MFIX's continuous
@@ -186,12 +191,23 @@ impl SolidsWallModel {
         phi0: Option<f64>,
         u_w: f64,
     ) -> Result<Self, WallError> {
-        let contact = WallContact::new(wall_restitution, wall_friction_angle, u_w)?;
-        let law = LiBenyahia::new(contact.wall_restitution, contact.tan_wall_friction, phi0)?;
-        Ok(Self::JohnsonJackson {
+        let mut checks = Checks::default();
+        let Some(contact) =
+            checks.take(WallContact::new(wall_restitution, wall_friction_angle, u_w))
+        else {
+            // k needs a valid contact; the override is checked on its own
+            checks.take(phi0.map_or(Ok(()), |v| LiBenyahia::check_override(v).map(|_| ())));
+            return checks.finish(None);
+        };
+        let law = checks.take(LiBenyahia::new(
+            contact.wall_restitution,
+            contact.tan_wall_friction,
+            phi0,
+        ));
+        checks.finish(law.map(|law| Self::JohnsonJackson {
             specularity: Specularity::LiBenyahia(law),
             contact,
-        })
+        }))
     }
 
     /// Jenkins' small-friction, all-sliding limit (paper Eq. 20, docs/model.md §3.8).
@@ -203,6 +219,22 @@ impl SolidsWallModel {
         Ok(Self::Jenkins {
             contact: WallContact::new(wall_restitution, wall_friction_angle, u_w)?,
         })
+    }
+
+    /// The (momentum, θ) face closures of a state-independent condition (no-slip,
+    /// free-slip, user partial slip: the faces [`SolidsWallModel::momentum`] and
+    /// [`SolidsWallModel::granular_temperature`] return at any state); `None` for the
+    /// state-dependent ones (Johnson–Jackson, revisited JJ, Jenkins), evaluated per face.
+    pub fn fixed_faces(&self) -> Option<(RobinFace, RobinFace)> {
+        match self {
+            Self::NoSlip => Some((RobinFace::dirichlet(0.0), RobinFace::ZERO_GRADIENT)),
+            Self::FreeSlip => Some((RobinFace::ZERO_GRADIENT, RobinFace::ZERO_GRADIENT)),
+            Self::PartialSlip(user) => Some((
+                RobinFace::partial_slip(user.h_u, user.u_w),
+                RobinFace::user_theta(user.h_theta, user.theta_w, user.c),
+            )),
+            Self::JohnsonJackson { .. } | Self::Jenkins { .. } => None,
+        }
     }
 
     /// The solids wall velocity U_w [m/s] the slip speed is measured against (0 for no-slip
@@ -417,7 +449,7 @@ fn kinetic_momentum(
     };
     let eps_s_min = params.friction.eps_s_min;
     let frictional_branch =
-        params.friction_model == FrictionModel::Princeton && state.eps_s_fluid > eps_s_min;
+        params.friction_model.has_wall_friction() && state.eps_s_fluid > eps_s_min;
     let mut diagnostics = MomentumDiagnostics {
         theta,
         specularity,

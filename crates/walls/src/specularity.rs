@@ -6,7 +6,7 @@
 //! (docs/model.md §3.10.4); MFIX, and this module, use −7√(6π) φ₀² r/(8k) + φ₀, which is
 //! continuous: both branches equal φ₀/2 at r* = 4k/(7√(6π) φ₀).
 
-use crate::error::{check, WallError};
+use crate::error::{Checks, WallError};
 use std::f64::consts::PI;
 
 /// Factor 7/2 of k = (7/2) tan δ_w (1 + e_w) [-] (paper Eq. 16 text; MFIX `k4phi`).
@@ -71,29 +71,39 @@ pub struct LiBenyahia {
 
 impl LiBenyahia {
     /// The law for particle–wall restitution e_w ∈ [0, 1], tan δ_w ≥ 0 and an optional φ₀
-    /// override (MFIX `PHIP0`); φ₀ outside [0, 1] is an input error (docs/model.md §3.7), and so
-    /// is k = 0 with φ₀ > 0 (the linear branch divides by k).
+    /// override (MFIX `PHIP0`) in (0, 1] (a specularity; docs/input-validation.md); a φ₀ from
+    /// k outside [0, 1] is an input error (docs/model.md §3.7), and so is k = 0 with φ₀ > 0
+    /// (the linear branch divides by k).
     pub fn new(
         wall_restitution: f64,
         tan_wall_friction: f64,
         phi0_override: Option<f64>,
     ) -> Result<Self, WallError> {
         let k = k_parameter(wall_restitution, tan_wall_friction);
+        let mut checks = Checks::default();
         let phi0 = match phi0_override {
-            Some(phi0) => phi0,
-            None => phi0_from_k(k),
+            Some(phi0) => checks.take(Self::check_override(phi0)),
+            None => Some(checks.check("phi0", phi0_from_k(k), "[0, 1]", |v| {
+                (0.0..=1.0).contains(&v)
+            })),
         };
-        let phi0 = check("phi0", phi0, "[0, 1]", |v| (0.0..=1.0).contains(&v))?;
         // the linear branch divides by k: a positive φ₀ needs k > 0, i.e. δ_w > 0
-        if phi0 > 0.0 {
-            check(
+        if phi0.is_some_and(|phi0| phi0 > 0.0) {
+            checks.check(
                 "k = 3.5 tan(wall_friction_angle) (1 + wall_restitution)",
                 k,
                 "(0, inf)",
                 |v| v > 0.0 && v.is_finite(),
-            )?;
+            );
         }
-        Ok(Self { k, phi0 })
+        checks.finish(phi0.map(|phi0| Self { k, phi0 }))
+    }
+
+    /// A φ₀ override (MFIX `PHIP0`) in (0, 1].
+    pub fn check_override(phi0: f64) -> Result<f64, WallError> {
+        let mut checks = Checks::default();
+        let phi0 = checks.check("phi0", phi0, "(0, 1]", |v| v > 0.0 && v <= 1.0);
+        checks.finish(Some(phi0))
     }
 
     /// Switch point r* = 4k/(7√(6π) φ₀) [-] between the linear and the 1/r branch

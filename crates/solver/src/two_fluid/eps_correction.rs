@@ -8,7 +8,6 @@
 use std::time::Instant;
 
 use runout_closures::friction::p_star;
-use runout_closures::FrictionModel;
 use runout_linsolve::{LinSolveError, LinearSolver, Stencil5};
 
 use super::diagnostics::since;
@@ -62,8 +61,8 @@ impl TwoFluid {
                 &s.e_v,
                 &s.k_cp,
             );
-            // (Schaeffer only) P* from the corrected εs (docs/model.md §4.9 step 5)
-            if spec.params.friction_model == FrictionModel::Schaeffer {
+            // P* from the corrected εs (Schaeffer only, docs/model.md §4.9 step 5)
+            if spec.params.friction_model.has_plastic_pressure() {
                 for (p, &e) in s.p_star.iter_mut().zip(&s.eps) {
                     *p = p_star(e, &spec.params.friction);
                 }

@@ -13,7 +13,6 @@
 
 use std::time::Instant;
 
-use runout_closures::FrictionModel;
 use runout_linsolve::Stencil5;
 
 use super::diagnostics::since;
@@ -64,9 +63,11 @@ impl TwoFluid {
                 add_theta_flux(&self.grid, s); // docs/model.md §8
             }
             classify_rows(s, freeze);
-            // Schaeffer: θ = θ_small where εg < εg* (docs/model.md §1.3)
-            let eps_g_star = (spec.params.friction_model == FrictionModel::Schaeffer)
-                .then_some(1.0 - spec.params.friction.eps_s_max);
+            // θ = θ_small where εg < εg* if the friction model pins it (docs/model.md §1.3)
+            let eps_g_star = spec
+                .params
+                .friction_model
+                .pins_theta_below(&spec.params.friction);
             let rows = ThetaRows {
                 theta: &s.theta,
                 dense: &s.theta_dense,

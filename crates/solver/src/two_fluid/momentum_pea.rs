@@ -17,7 +17,6 @@
 
 use std::time::Instant;
 
-use runout_closures::FrictionModel;
 use runout_linsolve::Stencil5;
 use runout_mesh::{Grid, Sides};
 
@@ -223,7 +222,10 @@ fn assemble_solids(
             solids_pressure: Some(&s.p_s),
             // −∇P* only with Schaeffer (docs/model.md §4.4); none with Princeton, where
             // MFIX never computes P* (§2.4.2)
-            plastic_pressure: (spec.params.friction_model == FrictionModel::Schaeffer)
+            plastic_pressure: spec
+                .params
+                .friction_model
+                .has_plastic_pressure()
                 .then_some(&s.p_star[..]),
             explicit_source: Some(&s.tau_u),
             skip: Some(&s.dilute_u),
