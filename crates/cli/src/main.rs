@@ -43,6 +43,14 @@ enum Command {
         /// files or directories
         #[arg(required = true)]
         paths: Vec<PathBuf>,
+        /// also say what each case computes (the solver's stages, closures, wall closures
+        /// per side, friction terms, monitors) and what it costs (cells, unknowns, memory),
+        /// from the solver built as `runout run` builds it
+        #[arg(long)]
+        explain: bool,
+        /// the fidelity `--explain` builds the solver at
+        #[arg(long, default_value = "paper", value_parser = parse_fidelity)]
+        fidelity: Fidelity,
     },
     /// Print the grid summary of a case: cell counts, min/max widths, largest adjacent
     /// width ratio and largest aspect ratio.
@@ -161,7 +169,9 @@ fn parse_end_time(s: &str) -> Result<f64, String> {
     }
 }
 
-fn check(paths: &[PathBuf]) -> ExitCode {
+/// `runout check`: validates the files and lists their cases with sizes; with `explain`,
+/// also what each case computes and costs at that fidelity.
+fn check(paths: &[PathBuf], explain: Option<Fidelity>) -> ExitCode {
     let mut failed = 0;
     let mut total = 0;
     for file in case_files(paths) {
@@ -186,6 +196,15 @@ fn check(paths: &[PathBuf]) -> ExitCode {
                     .map(|f| fidelity_size(&sc.case, f, available))
                     .collect();
                     println!("  {}  [{}]", sc.case.name, sizes.join("; "));
+                    if let Some(fidelity) = explain {
+                        match runout_run::explain::explain(&sc.case, fidelity) {
+                            Ok(text) => println!("{text}"),
+                            Err(e) => {
+                                failed += 1;
+                                eprintln!("{}: {e}", file.display());
+                            }
+                        }
+                    }
                 }
             }
             Ok(Loaded::Analytic(a)) => {
@@ -488,7 +507,11 @@ fn main() -> ExitCode {
         .init();
     let cli = Cli::parse();
     match cli.command {
-        Command::Check { paths } => check(&paths),
+        Command::Check {
+            paths,
+            explain,
+            fidelity,
+        } => check(&paths, explain.then_some(fidelity)),
         Command::Mesh { file, fidelity } => mesh(&file, fidelity),
         Command::Run {
             file,

@@ -2,9 +2,10 @@
 //! retries, the monitors, checkpoints and restarts, stopping on a signal, and the run
 //! summary.
 //!
-//! One concept per file: [`build`] turns a case into a solver, [`case_solver`] is the
-//! loop's view of a solver, [`dt_controller`] the Δt rule, [`monitors`] the scheduled
-//! output, [`checkpoint`] the restart files, [`out_dir`] the run folder's protection,
+//! One concept per file: [`build`] turns a case into a solver, [`explain`] says what it
+//! computes and costs, [`case_solver`] is the loop's view of a solver, [`dt_controller`]
+//! the Δt rule, [`monitors`] the scheduled hooks, [`checkpoint`] the restart files,
+//! [`out_dir`] the run folder's protection, [`store`] the folders of finished runs,
 //! [`signals`] the stop on SIGINT/SIGTERM.
 
 #![deny(missing_docs)]
@@ -13,6 +14,7 @@ mod build;
 mod case_solver;
 pub mod checkpoint;
 mod dt_controller;
+pub mod explain;
 mod monitors;
 pub mod out_dir;
 mod sidewalls;

@@ -66,19 +66,23 @@ impl CellClosures {
 }
 
 /// Step 1: the closures of every solids phase at the current iterate (module doc), with the
-/// gas velocities `u_g`, `v_g`.
+/// gas velocities `u_g`, `v_g`; returns how many cells were evaluated (those with solids,
+/// summed over the phases).
 pub(super) fn update_closures(
     grid: &Grid,
     u_g: &[f64],
     v_g: &[f64],
     solids: &mut [SolidsFields],
     specs: &[SolidsSpec],
-) {
+) -> u64 {
+    let mut evaluated = 0;
     for (s, spec) in solids.iter_mut().zip(specs) {
         wall_strain_rates(grid, spec, s);
         evaluate_cells(grid, u_g, v_g, s, &spec.params);
         scatter(s);
+        evaluated += s.eps.iter().filter(|&&e| e != 0.0).count() as u64;
     }
+    evaluated
 }
 
 /// The strain rates of every cell, those of the wall cells with the wall face velocities.

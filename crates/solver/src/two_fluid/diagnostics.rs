@@ -5,7 +5,32 @@
 
 use std::time::Instant;
 
+use runout_mesh::{Side, Sides};
+
 use super::TwoFluid;
+
+/// How often each optional piece of the outer iteration was evaluated since the solver was
+/// built: a piece the scene ([`super::Scene`]) leaves out stays at zero.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Counters {
+    /// per-cell closure evaluations (cells with solids, summed over phases and iterations)
+    pub cell_closures: u64,
+    /// per-face wall closures of the state-dependent walls (JJ, revisited JJ, Jenkins) on
+    /// each side, summed over phases and iterations
+    pub wall_closure_faces: Sides<u64>,
+    /// cells whose Schaeffer plastic pressure P* was recomputed after the εs correction
+    pub plastic_pressure_cells: u64,
+}
+
+impl Counters {
+    /// Per-face wall closures on every side together.
+    pub fn wall_closure_faces_total(&self) -> u64 {
+        Side::ALL
+            .iter()
+            .map(|&s| *self.wall_closure_faces.get(s))
+            .sum()
+    }
+}
 
 /// Wall time spent in each part of the outer iteration since the solver was built \[s\]
 /// (issue 9: where the time goes). Timers are `Instant`s around whole loops, a few tens of

@@ -66,6 +66,7 @@ impl TwoFluid {
                 for (p, &e) in s.p_star.iter_mut().zip(&s.eps) {
                     *p = p_star(e, &spec.params.friction);
                 }
+                self.counters.plastic_pressure_cells += s.p_star.len() as u64;
             }
         }
         self.sync_volume_fractions();

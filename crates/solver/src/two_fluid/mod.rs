@@ -48,13 +48,15 @@ mod granular_energy;
 mod momentum_pea;
 mod pressure;
 mod residuals;
+mod scene;
 mod setup;
 mod sidewalls;
 mod walls;
 
 pub use closures::CellClosures;
-pub use diagnostics::{LinearIterations, Profile};
+pub use diagnostics::{Counters, LinearIterations, Profile};
 pub use residuals::TwoFluidResiduals;
+pub use scene::{PhaseScene, Scene, WallClosure};
 pub use sidewalls::{SidewallCell, SidewallTerms, Sidewalls};
 
 use runout_closures::ClosureParams;
@@ -349,6 +351,10 @@ pub struct TwoFluid {
     theta_class_fresh: bool,
     /// where the time went
     profile: Profile,
+    /// how often each optional piece ran
+    counters: Counters,
+    /// what this solver computes (derived when built, and when the side walls are set)
+    scene: Scene,
     /// where the residuals of the last outer iteration were largest
     worst: Worst,
     /// the side walls of a quasi-2-D channel (docs/model.md §8), none in a plane flow
@@ -371,6 +377,27 @@ impl TwoFluid {
     /// Sets the side walls of a quasi-2-D channel (docs/model.md §8); `None`: a plane flow.
     pub fn set_sidewalls(&mut self, sidewalls: Option<Sidewalls>) {
         self.sidewalls = sidewalls;
+        self.scene = self.derive_scene();
+    }
+
+    /// What this solver computes ([`Scene`]).
+    pub fn scene(&self) -> &Scene {
+        &self.scene
+    }
+
+    /// How often each optional piece of the outer iteration ran ([`Counters`]).
+    pub fn counters(&self) -> Counters {
+        self.counters.clone()
+    }
+
+    /// The scene of the current phases, settings and side walls.
+    fn derive_scene(&self) -> Scene {
+        Scene::of(
+            (self.grid.nx(), self.grid.ny()),
+            &self.solids_specs,
+            &self.settings,
+            self.sidewalls.as_ref().map(|w| w.width),
+        )
     }
 
     /// Stores the current fields as the old time level and refreshes the bulk densities.
@@ -449,7 +476,9 @@ impl TwoFluid {
             self.profile.closures += since(t);
         }
         let t = Instant::now();
-        self.update_walls();
+        if self.scene.has_per_face_walls() {
+            self.update_walls();
+        }
         if let Some(sidewalls) = &self.sidewalls {
             let gas = (&self.u_g[..], &self.v_g[..]);
             sidewalls::update_sidewalls(
@@ -488,7 +517,7 @@ impl TwoFluid {
 
     /// Step 1: closures per cell and phase at the current iterate ([`closures`]).
     fn update_closures(&mut self) {
-        closures::update_closures(
+        self.counters.cell_closures += closures::update_closures(
             &self.grid,
             &self.u_g,
             &self.v_g,
@@ -509,7 +538,11 @@ impl TwoFluid {
             weight: self.settings.relax_wall_closures,
             oscillating_only: self.settings.relax_wall_closures_oscillating_only,
         };
-        walls::update_walls(&self.grid, gas, relax, &mut self.solids, &self.solids_specs);
+        let faces =
+            walls::update_walls(&self.grid, gas, relax, &mut self.solids, &self.solids_specs);
+        for side in Side::ALL {
+            *self.counters.wall_closure_faces.get_mut(side) += faces.get(side);
+        }
     }
 }
 

@@ -6,9 +6,9 @@
 use runout_linsolve::{build, LinearSolver, LinearSolverKind, MultigridParams, Pattern, Stencil5};
 use runout_mesh::{Grid, Sides};
 
-use super::diagnostics::{Profile, Worst};
+use super::diagnostics::{Counters, Profile, Worst};
 use super::{
-    lin, CellClosures, SidewallTerms, SolidsFields, SolidsSpec, TwoFluid, TwoFluidError,
+    lin, CellClosures, Scene, SidewallTerms, SolidsFields, SolidsSpec, TwoFluid, TwoFluidError,
     TwoFluidSettings, MAX_SOLIDS_PHASES, PRESSURE_RTOL, THETA_SMALL,
 };
 use crate::kinematics::Strain;
@@ -31,6 +31,7 @@ impl TwoFluid {
             return Err(TwoFluidError::TooManyPhases(solids_specs.len()));
         }
         let (nx, ny) = (grid.nx(), grid.ny());
+        let scene = Scene::of((nx, ny), &solids_specs, &settings, None);
         let n = nx * ny;
         let outlet = |b: &SideBc| !matches!(b, SideBc::Wall(_));
         let periodic = settings.periodic_x;
@@ -78,6 +79,8 @@ impl TwoFluid {
             closures_fresh: false,
             theta_class_fresh: true,
             profile: Profile::default(),
+            counters: Counters::default(),
+            scene,
             worst: Worst::default(),
             sidewalls: None,
             grid,

@@ -126,20 +126,23 @@ pub(super) struct GasNearWalls<'a> {
 ///   ([`face_theta`]); the slip from the ghost/fluid-mean tangential velocity at the cell
 ///   centre.
 ///
-/// Gas–solids slips use the gas's own wall face values.
+/// Gas–solids slips use the gas's own wall face values. Returns the faces evaluated on each
+/// side (the scene's counters).
 pub(super) fn update_walls(
     grid: &Grid,
     gas: GasNearWalls<'_>,
     relax: WallRelaxation,
     solids: &mut [SolidsFields],
     specs: &[SolidsSpec],
-) {
+) -> Sides<u64> {
+    let mut evaluated = Sides::<u64>::default();
     for (s, spec) in solids.iter_mut().zip(specs) {
         for side in [Side::West, Side::East, Side::South, Side::North] {
             let Some(model) = spec.wall_models.get(side) else {
                 continue;
             };
             let wall = WallSide::new(grid, side);
+            *evaluated.get_mut(side) += wall.n_cells as u64 + 1;
             let gas_face = match gas.walls.get(side) {
                 SideBc::Wall(face) => Some(*face),
                 _ => None,
@@ -183,6 +186,7 @@ pub(super) fn update_walls(
             *slot(&mut s.wall_theta, side) = Some(theta_faces);
         }
     }
+    evaluated
 }
 
 /// One wall side as the near-wall gathering sees it: the fluid row next to it and the
