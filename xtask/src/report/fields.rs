@@ -13,10 +13,11 @@ use anyhow::Result;
 use plotters::prelude::*;
 use runout_output::{read_pvd, read_vtr_array, read_vtr_cells};
 
-use super::data::{Cases, Run};
+use super::coverage::{figure_section, legend, remove_stale, Coverage};
 use super::paper::FieldFigure;
 use super::plots::plot_error;
-use super::{figure_section, legend, remove_stale, Coverage};
+use runout_post::case_data::Cases;
+use runout_post::chosen::Run;
 
 /// Along-slope window of the maps [m]: from behind the release to past the furthest front.
 pub const WINDOW_X: (f64, f64) = (5.5, 15.0);

@@ -3,7 +3,8 @@
 
 use crate::metrics::{mse_vs_described, FlowMetrics, FLOW_THRESHOLD};
 
-use super::data::{CaseData, Cases, Profile};
+use runout_post::case_data::{CaseData, Cases};
+use runout_post::profile::Profile;
 
 /// Threshold h_w^u of air-cushion formation drawn in paper Fig. 9 [1/m].
 pub const CUSHION_LIMIT_H_U: f64 = 70.0;
@@ -705,8 +706,8 @@ pub const MFIX_SLIDE: &[(f64, f64, f64)] =
 
 #[cfg(test)]
 mod tests {
-    use super::super::data::fixture::*;
     use super::*;
+    use runout_post::fixture::*;
 
     /// Every case named by the report, with the cases it compares against.
     fn named_cases() -> Vec<&'static str> {

@@ -11,13 +11,14 @@ use std::path::Path;
 use anyhow::{Context, Result};
 use runout_case::{Case, Param, Sweep};
 
-use super::data::{CaseData, Cases};
+use super::coverage::remove_stale;
 use super::paper::flow_at_station;
 use super::plots::{self, HeatCell, Heatmap};
-use super::{cell, remove_stale, FIGURE_DIR};
+use super::{cell, FIGURE_DIR};
 use crate::metrics::PROFILE_TIME;
 use crate::sensitivity::{local, summary, Elasticity, Method, Summary};
 use crate::sweep::{csv_field, Matrix};
+use runout_post::case_data::{CaseData, Cases};
 
 /// The case directory of family S (the sensitivity study) below `cases/`.
 pub const SENSITIVITY_DIR: &str = "sensitivity";
@@ -581,8 +582,8 @@ pub fn section(
 
 #[cfg(test)]
 mod tests {
-    use super::super::data::fixture::*;
     use super::*;
+    use runout_post::fixture::*;
 
     fn cases_dir() -> std::path::PathBuf {
         Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases")
