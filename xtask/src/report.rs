@@ -16,9 +16,11 @@
 mod coverage;
 mod curves;
 mod fields;
+mod figure_sets;
 mod findings;
 mod paper;
 pub(crate) mod plots;
+mod reading;
 pub mod release;
 mod sensitivity;
 mod tables;
@@ -31,7 +33,7 @@ use runout_case::Fidelity;
 use runout_post::case_data::Cases;
 use runout_post::gates::{read_described_gates, speeds_of, DescribedGate};
 
-use paper::{FIELD_FIGURES, PROFILE_FIGURES};
+use figure_sets::{FIELD_FIGURES, PROFILE_FIGURES};
 use tables::cell;
 
 /// Output file, relative to the docs directory.

@@ -9,7 +9,8 @@ use runout_case::Fidelity;
 use runout_post::gates::DescribedGate;
 
 use super::coverage::{coverage, figure_section, legend, remove_stale};
-use super::paper::{ProfileFigure, CUSHION_LIMIT_H_U, FLUME, PROBE_CURVES};
+use super::figure_sets::{ProfileFigure, FLUME, PROBE_CURVES};
+use super::paper::CUSHION_LIMIT_H_U;
 use super::plots::{self, Mark, Panel, Series};
 use crate::metrics::PROFILE_TIME;
 use runout_post::case_data::Cases;

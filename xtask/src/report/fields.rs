@@ -14,8 +14,8 @@ use plotters::prelude::*;
 use runout_output::{read_pvd, read_vtr_array, read_vtr_cells};
 
 use super::coverage::{figure_section, legend, remove_stale, Coverage};
-use super::paper::FieldFigure;
-use super::plots::plot_error;
+use super::figure_sets::FieldFigure;
+use crate::figure::plot_error;
 use runout_post::case_data::Cases;
 use runout_post::chosen::Run;
 

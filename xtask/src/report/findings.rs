@@ -22,7 +22,8 @@
 use std::fmt::Write as _;
 
 use super::cell;
-use super::paper::{flow_at_station, value, Quantity, Reading, CUSHION_LIMIT_H_U, PAPER_NUMBERS};
+use super::paper::{Quantity, CUSHION_LIMIT_H_U, PAPER_NUMBERS};
+use super::reading::{flow_at_station, value, Reading};
 use runout_post::case_data::{CaseData, Cases};
 
 /// A single value of the paper is matched within this fraction of it.

@@ -7,7 +7,9 @@ use std::path::Path;
 use runout_output::RunStatus;
 use runout_post::gates::DescribedGate;
 
-use super::paper::{reading, FLUME, FLUME_SIDEWALLS, MFIX_CASE, MFIX_SLIDE, PAPER_NUMBERS};
+use super::figure_sets::{FLUME, FLUME_SIDEWALLS, MFIX_CASE, MFIX_SLIDE};
+use super::paper::PAPER_NUMBERS;
+use super::reading::reading;
 use crate::metrics::mse_vs_described;
 use runout_post::case_data::Cases;
 
