@@ -122,8 +122,9 @@ pub(crate) enum Outcome {
     Interrupted(RunSummary),
 }
 
+/// The run's summary.json, if it exists and can be read.
 fn read_summary(dir: &Path) -> Option<RunSummary> {
-    serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).ok()?).ok()
+    runout_post::folder::read_summary(dir)?.ok()
 }
 
 /// Runs one case into its folder, atomically.
@@ -289,7 +290,7 @@ pub fn finished_run(dir: &Path, resolved: &Case) -> Option<RunSummary> {
     if stored.with_start_clock() != resolved.clone().with_start_clock() {
         return None;
     }
-    serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).ok()?).ok()
+    read_summary(dir)
 }
 
 /// CSV field quoting (RFC 4180).

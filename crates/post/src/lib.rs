@@ -7,9 +7,11 @@
 //! RUN_DIR` prints [`run::RunMetrics`] as JSON; `cargo xtask` (sweep, report, calibrate,
 //! error-time) uses the same functions.
 
+pub mod bulk;
 pub mod case_data;
 pub mod chosen;
 pub mod convergence;
+pub mod fields;
 #[cfg(any(test, feature = "fixture"))]
 pub mod fixture;
 pub mod folder;
