@@ -41,11 +41,6 @@ const FN_EXCEPTIONS: &[(&str, &str, &str)] = &[
         "fluidized_bed_hangs_on_the_gas_pressure_drop",
         "one scenario test, moved with the verification code",
     ),
-    (
-        "crates/linsolve/examples/linsolve_table.rs",
-        "main",
-        "the benchmark example's script",
-    ),
 ];
 
 fn workspace() -> PathBuf {
