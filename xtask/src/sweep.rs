@@ -284,8 +284,7 @@ fn copy_run(runs: &Path, from: &str, to: &str, fidelity: Fidelity) -> Outcome {
 /// Both sides are compared in the start clock ([`Case::with_start_clock`]): a run writes its
 /// case that way, so a case whose times count from the impact matches its own run.
 pub fn finished_run(dir: &Path, resolved: &Case) -> Option<RunSummary> {
-    let mut stored: Case =
-        ron::from_str(&std::fs::read_to_string(dir.join("resolved.ron")).ok()?).ok()?;
+    let mut stored: Case = runout_post::folder::read_resolved_unvalidated(dir).ok()?;
     stored.fidelity = resolved.fidelity.clone();
     if stored.with_start_clock() != resolved.clone().with_start_clock() {
         return None;

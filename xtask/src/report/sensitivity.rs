@@ -196,9 +196,7 @@ pub const OUTPUTS: [Output; 7] = [
 fn release_front(d: &CaseData) -> Result<f64, String> {
     let run = d.run.as_ref().map_err(Clone::clone)?;
     // read, not validated: a resolved smoke case keeps the paper's profile time
-    let case: Case = std::fs::read_to_string(run.dir.join("resolved.ron"))
-        .map_err(|e| e.to_string())
-        .and_then(|t| ron::from_str(&t).map_err(|e| e.to_string()))
+    let case: Case = runout_post::folder::read_resolved_unvalidated(&run.dir)
         .map_err(|e| format!("the {} run's resolved.ron: {e}", run.fidelity))?;
     case.initial
         .regions
