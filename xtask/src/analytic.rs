@@ -18,6 +18,8 @@ use plotters::prelude::*;
 use runout_case::{load, Analytic, Loaded};
 use runout_walls::analytic::RobinProfile;
 
+use crate::figure::{plot_error, LINE_COLOURS};
+
 /// Points per closed-form curve (CSV and SVG).
 const SAMPLES: usize = 201;
 
@@ -33,16 +35,6 @@ const CASE_FILE: &str = "cases/analytic/A-fig1.ron";
 
 /// Output directory, relative to the workspace root.
 const OUTPUT_DIR: &str = "docs/analytic";
-
-/// Line colours, cycled per curve.
-const COLOURS: [RGBColor; 6] = [
-    RGBColor(31, 119, 180),
-    RGBColor(214, 39, 40),
-    RGBColor(44, 160, 44),
-    RGBColor(148, 103, 189),
-    RGBColor(255, 127, 14),
-    RGBColor(0, 0, 0),
-];
 
 /// One curve of a panel.
 struct Curve {
@@ -226,7 +218,7 @@ fn draw(a: &Analytic, panels: &[Panel], path: &Path) -> Result<()> {
             .draw()
             .map_err(plot_error)?;
         for (k, curve) in panel.curves.iter().enumerate() {
-            let colour = COLOURS[k % COLOURS.len()];
+            let colour = LINE_COLOURS[k % LINE_COLOURS.len()];
             let p = curve.profile;
             chart
                 .draw_series(LineSeries::new(
@@ -254,8 +246,4 @@ fn draw(a: &Analytic, panels: &[Panel], path: &Path) -> Result<()> {
     }
     root.present().map_err(plot_error)?;
     Ok(())
-}
-
-fn plot_error<E: std::fmt::Debug>(e: E) -> anyhow::Error {
-    anyhow::anyhow!("plotting Fig. 1: {e:?}")
 }

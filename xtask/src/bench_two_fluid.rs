@@ -253,8 +253,8 @@ fn paper_window(root: &Path, opts: &Options, rows: &mut Vec<Row>) -> Result<()> 
     let window_dir = root.join(format!("runs/bench/S-JJ-phi-{}-window", fidelity.name()));
     let _ = std::fs::remove_dir_all(&window_dir);
     copy_dir(&start, &window_dir)?;
-    let before: RunSummary =
-        serde_json::from_str(&std::fs::read_to_string(start.join("summary.json"))?)?;
+    let before: RunSummary = runout_post::folder::read_summary(&start)
+        .with_context(|| format!("no summary.json in {}", start.display()))??;
     let what = format!(
         "S-JJ-phi φ = 0.1 {fidelity} grid, t = {:.3}–{:.3} s",
         before.simulated_time,

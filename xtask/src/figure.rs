@@ -1,4 +1,5 @@
-//! What the SVG figures of several tasks share: the legend box.
+//! What the SVG figures of several tasks share: the line colours, the legend box and the
+//! error of a failed drawing.
 
 use plotters::coord::CoordTranslate;
 use plotters::prelude::*;
@@ -15,4 +16,21 @@ pub fn legend<'a, DB: DrawingBackend + 'a, CT: CoordTranslate>(
         .background_style(WHITE.mix(0.8))
         .border_style(BLACK)
         .draw()
+}
+
+/// Line colours, cycled per curve: blue, red, green, purple, orange (matplotlib's tab10),
+/// then black.
+pub const LINE_COLOURS: [RGBColor; 6] = [
+    RGBColor(31, 119, 180),
+    RGBColor(214, 39, 40),
+    RGBColor(44, 160, 44),
+    RGBColor(148, 103, 189),
+    RGBColor(255, 127, 14),
+    RGBColor(0, 0, 0),
+];
+
+/// A drawing error of plotters (whose error types are not `std::error::Error` for every
+/// backend) as an `anyhow` error.
+pub fn plot_error<E: std::fmt::Debug>(e: E) -> anyhow::Error {
+    anyhow::anyhow!("plotting a figure: {e:?}")
 }

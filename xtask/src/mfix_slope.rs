@@ -117,24 +117,10 @@ fn run_timed(
     })
 }
 
-/// Rows (t, front, ū_s) of a run's bulk.csv.
+/// Rows (t, front, ū_s) of a run's bulk.csv ([`runout_post::bulk::read_bulk`]).
 fn read_bulk(dir: &Path) -> Result<Vec<(f64, f64, f64)>> {
-    let path = dir.join("bulk.csv");
-    let mut reader =
-        csv::Reader::from_path(&path).with_context(|| format!("reading {}", path.display()))?;
-    let mut rows = Vec::new();
-    for record in reader.records() {
-        let r = record?;
-        let num = |i: usize| -> Result<f64> {
-            r.get(i)
-                .context("short row")?
-                .trim()
-                .parse::<f64>()
-                .with_context(|| format!("{}: bad number", path.display()))
-        };
-        rows.push((num(0)?, num(2)?, num(3)?));
-    }
-    Ok(rows)
+    let rows = runout_post::bulk::read_bulk(&dir.join("bulk.csv")).map_err(anyhow::Error::msg)?;
+    Ok(rows.iter().map(|r| (r.t, r.front, r.mean_u)).collect())
 }
 
 /// Linear interpolation of (front, ū) at time t from bulk rows.
@@ -154,12 +140,11 @@ pub fn at_time(rows: &[(f64, f64, f64)], t: f64) -> Option<(f64, f64)> {
 
 /// The `.vtr` of a run's `fields.pvd` closest to time t, with its time.
 fn fields_near(dir: &Path, t: f64) -> Result<(f64, String)> {
-    let pvd = std::fs::read_to_string(dir.join("fields.pvd"))
+    let entries = runout_post::fields::field_files(dir)
         .with_context(|| format!("reading {}/fields.pvd", dir.display()))?;
-    let best = runout_output::read_pvd(&pvd)
-        .into_iter()
-        .min_by(|a, b| (a.0 - t).abs().total_cmp(&(b.0 - t).abs()));
-    let (time, file) = best.context("no fields in fields.pvd")?;
+    let (time, file) = runout_post::fields::nearest(&entries, t)
+        .cloned()
+        .context("no fields in fields.pvd")?;
     let text = std::fs::read_to_string(dir.join(&file))
         .with_context(|| format!("reading {}", dir.join(&file).display()))?;
     Ok((time, text))

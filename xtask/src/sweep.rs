@@ -594,9 +594,9 @@ mod tests {
         let mut on_impact = case.clone();
         on_impact.run.end_time = 0.2;
         // the run writes its case in the start clock
-        let tmp = crate::report::data::fixture::TempDir::new("finished-impact-clock");
+        let tmp = runout_post::fixture::TempDir::new("finished-impact-clock");
         let written = ron::ser::to_string(&on_impact.clone().with_start_clock()).unwrap();
-        crate::report::data::fixture::write_run(
+        runout_post::fixture::write_run(
             &tmp.0,
             &case.name,
             "smoke",
@@ -651,7 +651,7 @@ mod tests {
     /// each), so nothing is solved.
     #[test]
     fn subsets_run_in_turn_keep_each_others_rows() {
-        use crate::report::data::fixture::{write_run, TempDir};
+        use runout_post::fixture::{write_run, TempDir};
         let tmp = TempDir::new("sweep-subsets");
         let cases = Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases");
         let names = [

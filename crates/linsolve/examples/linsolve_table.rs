@@ -120,179 +120,170 @@ fn main() {
         );
         let exact = manufactured_solution(&grid);
         let cap = 2000;
+        pressure_rows(&grid, &exact, reps, big, cap);
+        momentum_rows(&grid, &exact, reps, cap);
+        diffusive_rows(&grid, &exact, reps, big, cap);
+    }
+}
 
-        // ---- pressure-like (SPD) ----------------------------------------------------------
-        let mut p = pressure_like(&grid).expect("grid");
-        set_rhs_from_solution(&mut p, &exact).expect("sizes");
-        let sys = "pressure";
+/// The rows of the pressure-like (SPD) system.
+fn pressure_rows(grid: &Grid, exact: &[f64], reps: usize, big: bool, cap: usize) {
+    // ---- pressure-like (SPD) ----------------------------------------------------------
+    let mut p = pressure_like(grid).expect("grid");
+    set_rhs_from_solution(&mut p, exact).expect("sizes");
+    let sys = "pressure";
+    run(sys, &p, exact, &LinearSolverKind::SparseLu, "faer LU", reps);
+    run(
+        sys,
+        &p,
+        exact,
+        &LinearSolverKind::Cholesky,
+        "faer Cholesky",
+        reps,
+    );
+    run(
+        sys,
+        &p,
+        exact,
+        &mg(Cycle::K, 1e-8),
+        "AMG K-cycle + FCG, 1e-8",
+        reps,
+    );
+    run(
+        sys,
+        &p,
+        exact,
+        &mg(Cycle::V, 1e-8),
+        "AMG V-cycle + FCG, 1e-8",
+        reps,
+    );
+    run(
+        sys,
+        &p,
+        exact,
+        &mg(Cycle::K, 1e-4),
+        "AMG K-cycle + FCG, 1e-4",
+        reps,
+    );
+    for (name, pc) in [
+        ("AMG-K", Precond::MultigridK),
+        ("AMG-V", Precond::MultigridV),
+    ] {
+        let label = format!("BiCGSTAB + {name}, 1e-8");
+        run(sys, &p, exact, &bicg(1e-8, cap, pc), &label, reps);
+    }
+    if !big {
+        // Jacobi/line/ILU(0) need O(√n)–O(n) iterations on an elliptic problem: hopeless at 1M
         run(
             sys,
             &p,
-            &exact,
-            &LinearSolverKind::SparseLu,
-            "faer LU",
+            exact,
+            &bicg(1e-8, cap, Precond::Ilu0),
+            "BiCGSTAB + ILU(0), 1e-8",
             reps,
         );
         run(
             sys,
             &p,
-            &exact,
-            &LinearSolverKind::Cholesky,
-            "faer Cholesky",
+            exact,
+            &bicg(1e-8, cap, Precond::LineY),
+            "BiCGSTAB + line-y, 1e-8",
             reps,
         );
         run(
             sys,
             &p,
-            &exact,
-            &mg(Cycle::K, 1e-8),
-            "AMG K-cycle + FCG, 1e-8",
+            exact,
+            &bicg(1e-8, cap, Precond::Jacobi),
+            "BiCGSTAB + Jacobi, 1e-8",
+            reps,
+        );
+    }
+    run(
+        sys,
+        &p,
+        exact,
+        &bicg(1e-4, 20, Precond::LineY),
+        "BiCGSTAB + line-y, 1e-4, cap 20 (MFIX-like)",
+        reps,
+    );
+    run(
+        sys,
+        &p,
+        exact,
+        &bicg(1e-4, 20, Precond::Ilu0),
+        "BiCGSTAB + ILU(0), 1e-4, cap 20",
+        reps,
+    );
+}
+
+/// The rows of the momentum-like system (non-symmetric, cell Péclet 100, CFL 1).
+fn momentum_rows(grid: &Grid, exact: &[f64], reps: usize, cap: usize) {
+    // ---- momentum-like (non-symmetric, cell Péclet 100, CFL 1) -------------------------
+    let mut m = momentum_like(grid, 100.0, 1.0).expect("grid");
+    set_rhs_from_solution(&mut m, exact).expect("sizes");
+    let sys = "momentum";
+    run(sys, &m, exact, &LinearSolverKind::SparseLu, "faer LU", reps);
+    for (rtol, cap_it) in [(1e-8, cap), (1e-4, cap)] {
+        run(
+            sys,
+            &m,
+            exact,
+            &bicg(rtol, cap_it, Precond::Ilu0),
+            &format!("BiCGSTAB + ILU(0), {rtol:.0e}"),
             reps,
         );
         run(
             sys,
-            &p,
-            &exact,
-            &mg(Cycle::V, 1e-8),
-            "AMG V-cycle + FCG, 1e-8",
+            &m,
+            exact,
+            &bicg(rtol, cap_it, Precond::LineY),
+            &format!("BiCGSTAB + line-y, {rtol:.0e}"),
             reps,
         );
         run(
             sys,
-            &p,
-            &exact,
-            &mg(Cycle::K, 1e-4),
-            "AMG K-cycle + FCG, 1e-4",
+            &m,
+            exact,
+            &bicg(rtol, cap_it, Precond::Jacobi),
+            &format!("BiCGSTAB + Jacobi, {rtol:.0e}"),
             reps,
         );
+        run(
+            sys,
+            &m,
+            exact,
+            &bicg(rtol, cap_it, Precond::MultigridK),
+            &format!("BiCGSTAB + AMG-K, {rtol:.0e}"),
+            reps,
+        );
+    }
+}
+
+/// The rows of the diffusion-dominated non-symmetric system (cell Péclet 1, CFL 100).
+fn diffusive_rows(grid: &Grid, exact: &[f64], reps: usize, big: bool, cap: usize) {
+    // ---- diffusion-dominated non-symmetric (cell Péclet 1, CFL 100): like the
+    // εs correction in a packed bed, where K_cp diffusion dominates ----------------------
+    let mut e = momentum_like(grid, 1.0, 100.0).expect("grid");
+    set_rhs_from_solution(&mut e, exact).expect("sizes");
+    let sys = "diffusive-nsym";
+    run(sys, &e, exact, &LinearSolverKind::SparseLu, "faer LU", reps);
+    for (rtol, cap_it) in [(1e-8, cap), (1e-4, cap)] {
+        if rtol < 1e-6 && big {
+            continue; // hundreds of iterations at 1M: only the AMG rows below
+        }
+        for (name, pc) in [("ILU(0)", Precond::Ilu0), ("line-y", Precond::LineY)] {
+            let label = format!("BiCGSTAB + {name}, {rtol:.0e}");
+            run(sys, &e, exact, &bicg(rtol, cap_it, pc), &label, reps);
+        }
+    }
+    for rtol in [1e-8, 1e-4] {
         for (name, pc) in [
             ("AMG-K", Precond::MultigridK),
             ("AMG-V", Precond::MultigridV),
         ] {
-            let label = format!("BiCGSTAB + {name}, 1e-8");
-            run(sys, &p, &exact, &bicg(1e-8, cap, pc), &label, reps);
-        }
-        if !big {
-            // Jacobi/line/ILU(0) need O(√n)–O(n) iterations on an elliptic problem: hopeless at 1M
-            run(
-                sys,
-                &p,
-                &exact,
-                &bicg(1e-8, cap, Precond::Ilu0),
-                "BiCGSTAB + ILU(0), 1e-8",
-                reps,
-            );
-            run(
-                sys,
-                &p,
-                &exact,
-                &bicg(1e-8, cap, Precond::LineY),
-                "BiCGSTAB + line-y, 1e-8",
-                reps,
-            );
-            run(
-                sys,
-                &p,
-                &exact,
-                &bicg(1e-8, cap, Precond::Jacobi),
-                "BiCGSTAB + Jacobi, 1e-8",
-                reps,
-            );
-        }
-        run(
-            sys,
-            &p,
-            &exact,
-            &bicg(1e-4, 20, Precond::LineY),
-            "BiCGSTAB + line-y, 1e-4, cap 20 (MFIX-like)",
-            reps,
-        );
-        run(
-            sys,
-            &p,
-            &exact,
-            &bicg(1e-4, 20, Precond::Ilu0),
-            "BiCGSTAB + ILU(0), 1e-4, cap 20",
-            reps,
-        );
-
-        // ---- momentum-like (non-symmetric, cell Péclet 100, CFL 1) -------------------------
-        let mut m = momentum_like(&grid, 100.0, 1.0).expect("grid");
-        set_rhs_from_solution(&mut m, &exact).expect("sizes");
-        let sys = "momentum";
-        run(
-            sys,
-            &m,
-            &exact,
-            &LinearSolverKind::SparseLu,
-            "faer LU",
-            reps,
-        );
-        for (rtol, cap_it) in [(1e-8, cap), (1e-4, cap)] {
-            run(
-                sys,
-                &m,
-                &exact,
-                &bicg(rtol, cap_it, Precond::Ilu0),
-                &format!("BiCGSTAB + ILU(0), {rtol:.0e}"),
-                reps,
-            );
-            run(
-                sys,
-                &m,
-                &exact,
-                &bicg(rtol, cap_it, Precond::LineY),
-                &format!("BiCGSTAB + line-y, {rtol:.0e}"),
-                reps,
-            );
-            run(
-                sys,
-                &m,
-                &exact,
-                &bicg(rtol, cap_it, Precond::Jacobi),
-                &format!("BiCGSTAB + Jacobi, {rtol:.0e}"),
-                reps,
-            );
-            run(
-                sys,
-                &m,
-                &exact,
-                &bicg(rtol, cap_it, Precond::MultigridK),
-                &format!("BiCGSTAB + AMG-K, {rtol:.0e}"),
-                reps,
-            );
-        }
-
-        // ---- diffusion-dominated non-symmetric (cell Péclet 1, CFL 100): like the
-        // εs correction in a packed bed, where K_cp diffusion dominates ----------------------
-        let mut e = momentum_like(&grid, 1.0, 100.0).expect("grid");
-        set_rhs_from_solution(&mut e, &exact).expect("sizes");
-        let sys = "diffusive-nsym";
-        run(
-            sys,
-            &e,
-            &exact,
-            &LinearSolverKind::SparseLu,
-            "faer LU",
-            reps,
-        );
-        for (rtol, cap_it) in [(1e-8, cap), (1e-4, cap)] {
-            if rtol < 1e-6 && big {
-                continue; // hundreds of iterations at 1M: only the AMG rows below
-            }
-            for (name, pc) in [("ILU(0)", Precond::Ilu0), ("line-y", Precond::LineY)] {
-                let label = format!("BiCGSTAB + {name}, {rtol:.0e}");
-                run(sys, &e, &exact, &bicg(rtol, cap_it, pc), &label, reps);
-            }
-        }
-        for rtol in [1e-8, 1e-4] {
-            for (name, pc) in [
-                ("AMG-K", Precond::MultigridK),
-                ("AMG-V", Precond::MultigridV),
-            ] {
-                let label = format!("BiCGSTAB + {name}, {rtol:.0e}");
-                run(sys, &e, &exact, &bicg(rtol, cap, pc), &label, reps);
-            }
+            let label = format!("BiCGSTAB + {name}, {rtol:.0e}");
+            run(sys, &e, exact, &bicg(rtol, cap, pc), &label, reps);
         }
     }
 }

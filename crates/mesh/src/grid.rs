@@ -8,7 +8,8 @@ use std::fmt;
 
 use serde::{Deserialize, Serialize};
 
-use crate::axis::{total_cells, Axis, Segment};
+use crate::axis::Axis;
+use crate::segment::{total_cells, Segment};
 use crate::MeshError;
 
 /// A side of the rectangular domain.

@@ -10,12 +10,14 @@
 mod axis;
 mod grid;
 mod number;
+mod segment;
 #[cfg(feature = "proptest")]
 pub mod strategies;
 
-pub use axis::{Axis, Segment, MAX_AXIS_CELLS};
+pub use axis::Axis;
 pub use grid::{AxisSpec, Grid, GridSummary, Side, Sides};
 pub use number::short;
+pub use segment::{Segment, MAX_AXIS_CELLS};
 
 /// Errors building a grid.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

@@ -17,6 +17,9 @@ use std::path::Path;
 
 use serde::Serialize;
 
+use crate::folder::{first_csv, read_resolved};
+/// The gate files are read in [`crate::gates`].
+pub use crate::gates::{described_speeds, gate_speeds};
 use crate::table::Table;
 
 /// Fraction of the peak εs below which the floor is an air cushion.
@@ -61,21 +64,6 @@ fn rows(path: &Path, columns: &[&str]) -> Option<Vec<Vec<f64>>> {
             .map(|k| cols.iter().map(|c| c[k]).collect())
             .collect(),
     )
-}
-
-/// The first file in `dir` whose name starts with `prefix` and ends with `.csv`.
-fn find(dir: &Path, prefix: &str) -> Option<std::path::PathBuf> {
-    let mut names: Vec<_> = std::fs::read_dir(dir)
-        .ok()?
-        .filter_map(|e| e.ok().map(|e| e.path()))
-        .filter(|p| {
-            p.file_name()
-                .and_then(|n| n.to_str())
-                .is_some_and(|n| n.starts_with(prefix) && n.ends_with(".csv"))
-        })
-        .collect();
-    names.sort();
-    names.into_iter().next()
 }
 
 /// Profile metrics from rows (y, εs, u_s, θ) ordered from the floor up; `cell_top(k)` is the
@@ -142,8 +130,7 @@ pub fn station_time(case: Option<&runout_case::Case>) -> f64 {
 
 /// All flow metrics of the run in `dir`; `described` holds (gate number, speed) pairs.
 pub fn flow_metrics(dir: &Path, described: &[(usize, f64)]) -> FlowMetrics {
-    let resolved = runout_case::load_case(&dir.join("resolved.ron")).ok();
-    let at = station_time(resolved.as_ref());
+    let at = station_time(read_resolved(dir).as_ref());
     // the profile at the station time (the monitors name files by time with `{}`)
     let at_station = std::fs::read_dir(dir).ok().and_then(|entries| {
         entries.filter_map(|e| e.ok().map(|e| e.path())).find(|p| {
@@ -153,11 +140,11 @@ pub fn flow_metrics(dir: &Path, described: &[(usize, f64)]) -> FlowMetrics {
         })
     });
     let mut m = at_station
-        .or_else(|| find(dir, "profile_"))
+        .or_else(|| first_csv(dir, "profile_"))
         .and_then(|p| rows(&p, &["y", "eps_s", "u_s", "theta"]))
         .map(|r| profile_metrics(&r))
         .unwrap_or_default();
-    if let Some(probe) = find(dir, "wall_probe_").and_then(|p| rows(&p, &["t", "h_w_u"])) {
+    if let Some(probe) = first_csv(dir, "wall_probe_").and_then(|p| rows(&p, &["t", "h_w_u"])) {
         m.h_wu_probe = probe
             .iter()
             .rfind(|r| r[0] <= at * (1.0 + 1e-9))
@@ -168,18 +155,6 @@ pub fn flow_metrics(dir: &Path, described: &[(usize, f64)]) -> FlowMetrics {
         m.mse_vs_described = mse_vs_described(&m.gate_speeds, described).map(|(e, _)| e);
     }
     m
-}
-
-/// The front speed at each gate the run in `dir` crossed (its `gates.csv`): (gate number,
-/// speed); `None` without the file.
-pub fn gate_speeds(dir: &Path) -> Option<Vec<(usize, f64)>> {
-    Some(
-        rows(&dir.join("gates.csv"), &["gate", "speed"])?
-            .iter()
-            .filter(|r| r[1].is_finite())
-            .map(|r| (r[0] as usize, r[1]))
-            .collect(),
-    )
 }
 
 /// Mean square difference between gate speeds and the described speeds over the gates both
@@ -204,24 +179,6 @@ pub fn mse_vs_described(
             squares.len(),
         )
     })
-}
-
-/// The described gate speeds of cases/flume/gates.csv: (gate number, speed) for rows with a
-/// speed (gate names are L1..L7).
-pub fn described_speeds(gates_csv: &Path) -> Vec<(usize, f64)> {
-    let Ok(text) = std::fs::read_to_string(gates_csv) else {
-        return Vec::new();
-    };
-    text.lines()
-        .filter(|l| !l.trim_start().starts_with('#'))
-        .skip(1)
-        .filter_map(|l| {
-            let f: Vec<&str> = l.split(',').collect();
-            let gate = f.first()?.trim().trim_start_matches('L').parse().ok()?;
-            let speed = f.get(2)?.trim().parse().ok()?;
-            Some((gate, speed))
-        })
-        .collect()
 }
 
 impl FlowMetrics {

@@ -6,6 +6,7 @@ use std::path::Path;
 use runout_output::RunSummary;
 use serde::Serialize;
 
+use crate::folder::{read_resolved, read_summary};
 use crate::metrics::{flow_metrics, station_time, FlowMetrics};
 use crate::table::Table;
 
@@ -40,12 +41,10 @@ pub fn run_metrics(dir: &Path, described: &[(usize, f64)]) -> Result<RunMetrics,
             dir.display()
         ));
     }
-    let summary = std::fs::read_to_string(dir.join("summary.json"))
-        .ok()
-        .map(|text| serde_json::from_str::<RunSummary>(&text))
+    let summary = read_summary(dir)
         .transpose()
         .map_err(|e| format!("{}: unreadable summary.json: {e}", dir.display()))?;
-    let resolved = runout_case::load_case(&dir.join("resolved.ron")).ok();
+    let resolved = read_resolved(dir);
     let at = station_time(resolved.as_ref());
     let bulk = bulk_at(dir, at);
     Ok(RunMetrics {

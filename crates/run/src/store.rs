@@ -29,7 +29,7 @@ pub fn partial_dir(done: &Path) -> PathBuf {
 
 /// The summary in `dir`, if it holds one that reads.
 pub fn read_summary(dir: &Path) -> Option<RunSummary> {
-    serde_json::from_str(&std::fs::read_to_string(dir.join("summary.json")).ok()?).ok()
+    runout_post::folder::read_summary(dir)?.ok()
 }
 
 /// The finished run in `dir` if it ran exactly `resolved`: its `resolved.ron` is read back
@@ -42,8 +42,7 @@ pub fn read_summary(dir: &Path) -> Option<RunSummary> {
 /// Both sides are compared in the start clock ([`Case::with_start_clock`]): a run writes its
 /// case that way, so a case whose times count from the impact matches its own run.
 pub fn finished_run(dir: &Path, resolved: &Case) -> Option<RunSummary> {
-    let mut stored: Case =
-        ron::from_str(&std::fs::read_to_string(dir.join("resolved.ron")).ok()?).ok()?;
+    let mut stored: Case = runout_post::folder::read_resolved_unvalidated(dir).ok()?;
     stored.fidelity = resolved.fidelity.clone();
     if stored.with_start_clock() != resolved.clone().with_start_clock() {
         return None;

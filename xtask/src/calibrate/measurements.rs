@@ -19,6 +19,8 @@ use std::path::{Path, PathBuf};
 use anyhow::{bail, Context, Result};
 
 use crate::metrics::{gate_speeds, mse_vs_described};
+use runout_post::folder::csv_files;
+use runout_post::table::Table;
 
 /// The profile columns a measured profile may compare.
 pub const PROFILE_COLUMNS: [&str; 5] = ["eps_s", "u_s", "theta", "u_g", "v_g"];
@@ -203,27 +205,15 @@ pub fn interpolate(points: &[(f64, f64)], a: f64, clamp: bool) -> Option<f64> {
     Some(p.1 + (q.1 - p.1) * (a - p.0) / (q.0 - p.0))
 }
 
-/// Two numeric columns of a run's monitor CSV, by name.
+/// Two numeric columns of a run's monitor CSV, by name ([`Table`]); rows with an empty cell
+/// in either are left out.
 fn columns(file: &Path, x: &str, y: &str) -> Result<Vec<(f64, f64)>> {
-    let text =
-        std::fs::read_to_string(file).with_context(|| format!("reading {}", file.display()))?;
-    let mut lines = text.lines();
-    let header: Vec<&str> = lines.next().unwrap_or("").split(',').collect();
-    let index = |name: &str| {
-        header
-            .iter()
-            .position(|h| h.trim() == name)
-            .with_context(|| format!("{}: no column `{name}`", file.display()))
-    };
-    let (i, j) = (index(x)?, index(y)?);
-    Ok(lines
-        .filter_map(|l| {
-            let f: Vec<&str> = l.split(',').collect();
-            Some((
-                f.get(i)?.trim().parse().ok()?,
-                f.get(j)?.trim().parse().ok()?,
-            ))
-        })
+    let pairs = Table::read(file)
+        .and_then(|t| t.pairs(x, y))
+        .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
+    Ok(pairs
+        .into_iter()
+        .filter(|(a, b)| !a.is_nan() && !b.is_nan())
         .collect())
 }
 
@@ -242,16 +232,7 @@ fn profile(dir: &Path, column: &str, file: Option<&str>) -> Result<Vec<(f64, f64
     let chosen = match file {
         Some(name) => dir.join(name),
         None => {
-            let mut found: Vec<PathBuf> = std::fs::read_dir(dir)
-                .with_context(|| format!("reading {}", dir.display()))?
-                .filter_map(|e| e.ok().map(|e| e.path()))
-                .filter(|p| {
-                    p.file_name()
-                        .and_then(|n| n.to_str())
-                        .is_some_and(|n| n.starts_with("profile_x") && n.ends_with(".csv"))
-                })
-                .collect();
-            found.sort();
+            let mut found = csv_files(dir, "profile_x");
             match found.len() {
                 1 => found.remove(0),
                 0 => bail!("{}: no profile_x*.csv", dir.display()),

@@ -12,10 +12,8 @@ fn vtr_array(xml: &str, name: &str) -> Result<Vec<f64>> {
 
 /// The last field file of a run: εs and θ per cell.
 pub(super) fn last_fields(run_dir: &Path) -> Result<(Vec<f64>, Vec<f64>)> {
-    let pvd_path = run_dir.join("fields.pvd");
-    let pvd = std::fs::read_to_string(&pvd_path)
-        .with_context(|| format!("reading {}", pvd_path.display()))?;
-    let (_, last) = runout_output::read_pvd(&pvd)
+    let (_, last) = runout_post::fields::field_files(run_dir)
+        .with_context(|| format!("reading {}", run_dir.join("fields.pvd").display()))?
         .pop()
         .context("fields.pvd lists no file")?;
     let path = run_dir.join(last);

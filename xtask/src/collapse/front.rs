@@ -4,7 +4,8 @@
 
 use std::path::Path;
 
-use anyhow::{bail, Context, Result};
+use anyhow::{bail, Result};
+pub use runout_post::bulk::BulkRow;
 
 use super::column::Column;
 
@@ -16,40 +17,9 @@ const STOP_WINDOW: f64 = 0.1;
 /// is also reported at this time.
 const LAB_STOP_TIMES: f64 = 3.0;
 
-/// One row of `bulk.csv`.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BulkRow {
-    /// time [s]
-    pub t: f64,
-    /// solids mass per unit depth [kg m⁻¹]
-    pub mass: f64,
-    /// front x [m]
-    pub front: f64,
-    /// εs-weighted mean u_s [m s⁻¹]
-    pub mean_u: f64,
-}
-
-/// Reads `bulk.csv` (header t,solids_mass,front_x,mean_u_s).
+/// Reads `bulk.csv` ([`runout_post::bulk::read_bulk`]); a file without samples is an error.
 pub fn read_bulk(path: &Path) -> Result<Vec<BulkRow>> {
-    let text =
-        std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
-    let mut rows = Vec::new();
-    for (n, line) in text.lines().enumerate().skip(1) {
-        let v: Vec<f64> = line
-            .split(',')
-            .map(|s| s.trim().parse::<f64>())
-            .collect::<Result<_, _>>()
-            .with_context(|| format!("{}:{}: not numbers", path.display(), n + 1))?;
-        if v.len() != 4 {
-            bail!("{}:{}: expected 4 columns", path.display(), n + 1);
-        }
-        rows.push(BulkRow {
-            t: v[0],
-            mass: v[1],
-            front: v[2],
-            mean_u: v[3],
-        });
-    }
+    let rows = runout_post::bulk::read_bulk(path).map_err(anyhow::Error::msg)?;
     if rows.is_empty() {
         bail!("{}: no samples", path.display());
     }

@@ -7,15 +7,11 @@ use anyhow::Result;
 use plotters::prelude::*;
 
 use super::run::Outcome;
-use crate::figure::legend;
+use crate::figure::{legend, plot_error};
 use runout_verification::references::{LAJEUNESSE, LUBE};
 
 /// SVG size [px].
 const FIGURE_SIZE: (u32, u32) = (900, 650);
-
-fn plot_error<E: std::fmt::Debug>(e: E) -> anyhow::Error {
-    anyhow::anyhow!("plotting: {e:?}")
-}
 
 /// Log–log runout against a: the runs (filled: εs ≥ 0.01 front, triangles where it reached
 /// the end wall; hollow: εs ≥ 0.3) and both laws, each branch over its side of a0.

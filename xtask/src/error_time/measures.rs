@@ -4,7 +4,8 @@
 
 use super::quantity::{History, LevelData, Quantity};
 use crate::metrics::FLOW_THRESHOLD;
-use crate::report::data::Profile;
+use runout_post::convergence::{weighted_l1, weighted_l2};
+use runout_post::profile::Profile;
 
 /// Linear interpolation of (xs, ys) at `x`, extended linearly beyond the ends (xs
 /// increasing, at least one point). On a sample point it is that sample's value alone, so a
@@ -41,27 +42,11 @@ pub fn cell_heights(centres: &[f64]) -> Vec<f64> {
 
 /// Weighted norm of a difference: weighted L1 for profiles, RMS for gate speeds.
 pub(super) fn norm(quantity: Quantity, weights: &[f64], diff: &[f64]) -> f64 {
-    let total: f64 = weights.iter().sum();
     if quantity.is_profile() {
-        weights
-            .iter()
-            .zip(diff)
-            .map(|(w, d)| w * d.abs())
-            .sum::<f64>()
-            / total
+        weighted_l1(weights, diff)
     } else {
-        (weights
-            .iter()
-            .zip(diff)
-            .map(|(w, d)| w * d * d)
-            .sum::<f64>()
-            / total)
-            .sqrt()
+        weighted_l2(weights, diff)
     }
-}
-
-pub(super) fn max_abs(diff: &[f64]) -> f64 {
-    diff.iter().fold(0.0, |m, d| m.max(d.abs()))
 }
 
 /// Range (max − min) of `values`; the scale of a profile error.

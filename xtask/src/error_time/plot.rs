@@ -9,17 +9,10 @@ use plotters::prelude::*;
 use super::ladder::scheme_name;
 use super::quantity::Quantity;
 use super::Ladder;
-use crate::figure::legend;
+use crate::figure::{legend, plot_error, LINE_COLOURS};
 
 /// SVG size [px].
 const FIGURE_SIZE: (u32, u32) = (900, 600);
-/// Line colours, one per scheme.
-const COLOURS: [RGBColor; 4] = [
-    RGBColor(31, 119, 180),
-    RGBColor(214, 39, 40),
-    RGBColor(44, 160, 44),
-    RGBColor(148, 103, 189),
-];
 
 /// A file-name-safe form of a case name.
 pub(super) fn file_stem(name: &str) -> String {
@@ -44,10 +37,6 @@ fn decades(values: impl Iterator<Item = f64>) -> (f64, f64) {
     let lo = 10f64.powf((lo / 1.5).log10().floor());
     let hi = 10f64.powf((hi * 1.5).log10().ceil()).max(10.0 * lo);
     (lo, hi)
-}
-
-fn plot_error<E: std::fmt::Debug>(e: E) -> anyhow::Error {
-    anyhow::anyhow!("plotting the error-time figure: {e:?}")
 }
 
 /// Log–log error against wall time for one case and quantity, one colour per scheme: solid
@@ -115,7 +104,7 @@ pub(super) fn draw(
         .draw()
         .map_err(plot_error)?;
     for (k, (scheme, vs_ref, vs_rich)) in lines.iter().enumerate() {
-        let colour = COLOURS[k % COLOURS.len()];
+        let colour = LINE_COLOURS[k % LINE_COLOURS.len()];
         chart
             .draw_series(LineSeries::new(
                 vs_ref.iter().map(|&(t, e, _)| (t, e)),

@@ -3,7 +3,7 @@
 
 use runout_case::Case;
 
-use crate::report::data::Profile;
+use runout_post::profile::Profile;
 
 /// The quantities compared.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -6,7 +6,8 @@ use std::path::Path;
 use runout_case::Case;
 
 use super::quantity::History;
-use crate::report::data::{Profile, Table};
+use runout_post::profile::Profile;
+use runout_post::table::Table;
 
 /// The station profile of a finished run: the case's first profile monitor at its last time.
 pub(super) fn read_profile(dir: &Path, case: &Case) -> Option<Profile> {

@@ -11,12 +11,14 @@ use std::path::Path;
 
 use anyhow::Result;
 use plotters::prelude::*;
-use runout_output::{read_pvd, read_vtr_array, read_vtr_cells};
+use runout_output::{read_vtr_array, read_vtr_cells};
+use runout_post::fields::{field_files, nearest};
 
-use super::data::{Cases, Run};
-use super::paper::FieldFigure;
-use super::plots::plot_error;
-use super::{figure_section, legend, remove_stale, Coverage};
+use super::coverage::{figure_section, legend, remove_stale, Coverage};
+use super::figure_sets::FieldFigure;
+use crate::figure::plot_error;
+use runout_post::case_data::Cases;
+use runout_post::chosen::Run;
 
 /// Along-slope window of the maps [m]: from behind the release to past the furthest front.
 pub const WINDOW_X: (f64, f64) = (5.5, 15.0);
@@ -62,10 +64,9 @@ pub fn gas_map(run: &Run, time: f64) -> Result<GasMap, String> {
         std::fs::read_to_string(run.dir.join(name))
             .map_err(|e| format!("the {} run's {name}: {e}", run.fidelity))
     };
-    let entries = read_pvd(&read("fields.pvd")?);
-    let (field_time, file) = entries
-        .iter()
-        .min_by(|a, b| (a.0 - time).abs().total_cmp(&(b.0 - time).abs()))
+    let entries =
+        field_files(&run.dir).map_err(|e| format!("the {} run's fields.pvd: {e}", run.fidelity))?;
+    let (field_time, file) = nearest(&entries, time)
         .ok_or_else(|| format!("the {} run's fields.pvd lists no field", run.fidelity))?;
     if (field_time - time).abs() > TIME_TOLERANCE {
         return Err(format!(

@@ -22,8 +22,9 @@
 use std::fmt::Write as _;
 
 use super::cell;
-use super::data::{CaseData, Cases};
-use super::paper::{flow_at_station, value, Quantity, Reading, CUSHION_LIMIT_H_U, PAPER_NUMBERS};
+use super::paper::{Quantity, CUSHION_LIMIT_H_U, PAPER_NUMBERS};
+use super::reading::{flow_at_station, value, Reading};
+use runout_post::case_data::{CaseData, Cases};
 
 /// A single value of the paper is matched within this fraction of it.
 pub const RELATIVE_TOLERANCE: f64 = 0.2;
@@ -634,9 +635,9 @@ pub fn section(md: &mut String, cases: &Cases, described: &[(usize, f64)]) {
 
 #[cfg(test)]
 mod tests {
-    use super::super::data::fixture::*;
     use super::*;
     use runout_case::Fidelity;
+    use runout_post::fixture::*;
 
     #[test]
     fn every_printed_value_of_the_paper_reads_as_an_expectation() {

@@ -5,6 +5,8 @@ use std::path::Path;
 use anyhow::Result;
 use plotters::prelude::*;
 
+use crate::figure::plot_error;
+
 /// Width of one panel [px].
 const PANEL_WIDTH: u32 = 460;
 /// Height of one panel [px].
@@ -404,10 +406,6 @@ pub fn draw_heatmap(path: &Path, map: &Heatmap) -> Result<()> {
     .map_err(plot_error)?;
     root.present().map_err(plot_error)?;
     Ok(())
-}
-
-pub(crate) fn plot_error<E: std::fmt::Debug>(e: E) -> anyhow::Error {
-    anyhow::anyhow!("plotting a results figure: {e:?}")
 }
 
 #[cfg(test)]

@@ -16,10 +16,11 @@ use std::path::Path;
 use anyhow::{Context, Result};
 use runout_case::{Fidelity, SourcedCase};
 
-use super::data::{CaseData, Table};
-use super::paper::flow_at_station;
 use super::plots::{draw, Mark, Panel, Series};
+use super::reading::flow_at_station;
 use crate::metrics::PROFILE_TIME;
+use runout_post::case_data::CaseData;
+use runout_post::table::Table;
 
 /// The study's name in its sweep files.
 pub const STUDY: &str = "release";

@@ -11,13 +11,14 @@ use std::path::Path;
 use anyhow::{Context, Result};
 use runout_case::{Case, Param, Sweep};
 
-use super::data::{CaseData, Cases};
-use super::paper::flow_at_station;
+use super::coverage::remove_stale;
 use super::plots::{self, HeatCell, Heatmap};
-use super::{cell, remove_stale, FIGURE_DIR};
+use super::reading::flow_at_station;
+use super::{cell, FIGURE_DIR};
 use crate::metrics::PROFILE_TIME;
 use crate::sensitivity::{local, summary, Elasticity, Method, Summary};
 use crate::sweep::{csv_field, Matrix};
+use runout_post::case_data::{CaseData, Cases};
 
 /// The case directory of family S (the sensitivity study) below `cases/`.
 pub const SENSITIVITY_DIR: &str = "sensitivity";
@@ -195,9 +196,7 @@ pub const OUTPUTS: [Output; 7] = [
 fn release_front(d: &CaseData) -> Result<f64, String> {
     let run = d.run.as_ref().map_err(Clone::clone)?;
     // read, not validated: a resolved smoke case keeps the paper's profile time
-    let case: Case = std::fs::read_to_string(run.dir.join("resolved.ron"))
-        .map_err(|e| e.to_string())
-        .and_then(|t| ron::from_str(&t).map_err(|e| e.to_string()))
+    let case: Case = runout_post::folder::read_resolved_unvalidated(&run.dir)
         .map_err(|e| format!("the {} run's resolved.ron: {e}", run.fidelity))?;
     case.initial
         .regions
@@ -418,6 +417,23 @@ pub fn section(
         md.push_str("*No one-factor family in cases/sensitivity/.*\n\n");
         return Ok(());
     }
+    method(md);
+    let heat_cells = table(md, &c, cases);
+    heat_map(&c, heat_cells, &svg)?;
+    runout_output::write_atomic(&csv, c.csv.as_bytes())
+        .with_context(|| format!("writing {}", csv.display()))?;
+    let _ = writeln!(
+        md,
+        "![Elasticities]({FIGURE_DIR}/{HEATMAP_FILE})\n\n\
+         Heat map of the table: rows are the families, columns the outputs, colour the \
+         summary elasticity on a scale symmetric about 0 (red: the output grows with the \
+         parameter, blue: it falls); \\* marks an arc elasticity; grey cells have no value.\n"
+    );
+    Ok(())
+}
+
+/// How the elasticities are computed, the outputs and the limits.
+fn method(md: &mut String) {
     let _ = writeln!(
         md,
         "**How it is computed** (xtask/src/sensitivity.rs). A one-factor family is the runs of \
@@ -460,94 +476,32 @@ pub fn section(
          runs stop at 0.4 s), and the time-series outputs are then read at the runs' end, a \
          different state from the paper's t = 1.25 s.\n"
     );
+}
 
-    // the table
-    let mut notes: Vec<String> = Vec::new();
-    let mut note = |why: &str| -> usize {
-        match notes.iter().position(|n| n == why) {
-            Some(k) => k + 1,
-            None => {
-                notes.push(why.to_string());
-                notes.len()
-            }
+/// The number (from 1) of the note `why`, added if new.
+fn note_number(notes: &mut Vec<String>, why: &str) -> usize {
+    match notes.iter().position(|n| n == why) {
+        Some(k) => k + 1,
+        None => {
+            notes.push(why.to_string());
+            notes.len()
         }
-    };
+    }
+}
+
+/// The table of summary elasticities, one row per family, and the notes on its "—" cells;
+/// returns the heat map's cells.
+fn table(md: &mut String, c: &Computed, cases: &Cases) -> Vec<Vec<HeatCell>> {
+    let mut notes: Vec<String> = Vec::new();
     let _ = writeln!(
         md,
         "| family | parameter | fidelity | read at | {} |",
         OUTPUTS.map(|o| o.label()).join(" | ")
     );
     let _ = writeln!(md, "|---|---|---|---|{}", "---|".repeat(OUTPUTS.len()));
-    let mut heat_cells = Vec::new();
-    for (k, f) in c.families.iter().enumerate() {
-        let fidelities: BTreeSet<String> = f
-            .points
-            .iter()
-            .filter_map(|(_, case)| cases.get(case).fidelity().map(|x| x.to_string()))
-            .collect();
-        let fidelity = if fidelities.is_empty() {
-            "—".to_string()
-        } else {
-            fidelities.into_iter().collect::<Vec<_>>().join(" + ")
-        };
-        let t = c.times[k];
-        let station = family_station_time(f, cases);
-        let read_at = if t < station {
-            format!("t = {t:.2} s (profile: {station:.3} s)")
-        } else {
-            format!("t = {station:.3} s")
-        };
-        let values: Vec<String> = f.points.iter().map(|(p, _)| value(*p)).collect();
-        let mut row_cells = Vec::new();
-        let mut text = Vec::new();
-        for s in &c.summaries[k] {
-            match &s.elasticity {
-                Ok(e) => {
-                    let mut t = format_elasticity(e);
-                    row_cells.push(HeatCell {
-                        value: Some(e.value),
-                        label: t.clone(),
-                    });
-                    if s.used < s.of {
-                        if let Some((lo, hi)) = s.range {
-                            let _ = write!(
-                                t,
-                                " ({} of {} points: {}–{})",
-                                s.used,
-                                s.of,
-                                value(lo),
-                                value(hi)
-                            );
-                        }
-                    }
-                    text.push(t);
-                }
-                Err(why) => {
-                    row_cells.push(HeatCell {
-                        value: None,
-                        label: "—".into(),
-                    });
-                    text.push(format!("— [{}]", note(why)));
-                }
-            }
-        }
-        heat_cells.push(row_cells);
-        let fixed = if f.fixed.is_empty() {
-            String::new()
-        } else {
-            format!(" ({})", f.fixed.join(", "))
-        };
-        let _ = writeln!(
-            md,
-            "| `{}`{} | {} [{}] ∈ {{{}}} | {fidelity} | {read_at} | {} |",
-            f.sweep,
-            cell(&fixed),
-            f.symbol,
-            f.unit,
-            values.join(", "),
-            text.iter().map(|t| cell(t)).collect::<Vec<_>>().join(" | ")
-        );
-    }
+    let heat_cells = (0..c.families.len())
+        .map(|k| table_row(md, c, k, cases, &mut notes))
+        .collect();
     md.push('\n');
     if !notes.is_empty() {
         md.push_str("Why a cell is \"—\":\n\n");
@@ -556,8 +510,89 @@ pub fn section(
         }
         md.push('\n');
     }
+    heat_cells
+}
 
-    // the heat map
+/// The row of family `k`; returns its heat map cells.
+fn table_row(
+    md: &mut String,
+    c: &Computed,
+    k: usize,
+    cases: &Cases,
+    notes: &mut Vec<String>,
+) -> Vec<HeatCell> {
+    let f = &c.families[k];
+    let fidelities: BTreeSet<String> = f
+        .points
+        .iter()
+        .filter_map(|(_, case)| cases.get(case).fidelity().map(|x| x.to_string()))
+        .collect();
+    let fidelity = if fidelities.is_empty() {
+        "—".to_string()
+    } else {
+        fidelities.into_iter().collect::<Vec<_>>().join(" + ")
+    };
+    let t = c.times[k];
+    let station = family_station_time(f, cases);
+    let read_at = if t < station {
+        format!("t = {t:.2} s (profile: {station:.3} s)")
+    } else {
+        format!("t = {station:.3} s")
+    };
+    let values: Vec<String> = f.points.iter().map(|(p, _)| value(*p)).collect();
+    let mut row_cells = Vec::new();
+    let mut text = Vec::new();
+    for s in &c.summaries[k] {
+        match &s.elasticity {
+            Ok(e) => {
+                let mut t = format_elasticity(e);
+                row_cells.push(HeatCell {
+                    value: Some(e.value),
+                    label: t.clone(),
+                });
+                if s.used < s.of {
+                    if let Some((lo, hi)) = s.range {
+                        let _ = write!(
+                            t,
+                            " ({} of {} points: {}–{})",
+                            s.used,
+                            s.of,
+                            value(lo),
+                            value(hi)
+                        );
+                    }
+                }
+                text.push(t);
+            }
+            Err(why) => {
+                row_cells.push(HeatCell {
+                    value: None,
+                    label: "—".into(),
+                });
+                text.push(format!("— [{}]", note_number(notes, why)));
+            }
+        }
+    }
+    let fixed = if f.fixed.is_empty() {
+        String::new()
+    } else {
+        format!(" ({})", f.fixed.join(", "))
+    };
+    let _ = writeln!(
+        md,
+        "| `{}`{} | {} [{}] ∈ {{{}}} | {fidelity} | {read_at} | {} |",
+        f.sweep,
+        cell(&fixed),
+        f.symbol,
+        f.unit,
+        values.join(", "),
+        text.iter().map(|t| cell(t)).collect::<Vec<_>>().join(" | ")
+    );
+    row_cells
+}
+
+/// Draws the heat map of the table into `svg`.
+fn heat_map(c: &Computed, heat_cells: Vec<Vec<HeatCell>>, svg: &Path) -> Result<()> {
     let map = Heatmap {
         title: "Elasticity d ln y / d ln p of each output over each one-factor family".into(),
         rows: c.families.iter().map(Family::label).collect(),
@@ -566,23 +601,13 @@ pub fn section(
         note: "* arc elasticity (the family has p = 0); grey: no value (see docs/results.md)"
             .into(),
     };
-    plots::draw_heatmap(&svg, &map)?;
-    runout_output::write_atomic(&csv, c.csv.as_bytes())
-        .with_context(|| format!("writing {}", csv.display()))?;
-    let _ = writeln!(
-        md,
-        "![Elasticities]({FIGURE_DIR}/{HEATMAP_FILE})\n\n\
-         Heat map of the table: rows are the families, columns the outputs, colour the \
-         summary elasticity on a scale symmetric about 0 (red: the output grows with the \
-         parameter, blue: it falls); \\* marks an arc elasticity; grey cells have no value.\n"
-    );
-    Ok(())
+    plots::draw_heatmap(svg, &map)
 }
 
 #[cfg(test)]
 mod tests {
-    use super::super::data::fixture::*;
     use super::*;
+    use runout_post::fixture::*;
 
     fn cases_dir() -> std::path::PathBuf {
         Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases")

@@ -1,101 +1,19 @@
-//! What the report reads of a run folder: the chosen run, its monitor CSVs and the
-//! quantities derived from them.
+//! Everything the results report reads of one case: the chosen run ([`crate::chosen`]), its
+//! station profile, floor probe, front, gate crossings and bulk monitor, each with the reason
+//! it is missing.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-use runout_case::{load_case, Fidelity};
-use runout_output::{RunStatus, RunSummary};
+use runout_case::Fidelity;
 
-use crate::metrics::{profile_metrics, station_time, FlowMetrics, PROFILE_TIME};
-/// The monitor-CSV reader lives in the post-processing library.
-pub use runout_post::table::Table;
-
-/// Fidelities from the best down: the default choice per case.
-const BEST_FIRST: [Fidelity; 4] = [
-    Fidelity::Paper,
-    Fidelity::Wall,
-    Fidelity::Coarse,
-    Fidelity::Smoke,
-];
-/// Largest distance between a requested time past the last bulk sample and that sample [s]
-/// (inside the series the values are interpolated): the bulk interval of the case files.
-const BULK_TIME_TOLERANCE: f64 = runout_post::run::BULK_TIME_TOLERANCE;
-
-/// The finished run chosen for a case.
-#[derive(Clone, Debug)]
-pub struct Run {
-    /// its fidelity
-    pub fidelity: Fidelity,
-    /// its folder
-    pub dir: PathBuf,
-    /// its summary.json
-    pub summary: RunSummary,
-}
-
-impl Run {
-    /// Why a quantity at time `t` is missing if the run ended before `t`.
-    pub fn ended_before(&self, t: f64) -> Option<String> {
-        let end = self.summary.simulated_time;
-        (end < t * (1.0 - 1e-9)).then(|| {
-            let how = match self.summary.status {
-                RunStatus::Diverged { .. } => " (diverged)",
-                RunStatus::Interrupted => " (interrupted)",
-                _ => "",
-            };
-            format!(
-                "the {} run ends at t = {end:.2} s{how}, before t = {t} s",
-                self.fidelity
-            )
-        })
-    }
-}
-
-/// The run of `case` under `runs`: at `requested` fidelity, or the best that exists.
-pub fn choose_run(runs: &Path, case: &str, requested: Option<Fidelity>) -> Result<Run, String> {
-    let candidates = requested.map_or(BEST_FIRST.to_vec(), |f| vec![f]);
-    for fidelity in candidates {
-        let dir = runs.join(case).join(fidelity.name());
-        let Ok(text) = std::fs::read_to_string(dir.join("summary.json")) else {
-            continue;
-        };
-        let summary: RunSummary = serde_json::from_str(&text)
-            .map_err(|e| format!("unreadable {fidelity} summary.json: {e}"))?;
-        return Ok(Run {
-            fidelity,
-            dir,
-            summary,
-        });
-    }
-    Err(match requested {
-        Some(f) => format!("not run at {f} fidelity"),
-        None => "not run".into(),
-    })
-}
-
-/// Wall-normal profile at the station: distance from the floor y (the domains start at
-/// y = 0) and εs, u_s, θ.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Profile {
-    /// cell-centre heights [m]
-    pub y: Vec<f64>,
-    /// solids volume fraction [-]
-    pub eps_s: Vec<f64>,
-    /// solids x-velocity [m/s]
-    pub u_s: Vec<f64>,
-    /// granular temperature [m²/s²]
-    pub theta: Vec<f64>,
-}
-
-impl Profile {
-    /// The summary.csv metrics of this profile (crate::metrics definitions).
-    pub fn metrics(&self) -> FlowMetrics {
-        let rows: Vec<Vec<f64>> = (0..self.y.len())
-            .map(|k| vec![self.y[k], self.eps_s[k], self.u_s[k], self.theta[k]])
-            .collect();
-        profile_metrics(&rows)
-    }
-}
+use crate::chosen::{choose_run, Run};
+use crate::folder::{first_csv, read_resolved};
+use crate::gates::read_gate_speeds;
+use crate::metrics::{station_time, PROFILE_TIME};
+use crate::profile::{station_profile, Profile};
+use crate::run::BULK_TIME_TOLERANCE;
+use crate::table::Table;
 
 /// One gate crossing of a run's gates.csv.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -126,59 +44,6 @@ pub struct CaseData {
     /// the paper's t = 1.25 s in the run's clock: its last profile time (later by the tilt
     /// time for a case whose times count from the impact, docs/impact.md §4) [s]
     pub station_time: f64,
-}
-
-/// The files of `dir` whose names start with `prefix` and end with `.csv`, sorted.
-fn csv_files(dir: &Path, prefix: &str) -> Vec<PathBuf> {
-    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
-        .map(|entries| {
-            entries
-                .filter_map(|e| e.ok().map(|e| e.path()))
-                .filter(|p| {
-                    p.file_name()
-                        .and_then(|n| n.to_str())
-                        .is_some_and(|n| n.starts_with(prefix) && n.ends_with(".csv"))
-                })
-                .collect()
-        })
-        .unwrap_or_default();
-    files.sort();
-    files
-}
-
-/// The time in a profile file name `profile_x<x>_t<t>.csv`.
-fn profile_file_time(name: &str) -> Option<f64> {
-    name.strip_prefix("profile_x")?
-        .strip_suffix(".csv")?
-        .rsplit_once("_t")?
-        .1
-        .parse()
-        .ok()
-}
-
-/// The station profile of a run at `time`.
-fn station_profile(run: &Run, time: f64) -> Result<Profile, String> {
-    let file = csv_files(&run.dir, "profile_x").into_iter().find(|p| {
-        p.file_name()
-            .and_then(|n| n.to_str())
-            .and_then(profile_file_time)
-            .is_some_and(|t| (t - time).abs() <= 1e-9 * time.max(1.0))
-    });
-    let Some(file) = file else {
-        return Err(run.ended_before(time).unwrap_or_else(|| {
-            format!(
-                "the {} run has no profile_x*_t{time}.csv (no profile monitor at t = {time} s)",
-                run.fidelity
-            )
-        }));
-    };
-    let t = Table::read(&file)?;
-    Ok(Profile {
-        y: t.column("y")?,
-        eps_s: t.column("eps_s")?,
-        u_s: t.column("u_s")?,
-        theta: t.column("theta")?,
-    })
 }
 
 /// A (t, value) series of a run's monitor file, missing if the run lacks it or it is empty.
@@ -214,22 +79,16 @@ impl CaseData {
                 station_time: PROFILE_TIME,
             };
         };
-        let resolved = load_case(&r.dir.join("resolved.ron")).ok();
+        let resolved = read_resolved(&r.dir);
         let station_time = station_time(resolved.as_ref());
-        let probe_file = csv_files(&r.dir, "wall_probe_south_x").into_iter().next();
+        let probe_file = first_csv(&r.dir, "wall_probe_south_x");
         let front_file = Some(r.dir.join("front.csv")).filter(|p| p.exists());
         let gates = if r.dir.join("gates.csv").exists() {
-            Table::read(&r.dir.join("gates.csv"))
-                .and_then(|t| t.pairs("gate", "speed"))
-                .map(|rows| {
-                    rows.into_iter()
-                        .filter(|(_, s)| s.is_finite())
-                        .map(|(g, speed)| GateSpeed {
-                            gate: g as usize,
-                            speed,
-                        })
-                        .collect()
-                })
+            read_gate_speeds(&r.dir.join("gates.csv")).map(|rows| {
+                rows.into_iter()
+                    .map(|(gate, speed)| GateSpeed { gate, speed })
+                    .collect()
+            })
         } else {
             Err(format!("the {} run has no gates.csv", r.fidelity))
         };
@@ -352,119 +211,11 @@ impl CaseData {
     }
 }
 
-/// Run folders written for tests into a temporary directory.
-#[cfg(test)]
-pub mod fixture {
-    use std::path::{Path, PathBuf};
-
-    use runout_output::{DtStats, RunStatus, RunSummary};
-
-    /// A temporary directory, removed on drop.
-    pub struct TempDir(pub PathBuf);
-
-    impl TempDir {
-        /// A fresh directory named after the test.
-        pub fn new(test: &str) -> TempDir {
-            let dir =
-                std::env::temp_dir().join(format!("runout-report-{}-{test}", std::process::id()));
-            let _ = std::fs::remove_dir_all(&dir);
-            std::fs::create_dir_all(&dir).expect("a temporary directory");
-            TempDir(dir)
-        }
-    }
-
-    impl Drop for TempDir {
-        fn drop(&mut self) {
-            let _ = std::fs::remove_dir_all(&self.0);
-        }
-    }
-
-    /// Writes `runs/<case>/<fidelity>/` with a summary ending at `end_time` and `files`.
-    pub fn write_run(
-        runs: &Path,
-        case: &str,
-        fidelity: &str,
-        end_time: f64,
-        files: &[(&str, &str)],
-    ) {
-        let dir = runs.join(case).join(fidelity);
-        std::fs::create_dir_all(&dir).expect("a run folder");
-        let summary = RunSummary {
-            case: case.into(),
-            fidelity: fidelity.into(),
-            cells: (10, 4),
-            simulated_time: end_time,
-            wall_time: 1.0,
-            steps: 10,
-            rejected_steps: 0,
-            outer_iterations: 50,
-            dt: DtStats {
-                min: 1e-3,
-                max: 1e-3,
-                mean: 1e-3,
-            },
-            solids_mass_change: 0.0,
-            max_mass_imbalance: 0.0,
-            max_eps_s: 0.6,
-            status: RunStatus::Completed,
-            profile: Vec::new(),
-            linear_iterations: Vec::new(),
-        };
-        summary
-            .write_json(&dir.join("summary.json"))
-            .expect("a summary");
-        for (name, text) in files {
-            std::fs::write(dir.join(name), text).expect("a monitor file");
-        }
-    }
-
-    /// A station profile with a cushion: floor εs 0.05 below a 0.6 peak (cell 2), flow top
-    /// at 0.015 m, max u_s 3 m/s, floor θ 1.5 m²/s² (5 mm cells).
-    pub const CUSHION_PROFILE: &str = "y,eps_s,u_s,theta\n0.0025,0.05,2.0,1.5\n\
-        0.0075,0.55,3.0,0.2\n0.0125,0.6,2.5,0.1\n0.0175,0.005,1.0,0.5\n";
-
-    /// A dense profile without a cushion, flow top at 0.025 m.
-    pub const DENSE_PROFILE: &str = "y,eps_s,u_s,theta\n0.0025,0.6,1.0,0.0\n\
-        0.0075,0.6,2.0,0.1\n0.0125,0.55,3.0,0.2\n0.0175,0.3,3.5,0.4\n0.0225,0.02,4.0,0.8\n";
-}
-
 #[cfg(test)]
 mod tests {
-    use super::fixture::*;
     use super::*;
-
-    #[test]
-    fn the_best_finished_run_is_chosen_unless_a_fidelity_is_asked() {
-        let tmp = TempDir::new("choose");
-        let runs = tmp.0.join("runs");
-        write_run(&runs, "A", "smoke", 0.4, &[]);
-        write_run(&runs, "A", "coarse", 1.25, &[]);
-        // a folder without summary.json (a run still going) does not count
-        std::fs::create_dir_all(runs.join("A").join("paper")).unwrap();
-        assert_eq!(
-            choose_run(&runs, "A", None).unwrap().fidelity,
-            Fidelity::Coarse
-        );
-        let smoke = choose_run(&runs, "A", Some(Fidelity::Smoke)).unwrap();
-        assert_eq!(smoke.fidelity, Fidelity::Smoke);
-        assert_eq!(smoke.summary.simulated_time, 0.4);
-        assert_eq!(
-            choose_run(&runs, "A", Some(Fidelity::Paper)).unwrap_err(),
-            "not run at paper fidelity"
-        );
-        assert_eq!(choose_run(&runs, "B", None).unwrap_err(), "not run");
-        // the wall-resolving run ranks above coarse, below paper
-        write_run(&runs, "A", "wall", 1.25, &[]);
-        assert_eq!(
-            choose_run(&runs, "A", None).unwrap().fidelity,
-            Fidelity::Wall
-        );
-        write_run(&runs, "A", "paper", 1.25, &[]);
-        assert_eq!(
-            choose_run(&runs, "A", None).unwrap().fidelity,
-            Fidelity::Paper
-        );
-    }
+    use crate::fixture::*;
+    use crate::profile::profile_file_time;
 
     #[test]
     fn profiles_are_found_by_time_and_missing_ones_say_why() {
