@@ -15,7 +15,7 @@
 //!
 //! Work arrays that every step rewrites before reading (stencils, face data, the
 //! array-of-structs closure records, the strain records) are left out; the restart test
-//! (`crates/solver/tests/restart.rs`) shows the set is complete: a run restarted from a
+//! (`crates/run/tests/restart.rs`) shows the set is complete: a run restarted from a
 //! checkpoint repeats the uninterrupted run bit for bit.
 
 use runout_walls::RobinFace;

@@ -53,10 +53,13 @@ pub struct FluidizedBed {
     pub finite: bool,
 }
 
-/// Runs the bed (one column of 60 cells, 0.3 m high, 0.1 m of εs = 0.55) to 3 s with an
-/// adaptive step, averaging from 1.5 s. With `verbose`, prints progress every 200 steps.
-pub fn run(verbose: bool) -> anyhow::Result<FluidizedBed> {
-    let (ny, height, bed) = (60, 0.3, 0.1);
+/// Cells of the column.
+const CELLS: usize = 60;
+
+/// The bed's solver: one column of [`CELLS`] cells between free-slip walls, 0.3 m high, the
+/// lowest 0.1 m at εs = 0.55, gas entering through the floor at [`INFLOW`].
+fn bed_solver() -> anyhow::Result<TwoFluid> {
+    let (ny, height, bed) = (CELLS, 0.3, 0.1);
     // one column between free-slip walls: a 1-D bed
     let grid = Grid::new(
         Axis::uniform(0.0, 0.005, 1)?,
@@ -127,7 +130,6 @@ pub fn run(verbose: bool) -> anyhow::Result<FluidizedBed> {
         south: INFLOW,
         north: 0.0,
     })?;
-    let dy = grid.y.widths()[0];
     for j in 0..ny {
         if grid.y.centres()[j] < bed {
             tf.solids[0].eps[j] = 0.55;
@@ -136,6 +138,16 @@ pub fn run(verbose: bool) -> anyhow::Result<FluidizedBed> {
     }
     tf.v_g.iter_mut().for_each(|v| *v = INFLOW);
     tf.sync_volume_fractions();
+    Ok(tf)
+}
+
+/// Runs the bed ([`bed_solver`]) to 3 s with an adaptive step, averaging from 1.5 s. With
+/// `verbose`, prints progress every 200 steps.
+pub fn run(verbose: bool) -> anyhow::Result<FluidizedBed> {
+    let mut tf = bed_solver()?;
+    let ny = CELLS;
+    let grid = tf.grid().clone();
+    let dy = grid.y.widths()[0];
     let mass0 = tf.solids_mass(0);
     // buoyant weight of the bed per area above the bottom cell's centre, and the gas
     // column between the bottom and top cell centres
