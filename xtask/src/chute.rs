@@ -15,6 +15,8 @@ use runout_verification::checks::{relative_change, Chute, ChuteRun, CHUTE_TOLERA
 use runout_verification::problems::chute_column::ChuteCheck;
 use runout_verification::Outcome;
 
+use crate::figure::plot_error;
+
 /// Acceptance: largest difference relative to the largest value (issue 7).
 const TOLERANCE: f64 = CHUTE_TOLERANCE;
 /// SVG size [px].
@@ -122,10 +124,6 @@ pub fn verify(root: &Path) -> Result<Outcome> {
     std::fs::write(&path, md).with_context(|| format!("writing {}", path.display()))?;
     eprintln!("wrote {}", path.display());
     Ok(outcome)
-}
-
-fn plot_error<E: std::fmt::Debug>(e: E) -> anyhow::Error {
-    anyhow::anyhow!("plotting: {e:?}")
 }
 
 /// Three panels: εs, u_s and θ (log) against height, 1-D lines and 2-D circles.

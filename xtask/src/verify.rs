@@ -28,21 +28,12 @@ use runout_verification::problems::{
 };
 use runout_verification::{find, group, registry, Outcome, Size};
 
-use crate::figure::legend;
+use crate::figure::{legend, plot_error, LINE_COLOURS};
 
 /// Output directory of `--report`, relative to the workspace root.
 const OUTPUT_DIR: &str = "docs/verification";
 /// SVG size [px].
 const FIGURE_SIZE: (u32, u32) = (1000, 700);
-/// Line colours, cycled per series.
-const COLOURS: [RGBColor; 6] = [
-    RGBColor(31, 119, 180),
-    RGBColor(214, 39, 40),
-    RGBColor(44, 160, 44),
-    RGBColor(148, 103, 189),
-    RGBColor(255, 127, 14),
-    RGBColor(0, 0, 0),
-];
 
 /// The checks `name` stands for: a group or one registered check.
 fn selection(name: &str) -> Result<Vec<&'static str>> {
@@ -486,7 +477,7 @@ fn draw(path: &Path, title: &str, y_label: &str, points: &[Point]) -> Result<()>
         .draw()
         .map_err(plot_error)?;
     for (k, name) in series.iter().enumerate() {
-        let colour = COLOURS[k % COLOURS.len()];
+        let colour = LINE_COLOURS[k % LINE_COLOURS.len()];
         let pts: Vec<(f64, f64, usize)> = points
             .iter()
             .filter(|p| p.series == *name)
@@ -525,8 +516,4 @@ fn bounds(values: impl Iterator<Item = f64>) -> (f64, f64) {
     values.fold((f64::INFINITY, 0.0_f64), |(lo, hi), v| {
         (lo.min(v), hi.max(v))
     })
-}
-
-fn plot_error<E: std::fmt::Debug>(e: E) -> anyhow::Error {
-    anyhow::anyhow!("plotting the verification report: {e:?}")
 }

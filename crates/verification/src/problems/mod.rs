@@ -138,14 +138,8 @@ pub fn mass_ratio(s: &SinglePhase, density: f64) -> f64 {
     s.mass_imbalance() / section_flow(s, density).max(f64::MIN_POSITIVE)
 }
 
-/// Observed orders log(e_k/e_{k+1}) / log(r_k) with r_k the refinement ratio.
-pub fn observed_orders(errors: &[f64], ratios: &[f64]) -> Vec<f64> {
-    errors
-        .windows(2)
-        .zip(ratios)
-        .map(|(e, r)| (e[0] / e[1]).ln() / r.ln())
-        .collect()
-}
+/// Observed orders log(e_k/e_{k+1}) / log(r_k): the post-processing library's one definition.
+pub use runout_post::convergence::observed_orders;
 
 /// One level of a convergence study.
 #[derive(Clone, Debug, PartialEq)]
