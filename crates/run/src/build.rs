@@ -224,11 +224,11 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
         .map_err(|e| unsupported(format!("setting up the two-fluid solver: {e}")))?;
     tf.set_sidewalls(super::sidewalls::sidewalls(case)?);
     fill_initial_state(&mut tf, case, gas, gravity, &grid);
-    zero_normal_velocity_on_walls(b, &grid, &mut tf.u_g, &mut tf.v_g);
-    for s in tf.solids.iter_mut() {
+    let gas = tf.state_mut().gas_mut();
+    zero_normal_velocity_on_walls(b, &grid, &mut gas.u, &mut gas.v);
+    for s in tf.state_mut().phases_mut() {
         zero_normal_velocity_on_walls(b, &grid, &mut s.u, &mut s.v);
     }
-    tf.sync_volume_fractions();
     Ok(tf)
 }
 
@@ -344,9 +344,10 @@ fn fill_initial_state(
 ) {
     let (nx, ny) = (grid.nx(), grid.ny());
     let (u0, v0) = case.initial.gas_velocity;
-    tf.u_g.iter_mut().for_each(|u| *u = u0);
-    tf.v_g.iter_mut().for_each(|v| *v = v0);
-    for s in tf.solids.iter_mut() {
+    let state = tf.state_mut();
+    state.gas_mut().u.iter_mut().for_each(|u| *u = u0);
+    state.gas_mut().v.iter_mut().for_each(|v| *v = v0);
+    for s in state.phases_mut() {
         s.theta
             .iter_mut()
             .for_each(|t| *t = case.initial.theta.max(runout_closures::guards::THETA_SMALL));
@@ -355,7 +356,7 @@ fn fill_initial_state(
         for i in 0..nx {
             let (x, y) = grid.cell_centre(i, j);
             let k = i + nx * j;
-            tf.p_g[k] = initial_gas_pressure(case, gas, gravity, grid, x, y);
+            state.gas_mut().p[k] = initial_gas_pressure(case, gas, gravity, grid, x, y);
             for block in &case.initial.regions {
                 // the part of the cell the block fills: all or nothing by the centre, or
                 // the covered fraction of its area
@@ -374,20 +375,23 @@ fn fill_initial_state(
                 if covered <= 0.0 {
                     continue;
                 }
-                for (s, bs) in tf.solids.iter_mut().zip(&block.solids) {
+                for (m, bs) in block.solids.iter().enumerate() {
                     let theta_b = bs.theta.max(runout_closures::guards::THETA_SMALL);
-                    if covered >= 1.0 {
-                        s.eps[k] = bs.eps_s;
-                        s.theta[k] = theta_b;
+                    let eps = if covered >= 1.0 {
+                        state.solids_mut(m).theta[k] = theta_b;
+                        bs.eps_s
                     } else {
                         // the block replaces the covered part of what the cell held
-                        let kept = s.eps[k] * (1.0 - covered);
+                        let s = state.solids_mut(m);
+                        let kept = s.eps()[k] * (1.0 - covered);
                         let added = bs.eps_s * covered;
                         if kept + added > 0.0 {
                             s.theta[k] = (kept * s.theta[k] + added * theta_b) / (kept + added);
                         }
-                        s.eps[k] = kept + added;
-                    }
+                        kept + added
+                    };
+                    state.set_solids_fraction(m, k, eps);
+                    let s = state.solids_mut(m);
                     for f in [i + (nx + 1) * j, i + 1 + (nx + 1) * j] {
                         s.u[f] = bs.velocity.0;
                     }

@@ -229,9 +229,9 @@ fn solids_centroid_y(tf: &TwoFluid) -> f64 {
     let nx = g.nx();
     let yc = g.y.centres();
     let (mut num, mut den) = (0.0, 0.0);
-    for (m, s) in tf.solids.iter().enumerate() {
+    for m in 0..tf.n_solids() {
         let rho = tf.solids_density(m);
-        for (k, &e) in s.eps.iter().enumerate() {
+        for (k, &e) in tf.solids(m).eps().iter().enumerate() {
             let (i, j) = (k % nx, k / nx);
             let m = rho * e * g.cell_volume(i, j);
             num += m * yc[j];
@@ -316,9 +316,10 @@ impl TwoFluidCase {
             ImpactTrigger::FloorEpsS(eps) => {
                 let nx = self.solver.grid().nx();
                 self.solver
-                    .solids
+                    .state()
+                    .phases()
                     .iter()
-                    .any(|s| s.eps[..nx].iter().any(|&e| e >= eps))
+                    .any(|s| s.eps()[..nx].iter().any(|&e| e >= eps))
             }
             ImpactTrigger::Time(t) => at_or_after(time, t),
             ImpactTrigger::CentroidBelow(y) => solids_centroid_y(&self.solver) <= y,
@@ -393,19 +394,24 @@ impl CaseSolver for TwoFluidCase {
 
     fn write_fields(&mut self, series: &mut PvdSeries, time: f64) -> Result<(), OutputError> {
         let grid = self.solver.grid().clone();
-        let s = &self.solver.solids[0];
-        Self::centre(&grid, &self.solver.u_g, &self.solver.v_g, &mut self.scratch);
+        let s = self.solver.solids(0);
+        Self::centre(
+            &grid,
+            self.solver.u_g(),
+            self.solver.v_g(),
+            &mut self.scratch,
+        );
         Self::centre(&grid, &s.u, &s.v, &mut self.scratch2);
         series.push(
             &grid,
             time,
             &[
-                CellField::scalar("eps_s", &s.eps),
+                CellField::scalar("eps_s", s.eps()),
                 CellField::vector("u_s", &self.scratch2),
                 CellField::scalar("theta", &s.theta),
-                CellField::scalar("p_s", &s.p_s),
+                CellField::scalar("p_s", self.solver.p_s(0)),
                 CellField::vector("u_g", &self.scratch),
-                CellField::scalar("p_g", &self.solver.p_g),
+                CellField::scalar("p_g", self.solver.p_g()),
             ],
         )?;
         Ok(())
@@ -419,10 +425,10 @@ impl CaseSolver for TwoFluidCase {
         let g = self.solver.grid();
         let nx = g.nx();
         let (i, j) = g.locate(x, y).unwrap_or((0, 0));
-        let s = &self.solver.solids[0];
+        let s = self.solver.solids(0);
         let k = i + nx * j;
         let u = 0.5 * (s.u[i + (nx + 1) * j] + s.u[i + 1 + (nx + 1) * j]);
-        vec![y, s.eps[k], u, s.theta[k]]
+        vec![y, s.eps()[k], u, s.theta[k]]
     }
 
     fn grid(&self) -> &Grid {
@@ -453,7 +459,7 @@ impl CaseSolver for TwoFluidCase {
     }
 
     fn solids_mass(&self) -> f64 {
-        (0..self.solver.solids.len())
+        (0..self.solver.n_solids())
             .map(|m| self.solver.solids_mass(m))
             .sum()
     }
@@ -478,9 +484,10 @@ impl CaseSolver for TwoFluidCase {
 
     fn max_eps_s(&self) -> f64 {
         self.solver
-            .solids
+            .state()
+            .phases()
             .iter()
-            .flat_map(|s| s.eps.iter())
+            .flat_map(|s| s.eps().iter())
             .fold(0.0, |a: f64, &e| a.max(e))
     }
 
@@ -490,7 +497,7 @@ impl CaseSolver for TwoFluidCase {
             .min_by(|&a, &b| (faces[a] - x).abs().total_cmp(&(faces[b] - x).abs()))?;
         self.solver
             .has_floor_model(0)
-            .then(|| self.solver.solids[0].floor_h_u[k])
+            .then(|| self.solver.floor_h_u(0)[k])
     }
 
     /// The front for the gate speeds: where εs of the floor row falls through `threshold`
@@ -501,7 +508,7 @@ impl CaseSolver for TwoFluidCase {
     fn interpolated_front(&self, threshold: f64) -> Option<f64> {
         let g = self.solver.grid();
         let nx = g.nx();
-        let (xc, eps) = (g.x.centres(), &self.solver.solids[0].eps);
+        let (xc, eps) = (g.x.centres(), self.solver.solids(0).eps());
         let front = (0..nx)
             .rev()
             .find(|&i| eps[i] >= threshold)
@@ -519,17 +526,17 @@ impl CaseSolver for TwoFluidCase {
     fn bulk(&self, threshold: f64) -> Option<(f64, f64)> {
         let g = self.solver.grid();
         let (nx, ny) = (g.nx(), g.ny());
-        let s = &self.solver.solids[0];
+        let s = self.solver.solids(0);
         // front: the largest x whose floor cell has εs ≥ threshold (cases.md family F)
         let front = (0..nx)
             .rev()
-            .find(|&i| s.eps[i] >= threshold)
+            .find(|&i| s.eps()[i] >= threshold)
             .map_or(g.x.start(), |i| g.x.faces()[i + 1]);
         let (mut num, mut den) = (0.0, 0.0);
         for j in 0..ny {
             for i in 0..nx {
                 let k = i + nx * j;
-                let w = s.eps[k] * g.cell_volume(i, j);
+                let w = s.eps()[k] * g.cell_volume(i, j);
                 num += w * 0.5 * (s.u[i + (nx + 1) * j] + s.u[i + 1 + (nx + 1) * j]);
                 den += w;
             }

@@ -56,18 +56,23 @@ fn walls(width: f64, solids: SolidsWall) -> Option<Sidewalls> {
 /// Every field of the two solvers as bit patterns.
 fn fields(tf: &TwoFluid) -> Vec<Vec<u64>> {
     let bits = |f: &[f64]| f.iter().map(|v| v.to_bits()).collect::<Vec<u64>>();
-    let mut out = vec![bits(&tf.eps_g), bits(&tf.p_g), bits(&tf.u_g), bits(&tf.v_g)];
-    for s in &tf.solids {
-        out.extend([bits(&s.eps), bits(&s.u), bits(&s.v), bits(&s.theta)]);
+    let mut out = vec![
+        bits(tf.eps_g()),
+        bits(tf.p_g()),
+        bits(tf.u_g()),
+        bits(tf.v_g()),
+    ];
+    for s in tf.state().phases() {
+        out.extend([bits(s.eps()), bits(&s.u), bits(&s.v), bits(&s.theta)]);
     }
     out
 }
 
 fn largest_difference(a: &TwoFluid, b: &TwoFluid) -> f64 {
-    a.solids[0]
+    a.solids(0)
         .u
         .iter()
-        .zip(&b.solids[0].u)
+        .zip(&b.solids(0).u)
         .map(|(x, y)| (x - y).abs())
         .fold(0.0, f64::max)
 }
@@ -108,10 +113,10 @@ fn jenkins_side_walls_slow_the_slide() {
     assert!(fields(&plane) == fields(&wide));
     let flume = flume_slide(walls(0.30, jenkins));
     let mean_u = |tf: &TwoFluid| {
-        let s = &tf.solids[0];
+        let s = tf.solids(0);
         let nx = tf.grid().nx();
         let (mut num, mut den) = (0.0, 0.0);
-        for (k, e) in s.eps.iter().enumerate() {
+        for (k, e) in s.eps().iter().enumerate() {
             let (i, j) = (k % nx, k / nx);
             num += e * 0.5 * (s.u[i + (nx + 1) * j] + s.u[i + 1 + (nx + 1) * j]);
             den += e;

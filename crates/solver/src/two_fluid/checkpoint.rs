@@ -30,20 +30,21 @@ impl TwoFluid {
     pub fn save_state(&self) -> SolverState {
         let mut st = SolverState::default();
         st.put("gravity", &[self.gravity.0, self.gravity.1]);
-        st.put("eps_g", &self.eps_g);
-        st.put("p_g", &self.p_g);
-        st.put("u_g", &self.u_g);
-        st.put("v_g", &self.v_g);
+        let g = self.state.gas();
+        st.put("eps_g", g.eps());
+        st.put("p_g", &g.p);
+        st.put("u_g", &g.u);
+        st.put("v_g", &g.v);
         st.put("d_u", &self.d_u);
         st.put("d_v", &self.d_v);
         st.put("p_corr", &self.p_corr);
-        for (m, s) in self.solids.iter().enumerate() {
+        for (m, (s, p)) in self.solids.iter().zip(self.state.phases()).enumerate() {
             let name = |field: &str| format!("solids[{m}].{field}");
             for (field, values) in [
-                ("eps", &s.eps),
-                ("u", &s.u),
-                ("v", &s.v),
-                ("theta", &s.theta),
+                ("eps", p.eps()),
+                ("u", &p.u),
+                ("v", &p.v),
+                ("theta", &p.theta),
                 ("p_s", &s.p_s),
                 ("p_star", &s.p_star),
                 ("mu", &s.mu),
@@ -99,20 +100,25 @@ impl TwoFluid {
         let mut gravity = [0.0; 2];
         st.take("gravity", &mut gravity)?;
         self.gravity = (gravity[0], gravity[1]);
-        st.take("eps_g", &mut self.eps_g)?;
-        st.take("p_g", &mut self.p_g)?;
-        st.take("u_g", &mut self.u_g)?;
-        st.take("v_g", &mut self.v_g)?;
+        // εg is checked, then follows the solids (εg = 1 − Σεs)
+        st.take("eps_g", &mut vec![0.0; self.eps_g().len()])?;
+        let g = self.state.gas_mut();
+        st.take("p_g", &mut g.p)?;
+        st.take("u_g", &mut g.u)?;
+        st.take("v_g", &mut g.v)?;
         st.take("d_u", &mut self.d_u)?;
         st.take("d_v", &mut self.d_v)?;
         st.take("p_corr", &mut self.p_corr)?;
+        self.state.try_update_all_solids(|m, p| {
+            let name = |field: &str| format!("solids[{m}].{field}");
+            for (field, values) in [("eps", p.eps), ("u", p.u), ("v", p.v), ("theta", p.theta)] {
+                st.take(&name(field), values)?;
+            }
+            Ok(())
+        })?;
         for (m, s) in self.solids.iter_mut().enumerate() {
             let name = |field: &str| format!("solids[{m}].{field}");
             for (field, values) in [
-                ("eps", &mut s.eps),
-                ("u", &mut s.u),
-                ("v", &mut s.v),
-                ("theta", &mut s.theta),
                 ("p_s", &mut s.p_s),
                 ("p_star", &mut s.p_star),
                 ("mu", &mut s.mu),
@@ -162,7 +168,6 @@ impl TwoFluid {
                     .collect();
             }
         }
-        self.sync_volume_fractions();
         Ok(())
     }
 }

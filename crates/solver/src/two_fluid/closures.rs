@@ -11,7 +11,7 @@ use runout_closures::{evaluate, CellState, ClosureParams};
 use runout_mesh::Grid;
 
 use super::walls::wall_face_velocities;
-use super::{SolidsFields, SolidsSpec, PAR_MIN_CELLS, THETA_SMALL};
+use super::{PhaseState, SolidsFields, SolidsSpec, State, PAR_MIN_CELLS, THETA_SMALL};
 use crate::kinematics::{strain_rates, WallVelocities};
 
 /// The closure values one cell contributes to the solver (docs/model.md §2), all zero where
@@ -70,43 +70,44 @@ impl CellClosures {
 /// summed over the phases).
 pub(super) fn update_closures(
     grid: &Grid,
-    u_g: &[f64],
-    v_g: &[f64],
+    state: &State,
     solids: &mut [SolidsFields],
     specs: &[SolidsSpec],
 ) -> u64 {
     let mut evaluated = 0;
-    for (s, spec) in solids.iter_mut().zip(specs) {
-        wall_strain_rates(grid, spec, s);
-        evaluate_cells(grid, u_g, v_g, s, &spec.params);
+    let gas = state.gas();
+    for ((s, phase), spec) in solids.iter_mut().zip(state.phases()).zip(specs) {
+        wall_strain_rates(grid, spec, phase, s);
+        evaluate_cells(grid, (&gas.u, &gas.v), phase, s, &spec.params);
         scatter(s);
-        evaluated += s.eps.iter().filter(|&&e| e != 0.0).count() as u64;
+        evaluated += phase.eps().iter().filter(|&&e| e != 0.0).count() as u64;
     }
     evaluated
 }
 
 /// The strain rates of every cell, those of the wall cells with the wall face velocities.
-fn wall_strain_rates(grid: &Grid, spec: &SolidsSpec, s: &mut SolidsFields) {
-    let on_wall = wall_face_velocities(grid, spec, s);
+fn wall_strain_rates(grid: &Grid, spec: &SolidsSpec, phase: &PhaseState, s: &mut SolidsFields) {
+    let on_wall = wall_face_velocities(grid, spec, phase, s);
     let walls = WallVelocities {
         south: on_wall.south.then_some(&s.wall_face_velocity.south[..]),
         north: on_wall.north.then_some(&s.wall_face_velocity.north[..]),
         west: on_wall.west.then_some(&s.wall_face_velocity.west[..]),
         east: on_wall.east.then_some(&s.wall_face_velocity.east[..]),
     };
-    strain_rates(grid, &s.u, &s.v, &walls, &mut s.strain);
+    strain_rates(grid, &phase.u, &phase.v, &walls, &mut s.strain);
 }
 
 /// The closure records of every cell of one phase (`s.cells`), rows in parallel (rayon).
 fn evaluate_cells(
     grid: &Grid,
-    u_g: &[f64],
-    v_g: &[f64],
+    (u_g, v_g): (&[f64], &[f64]),
+    phase: &PhaseState,
     s: &mut SolidsFields,
     params: &ClosureParams,
 ) {
     let nx = grid.nx();
-    let (u, v, eps, theta, strain) = (&s.u, &s.v, &s.eps, &s.theta, &s.strain);
+    let (u, v, eps, theta) = (&phase.u, &phase.v, phase.eps(), &phase.theta);
+    let strain = &s.strain;
     // tasks of at least PAR_MIN_CELLS cells: a small grid runs as one task
     let rows_per_task = PAR_MIN_CELLS.div_ceil(nx);
     s.cells

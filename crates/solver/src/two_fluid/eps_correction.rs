@@ -19,15 +19,16 @@ use crate::volume_fraction::{
 impl TwoFluid {
     /// Step 3: ε correction of each solids phase; returns the mean |imbalance| summed.
     pub(super) fn volume_fraction_correction(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
-        let n = self.eps_g.len() as f64;
+        let n = self.eps_g().len() as f64;
         let mut total = 0.0;
-        for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
+        self.state.try_update_all_solids(|m, p| {
+            let (s, spec) = (&mut self.solids[m], &self.solids_specs[m]);
             let inputs = CorrectionInputs {
                 density: spec.params.particles.density,
-                eps: &s.eps,
-                eps_old: &s.eps_old,
-                u: &s.u,
-                v: &s.v,
+                eps: &*p.eps,
+                eps_old: &p.old.eps,
+                u: &*p.u,
+                v: &*p.v,
                 e_u: &s.e_u,
                 e_v: &s.e_v,
                 k_cp: &s.k_cp,
@@ -52,24 +53,24 @@ impl TwoFluid {
             apply_correction(
                 &self.grid,
                 &mut s.eps_prime,
-                &mut s.eps,
+                &mut *p.eps,
                 spec.eps_max,
                 self.settings.relax_eps,
-                &mut s.u,
-                &mut s.v,
+                &mut *p.u,
+                &mut *p.v,
                 &s.e_u,
                 &s.e_v,
                 &s.k_cp,
             );
             // P* from the corrected εs (Schaeffer only, docs/model.md §4.9 step 5)
             if spec.params.friction_model.has_plastic_pressure() {
-                for (p, &e) in s.p_star.iter_mut().zip(&s.eps) {
-                    *p = p_star(e, &spec.params.friction);
+                for (ps, &e) in s.p_star.iter_mut().zip(p.eps.iter()) {
+                    *ps = p_star(e, &spec.params.friction);
                 }
                 self.counters.plastic_pressure_cells += s.p_star.len() as u64;
             }
-        }
-        self.sync_volume_fractions();
+            Ok(())
+        })?;
         Ok(total)
     }
 
@@ -85,14 +86,15 @@ impl TwoFluid {
     /// pairs, so the solids mass changes by exactly the boundary flux, up to the mass of any
     /// cell that would go below zero (clipped, reported by tracing).
     pub(super) fn conservative_finish(&mut self, dt: f64) {
-        for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
+        self.state.update_all_solids(|m, p| {
+            let (s, spec) = (&mut self.solids[m], &self.solids_specs[m]);
             let density = spec.params.particles.density;
             let inputs = CorrectionInputs {
                 density,
-                eps: &s.eps,
-                eps_old: &s.eps_old,
-                u: &s.u,
-                v: &s.v,
+                eps: &*p.eps,
+                eps_old: &p.old.eps,
+                u: &*p.u,
+                v: &*p.v,
                 e_u: &s.e_u,
                 e_v: &s.e_v,
                 k_cp: &s.k_cp,
@@ -103,7 +105,7 @@ impl TwoFluid {
             mass_imbalance(&self.grid, &inputs, &mut s.imbalance);
             let nx = self.grid.nx();
             let (mut largest, mut clipped) = (0.0_f64, 0.0);
-            for (k, (e, r)) in s.eps.iter_mut().zip(&s.imbalance).enumerate() {
+            for (k, (e, r)) in p.eps.iter_mut().zip(&s.imbalance).enumerate() {
                 let volume = self.grid.cell_volume(k % nx, k / nx);
                 let change = -r * dt / (density * volume);
                 largest = largest.max(change.abs());
@@ -118,8 +120,7 @@ impl TwoFluid {
                 clipped,
                 "conservative finish of the solids continuity"
             );
-        }
-        self.sync_volume_fractions();
+        });
     }
 }
 

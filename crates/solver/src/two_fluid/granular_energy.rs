@@ -31,10 +31,12 @@ impl TwoFluid {
         let nx = self.grid.nx();
         let freeze = self.settings.freeze_cycling_dilute_class && !self.theta_class_fresh;
         let mut residual = 0.0;
-        for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
+        let (gas, phases) = self.state.gas_and_phases_mut();
+        let eps_g = gas.eps();
+        for ((s, p), spec) in self.solids.iter_mut().zip(phases).zip(&self.solids_specs) {
             let inputs = EnergyInputs {
-                bulk_density: &s.rho_eps,
-                bulk_density_old: &s.rho_eps_old,
+                bulk_density: p.bulk_density(),
+                bulk_density_old: &p.old().rho_eps,
                 conductivity: &s.kappa,
                 p_kin_over_theta: &s.p_kin_over_theta,
                 mu_kin: &s.mu_kin,
@@ -50,28 +52,28 @@ impl TwoFluid {
                 &inputs,
                 &spec.theta_walls,
                 Some(&s.wall_theta),
-                &s.u,
-                &s.v,
-                &s.theta_old,
+                &p.u,
+                &p.v,
+                &p.old().theta,
                 dt,
                 self.settings.scheme,
-                &s.theta,
+                &p.theta,
                 &mut self.c_faces,
                 &mut s.a_theta,
             );
             if self.sidewalls.is_some() {
                 add_theta_flux(&self.grid, s); // docs/model.md §8
             }
-            classify_rows(s, freeze);
+            classify_rows(p.eps(), s, freeze);
             // θ = θ_small where εg < εg* if the friction model pins it (docs/model.md §1.3)
             let eps_g_star = spec
                 .params
                 .friction_model
                 .pins_theta_below(&spec.params.friction);
             let rows = ThetaRows {
-                theta: &s.theta,
+                theta: &p.theta,
                 dense: &s.theta_dense,
-                eps_g: &self.eps_g,
+                eps_g,
                 eps_g_star,
                 relax,
                 nx,
@@ -80,13 +82,13 @@ impl TwoFluid {
             let t = Instant::now();
             self.profile.iterations.theta += self
                 .solver_theta
-                .setup_and_solve(&s.a_theta, &mut s.theta)
+                .setup_and_solve(&s.a_theta, &mut p.theta)
                 .map_err(lin("granular energy"))?
                 .iterations as u64;
             let solve = since(t);
             self.profile.theta_solve += solve;
             self.profile.theta_assembly -= solve;
-            s.theta.iter_mut().for_each(|t| *t = t.max(THETA_SMALL));
+            p.theta.iter_mut().for_each(|t| *t = t.max(THETA_SMALL));
         }
         self.theta_class_fresh = false;
         self.worst.theta = worst_theta;
@@ -96,9 +98,9 @@ impl TwoFluid {
 
 /// The class of each θ row: MFIX's εs > DIL_EP_S, unless `freeze` (a cycling cell keeps
 /// the class [`next_dilute_class`] gives it).
-fn classify_rows(s: &mut SolidsFields, freeze: bool) {
-    for k in 0..s.theta.len() {
-        let dense_now = s.eps[k] > DIL_EP_S;
+fn classify_rows(eps: &[f64], s: &mut SolidsFields, freeze: bool) {
+    for k in 0..eps.len() {
+        let dense_now = eps[k] > DIL_EP_S;
         if freeze {
             next_dilute_class(
                 dense_now,

@@ -26,7 +26,7 @@
 //! [`component`] view; time and residual locations in [`diagnostics`].
 //!
 //! Schaeffer friction (docs/model.md §2.4.1): the plastic pressure P* = A (εg* − εg)^10 is kept
-//! per cell apart from P_s ([`SolidsFields::p_star`]) and enters only the solids momentum, as
+//! per cell apart from P_s ([`TwoFluid::p_star`]) and enters only the solids momentum, as
 //! its own gradient −∇P* (§4.4); K_cp = dP*/dεs (§2.5); P* is recomputed from the corrected εs
 //! (§4.9 step 5); θ is forced to θ_small where εg < εg* (§1.3; as MFIX, by a fixed row of the
 //! θ equation, not relaxed). With the Princeton model P* is never computed (≡ 0) and the
@@ -51,6 +51,7 @@ mod residuals;
 mod scene;
 mod setup;
 mod sidewalls;
+mod state;
 mod walls;
 
 pub use closures::CellClosures;
@@ -58,6 +59,7 @@ pub use diagnostics::{Counters, LinearIterations, Profile};
 pub use residuals::TwoFluidResiduals;
 pub use scene::{PhaseScene, Scene, WallClosure};
 pub use sidewalls::{SidewallCell, SidewallTerms, Sidewalls};
+pub use state::{GasOld, GasState, PhaseMut, PhaseOld, PhaseState, State};
 
 use runout_closures::ClosureParams;
 use runout_linsolve::{LinSolveError, LinearSolver, Stencil5};
@@ -187,23 +189,9 @@ impl Default for TwoFluidSettings {
     }
 }
 
-/// Fields and closure values of one solids phase.
+/// Closure values and work storage of one solids phase (its fields are in [`State`]).
 #[derive(Clone, Debug)]
-pub struct SolidsFields {
-    /// volume fraction εs per cell
-    pub eps: Vec<f64>,
-    /// u on x-faces
-    pub u: Vec<f64>,
-    /// v on y-faces
-    pub v: Vec<f64>,
-    /// granular temperature θ per cell [m² s⁻²]
-    pub theta: Vec<f64>,
-    eps_old: Vec<f64>,
-    u_old: Vec<f64>,
-    v_old: Vec<f64>,
-    theta_old: Vec<f64>,
-    rho_eps: Vec<f64>,
-    rho_eps_old: Vec<f64>,
+pub(crate) struct SolidsFields {
     /// solids pressure P_s = P_kin + P_fric per cell [Pa]
     pub p_s: Vec<f64>,
     /// Schaeffer plastic pressure P* per cell [Pa] (docs/model.md §2.4.1), all 0 with other
@@ -260,14 +248,6 @@ pub struct SolidsFields {
     sidewall: Vec<SidewallTerms>,
 }
 
-impl SolidsFields {
-    /// The gas–solids drag coefficient F_gs per cell of the last closure evaluation
-    /// [kg m⁻³ s⁻¹].
-    pub fn drag(&self) -> &[f64] {
-        &self.f_gs
-    }
-}
-
 /// Largest number of solids phases (the per-node partial-elimination work arrays are fixed
 /// size, so the momentum loop allocates nothing).
 pub const MAX_SOLIDS_PHASES: usize = 7;
@@ -306,21 +286,10 @@ pub struct TwoFluid {
     solids_specs: Vec<SolidsSpec>,
     gravity: (f64, f64),
     settings: TwoFluidSettings,
-    /// gas volume fraction εg per cell
-    pub eps_g: Vec<f64>,
-    /// gas pressure per cell [Pa]
-    pub p_g: Vec<f64>,
-    /// gas u on x-faces
-    pub u_g: Vec<f64>,
-    /// gas v on y-faces
-    pub v_g: Vec<f64>,
-    /// solids phases
-    pub solids: Vec<SolidsFields>,
-    eps_g_old: Vec<f64>,
-    u_g_old: Vec<f64>,
-    v_g_old: Vec<f64>,
-    rho_eps_g: Vec<f64>,
-    rho_eps_g_old: Vec<f64>,
+    /// the fields of the gas and every solids phase
+    state: State,
+    /// closure values and work storage per solids phase
+    solids: Vec<SolidsFields>,
     mu_g: Vec<f64>,
     d_u: Vec<f64>,
     d_v: Vec<f64>,
@@ -400,21 +369,12 @@ impl TwoFluid {
         )
     }
 
-    /// Stores the current fields as the old time level and refreshes the bulk densities.
+    /// Stores the current fields as the old time level.
     pub fn begin_step(&mut self) {
         self.rebuild_preconditioners = true;
         self.theta_class_fresh = true;
-        self.sync_volume_fractions();
-        self.eps_g_old.copy_from_slice(&self.eps_g);
-        self.u_g_old.copy_from_slice(&self.u_g);
-        self.v_g_old.copy_from_slice(&self.v_g);
-        self.rho_eps_g_old.copy_from_slice(&self.rho_eps_g);
+        self.state.begin_step();
         for s in &mut self.solids {
-            s.eps_old.copy_from_slice(&s.eps);
-            s.u_old.copy_from_slice(&s.u);
-            s.v_old.copy_from_slice(&s.v);
-            s.theta_old.copy_from_slice(&s.theta);
-            s.rho_eps_old.copy_from_slice(&s.rho_eps);
             for side in Side::ALL {
                 for node in s.wall_velocity_cycle.get_mut(side) {
                     node.cycling = false;
@@ -425,30 +385,71 @@ impl TwoFluid {
 
     /// Restores the fields of the start of the step.
     pub fn restore_step(&mut self) {
-        self.eps_g.copy_from_slice(&self.eps_g_old);
-        self.u_g.copy_from_slice(&self.u_g_old);
-        self.v_g.copy_from_slice(&self.v_g_old);
-        for s in &mut self.solids {
-            s.eps.copy_from_slice(&s.eps_old);
-            s.u.copy_from_slice(&s.u_old);
-            s.v.copy_from_slice(&s.v_old);
-            s.theta.copy_from_slice(&s.theta_old);
-        }
-        self.sync_volume_fractions();
+        self.state.restore_step();
     }
 
-    /// εg = 1 − Σεs and the bulk densities of every phase.
-    pub fn sync_volume_fractions(&mut self) {
-        let n = self.eps_g.len();
-        for k in 0..n {
-            self.eps_g[k] = 1.0 - self.solids.iter().map(|s| s.eps[k]).sum::<f64>();
-            self.rho_eps_g[k] = self.gas.density * self.eps_g[k];
-        }
-        for (s, spec) in self.solids.iter_mut().zip(&self.solids_specs) {
-            for k in 0..n {
-                s.rho_eps[k] = spec.params.particles.density * s.eps[k];
-            }
-        }
+    /// The fields of the gas and every solids phase.
+    pub fn state(&self) -> &State {
+        &self.state
+    }
+
+    /// The fields, to set an initial state (εs through [`State::set_solids_fraction`] and
+    /// [`State::update_solids`], which keep εg = 1 − Σεs).
+    pub fn state_mut(&mut self) -> &mut State {
+        &mut self.state
+    }
+
+    /// εg per cell.
+    pub fn eps_g(&self) -> &[f64] {
+        self.state.gas().eps()
+    }
+
+    /// Gas pressure per cell [Pa].
+    pub fn p_g(&self) -> &[f64] {
+        &self.state.gas().p
+    }
+
+    /// Gas u on the x-faces [m s⁻¹].
+    pub fn u_g(&self) -> &[f64] {
+        &self.state.gas().u
+    }
+
+    /// Gas v on the y-faces [m s⁻¹].
+    pub fn v_g(&self) -> &[f64] {
+        &self.state.gas().v
+    }
+
+    /// Solids phase `m`.
+    pub fn solids(&self, m: usize) -> &PhaseState {
+        self.state.solids(m)
+    }
+
+    /// The number of solids phases.
+    pub fn n_solids(&self) -> usize {
+        self.state.n_solids()
+    }
+
+    /// Solids pressure P_s = P_kin + P_fric of phase `m` per cell [Pa].
+    pub fn p_s(&self, m: usize) -> &[f64] {
+        &self.solids[m].p_s
+    }
+
+    /// Schaeffer plastic pressure P* of phase `m` per cell [Pa] (docs/model.md §2.4.1), all 0
+    /// with other friction models.
+    pub fn p_star(&self, m: usize) -> &[f64] {
+        &self.solids[m].p_star
+    }
+
+    /// The gas–solids drag coefficient F_gs of phase `m` per cell of the last closure
+    /// evaluation [kg m⁻³ s⁻¹].
+    pub fn drag(&self, m: usize) -> &[f64] {
+        &self.solids[m].f_gs
+    }
+
+    /// h_w^u of phase `m` at the last floor evaluation per u-node (the wall probe of paper
+    /// Fig. 9; see [`TwoFluid::has_floor_model`]).
+    pub fn floor_h_u(&self, m: usize) -> &[f64] {
+        &self.solids[m].floor_h_u
     }
 
     /// Material density ρ_s of phase m [kg m⁻³].
@@ -462,7 +463,7 @@ impl TwoFluid {
         let rho = self.solids_specs[m].params.particles.density;
         (0..ny)
             .flat_map(|j| (0..nx).map(move |i| (i, j)))
-            .map(|(i, j)| rho * self.solids[m].eps[i + nx * j] * self.grid.cell_volume(i, j))
+            .map(|(i, j)| rho * self.solids(m).eps()[i + nx * j] * self.grid.cell_volume(i, j))
             .sum()
     }
 
@@ -480,11 +481,10 @@ impl TwoFluid {
             self.update_walls();
         }
         if let Some(sidewalls) = &self.sidewalls {
-            let gas = (&self.u_g[..], &self.v_g[..]);
             sidewalls::update_sidewalls(
                 &self.grid,
                 sidewalls,
-                gas,
+                &self.state,
                 &mut self.solids,
                 &self.solids_specs,
             );
@@ -519,8 +519,7 @@ impl TwoFluid {
     fn update_closures(&mut self) {
         self.counters.cell_closures += closures::update_closures(
             &self.grid,
-            &self.u_g,
-            &self.v_g,
+            &self.state,
             &mut self.solids,
             &self.solids_specs,
         );
@@ -531,15 +530,21 @@ impl TwoFluid {
     fn update_walls(&mut self) {
         let gas = GasNearWalls {
             walls: &self.gas_walls,
-            u: &self.u_g,
-            v: &self.v_g,
+            u: &self.state.gas().u,
+            v: &self.state.gas().v,
         };
         let relax = WallRelaxation {
             weight: self.settings.relax_wall_closures,
             oscillating_only: self.settings.relax_wall_closures_oscillating_only,
         };
-        let faces =
-            walls::update_walls(&self.grid, gas, relax, &mut self.solids, &self.solids_specs);
+        let faces = walls::update_walls(
+            &self.grid,
+            gas,
+            relax,
+            &self.state,
+            &mut self.solids,
+            &self.solids_specs,
+        );
         for side in Side::ALL {
             *self.counters.wall_closure_faces.get_mut(side) += faces.get(side);
         }
@@ -577,7 +582,7 @@ impl TwoFluid {
         max_iterations: usize,
     ) -> Result<TwoFluidStep, TwoFluidError> {
         self.begin_step();
-        let mean_volume = self.grid.x.length() * self.grid.y.length() / self.eps_g.len() as f64;
+        let mean_volume = self.grid.x.length() * self.grid.y.length() / self.eps_g().len() as f64;
         let t = Instant::now();
         self.update_closures();
         self.profile.closures += since(t);
@@ -617,7 +622,7 @@ impl TwoFluid {
                 theta = r.theta,
                 "outer iteration"
             );
-            if !self.all_finite() {
+            if !self.state.all_finite() {
                 out.residual = f64::INFINITY;
                 break;
             }

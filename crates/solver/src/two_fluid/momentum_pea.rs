@@ -25,7 +25,9 @@ use super::diagnostics::since;
 use super::dilute::{dilute_faces, dilute_row};
 use super::residuals::CoupledNode;
 use super::sidewalls::add_momentum_sinks;
-use super::{lin, SolidsFields, SolidsSpec, TwoFluid, TwoFluidError, MAX_SOLIDS_PHASES};
+use super::{
+    lin, PhaseState, SolidsFields, SolidsSpec, TwoFluid, TwoFluidError, MAX_SOLIDS_PHASES,
+};
 use crate::momentum::{assemble_u, assemble_v, fixed_row, neighbour_sum, Context, PhaseFields};
 use crate::pea::eliminate_node;
 use crate::transport::FaceData;
@@ -42,12 +44,13 @@ impl TwoFluid {
                 (&mut self.a_ug, &mut self.d_u),
                 (&mut self.a_vg, &mut self.d_v),
             );
+            let g = self.state.gas();
             let mut gas = GasComponent {
                 a,
                 d,
-                u: &self.u_g,
-                v: &self.v_g,
-                eps: &self.eps_g,
+                u: &g.u,
+                v: &g.v,
+                eps: g.eps(),
             };
             if let Some(sidewalls) = &self.sidewalls {
                 // docs/model.md §8: the side walls' sinks join the rows before the elimination
@@ -59,7 +62,7 @@ impl TwoFluid {
                 c,
                 self.settings.relax_velocity,
                 &mut gas,
-                &mut self.solids,
+                (self.state.phases(), &mut self.solids),
                 &mut self.worst.momentum,
             );
             fix_wall_rows(c, &self.gas_inflow, &mut gas, &mut self.solids);
@@ -77,20 +80,21 @@ impl TwoFluid {
     /// rows of dilute nodes are skipped (replaced by [`eliminate_drag`]).
     fn assemble_momentum(&mut self, dt: f64) {
         let grid = &self.grid;
+        let g = self.state.gas();
         let ctx_gas = Context {
             grid,
             bcs: &self.gas_walls,
             gravity: self.gravity,
             dt,
             scheme: self.settings.scheme,
-            gas_pressure: &self.p_g,
+            gas_pressure: &g.p,
             wall_faces: None,
             periodic_x: self.settings.periodic_x,
         };
         let gas_fields = PhaseFields {
-            bulk_density: &self.rho_eps_g,
-            bulk_density_old: &self.rho_eps_g_old,
-            volume_fraction: &self.eps_g,
+            bulk_density: g.bulk_density(),
+            bulk_density_old: &g.old().rho_eps,
+            volume_fraction: g.eps(),
             viscosity: &self.mu_g,
             solids_pressure: None,
             plastic_pressure: None,
@@ -99,13 +103,13 @@ impl TwoFluid {
             explicit_source: None,
             skip: None,
         };
-        let (u_g, v_g) = (&self.u_g, &self.v_g);
+        let (u_g, v_g) = (&g.u, &g.v);
         assemble_u(
             &ctx_gas,
             &gas_fields,
             u_g,
             v_g,
-            &self.u_g_old,
+            &g.old().u,
             &mut self.u_faces,
             &mut self.a_ug,
         );
@@ -114,7 +118,7 @@ impl TwoFluid {
             &gas_fields,
             u_g,
             v_g,
-            &self.v_g_old,
+            &g.old().v,
             &mut self.v_faces,
             &mut self.a_vg,
         );
@@ -130,7 +134,7 @@ impl TwoFluid {
             components,
             fixed,
             faces,
-            &mut self.solids,
+            (self.state.phases(), &mut self.solids),
             &self.solids_specs,
         );
     }
@@ -138,25 +142,26 @@ impl TwoFluid {
     /// The linear solves of every phase's u and v; returns their iterations.
     fn solve_momentum(&mut self) -> Result<usize, TwoFluidError> {
         let mut iterations = 0;
+        let gas = self.state.gas_mut();
         iterations += self
             .solver_u
-            .setup_and_solve(&self.a_ug, &mut self.u_g)
+            .setup_and_solve(&self.a_ug, &mut gas.u)
             .map_err(lin("gas u momentum"))?
             .iterations;
         iterations += self
             .solver_v
-            .setup_and_solve(&self.a_vg, &mut self.v_g)
+            .setup_and_solve(&self.a_vg, &mut gas.v)
             .map_err(lin("gas v momentum"))?
             .iterations;
-        for s in self.solids.iter_mut() {
+        for (s, p) in self.solids.iter().zip(self.state.phases_mut()) {
             iterations += self
                 .solver_u
-                .setup_and_solve(&s.a_u, &mut s.u)
+                .setup_and_solve(&s.a_u, &mut p.u)
                 .map_err(lin("solids u momentum"))?
                 .iterations;
             iterations += self
                 .solver_v
-                .setup_and_solve(&s.a_v, &mut s.v)
+                .setup_and_solve(&s.a_v, &mut p.v)
                 .map_err(lin("solids v momentum"))?
                 .iterations;
         }
@@ -164,10 +169,12 @@ impl TwoFluid {
             // node nx of a periodic column is node 0 (fixed in the solves)
             let (nx, ny) = (self.grid.nx(), self.grid.ny());
             let mx = nx + 1;
-            for u in std::iter::once(&mut self.u_g).chain(self.solids.iter_mut().map(|s| &mut s.u))
-            {
-                (0..ny).for_each(|j| u[nx + mx * j] = u[mx * j]);
-            }
+            let copy = |u: &mut [f64]| (0..ny).for_each(|j| u[nx + mx * j] = u[mx * j]);
+            copy(&mut self.state.gas_mut().u);
+            self.state
+                .phases_mut()
+                .iter_mut()
+                .for_each(|p| copy(&mut p.u));
         }
         Ok(iterations)
     }
@@ -177,11 +184,11 @@ impl TwoFluid {
     pub(super) fn update_stress_sources(&mut self) {
         let fixed_u = self.a_ug.pattern().fixed_mask();
         let fixed_v = self.a_vg.pattern().fixed_mask();
-        for s in &mut self.solids {
+        for (s, p) in self.solids.iter_mut().zip(self.state.phases()) {
             crate::stress::explicit_stress(
                 &self.grid,
-                &s.u,
-                &s.v,
+                &p.u,
+                &p.v,
                 &s.mu,
                 &s.lambda,
                 &s.tr_d,
@@ -201,23 +208,23 @@ fn assemble_solids(
     [cu, cv]: [Component; 2],
     fixed: [&[bool]; 2],
     [u_faces, v_faces]: [&mut FaceData; 2],
-    solids: &mut [SolidsFields],
+    (phases, solids): (&[PhaseState], &mut [SolidsFields]),
     specs: &[SolidsSpec],
 ) {
-    for (s, spec) in solids.iter_mut().zip(specs) {
+    for ((s, p), spec) in solids.iter_mut().zip(phases).zip(specs) {
         // dilute faces (interpolated εs ≤ DIL_EP_S, docs/model.md §2.7): their rows are
         // replaced later, so the assembly skips them (most of a slide's domain)
-        dilute_faces(ctx_gas.grid, cu, &s.eps, fixed[0], &mut s.dilute_u);
-        dilute_faces(ctx_gas.grid, cv, &s.eps, fixed[1], &mut s.dilute_v);
+        dilute_faces(ctx_gas.grid, cu, p.eps(), fixed[0], &mut s.dilute_u);
+        dilute_faces(ctx_gas.grid, cv, p.eps(), fixed[1], &mut s.dilute_v);
         let ctx = Context {
             bcs: &spec.walls,
             wall_faces: Some(&s.wall_velocity),
             ..*ctx_gas
         };
         let fields = PhaseFields {
-            bulk_density: &s.rho_eps,
-            bulk_density_old: &s.rho_eps_old,
-            volume_fraction: &s.eps,
+            bulk_density: p.bulk_density(),
+            bulk_density_old: &p.old().rho_eps,
+            volume_fraction: p.eps(),
             viscosity: &s.mu,
             solids_pressure: Some(&s.p_s),
             // −∇P* only with Schaeffer (docs/model.md §4.4); none with Princeton, where
@@ -230,13 +237,13 @@ fn assemble_solids(
             explicit_source: Some(&s.tau_u),
             skip: Some(&s.dilute_u),
         };
-        assemble_u(&ctx, &fields, &s.u, &s.v, &s.u_old, u_faces, &mut s.a_u);
+        assemble_u(&ctx, &fields, &p.u, &p.v, &p.old().u, u_faces, &mut s.a_u);
         let fields_v = PhaseFields {
             explicit_source: Some(&s.tau_v),
             skip: Some(&s.dilute_v),
             ..fields
         };
-        assemble_v(&ctx, &fields_v, &s.u, &s.v, &s.v_old, v_faces, &mut s.a_v);
+        assemble_v(&ctx, &fields_v, &p.u, &p.v, &p.old().v, v_faces, &mut s.a_v);
     }
 }
 
@@ -265,17 +272,17 @@ struct SolidsComponent<'a> {
 }
 
 impl SolidsFields {
-    /// The arrays of component `c`.
-    fn component(&mut self, c: Component) -> SolidsComponent<'_> {
+    /// The arrays of component `c` of the phase with fields `p`.
+    fn component<'a>(&'a mut self, p: &'a PhaseState, c: Component) -> SolidsComponent<'a> {
         let (a, phi, e) = c.pick(
-            (&mut self.a_u, &self.u, &mut self.e_u),
-            (&mut self.a_v, &self.v, &mut self.e_v),
+            (&mut self.a_u, &p.u, &mut self.e_u),
+            (&mut self.a_v, &p.v, &mut self.e_v),
         );
         SolidsComponent {
             a,
             phi,
             e,
-            eps: &self.eps,
+            eps: p.eps(),
         }
     }
 }
@@ -288,7 +295,7 @@ fn eliminate_drag(
     c: Component,
     relax: f64,
     gas: &mut GasComponent<'_>,
-    solids: &mut [SolidsFields],
+    (phases, solids): (&[PhaseState], &mut [SolidsFields]),
     worst: &mut (f64, usize, usize, usize, usize),
 ) -> f64 {
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
@@ -300,7 +307,7 @@ fn eliminate_drag(
             if gas.a.pattern().fixed_mask()[k] {
                 continue;
             }
-            let node = gather(c, (i, j), dx, dy, gas, solids);
+            let node = gather(c, (i, j), dx, dy, gas, (phases, solids));
             // momentum residuals of the coupled node (before relaxation, §4.11)
             for p in 0..=m {
                 if p > 0 && node.dilute[p - 1] {
@@ -316,7 +323,7 @@ fn eliminate_drag(
                 }
             }
             let area = c.face_area(i, j, dx, dy);
-            decouple(c, k, area, relax, &node, gas, solids);
+            decouple(c, k, area, relax, &node, gas, (phases, solids));
         }
     }
     if den > 0.0 {
@@ -334,7 +341,7 @@ fn gather(
     dx: &[f64],
     dy: &[f64],
     gas: &GasComponent<'_>,
-    solids: &[SolidsFields],
+    (phases, solids): (&[PhaseState], &[SolidsFields]),
 ) -> CoupledNode {
     let k = i + c.mx * j;
     // the cells beside the node and their half volumes
@@ -351,8 +358,8 @@ fn gather(
     node.r_in[0] = neighbour_sum(gas.a, gas_phi, k);
     node.phi[0] = gas_phi[k];
     node.cross[0] = c.cross_velocity(gas.u, gas.v, c0);
-    for (p, s) in solids.iter().enumerate() {
-        let (a, phi, dilute) = c.pick((&s.a_u, &s.u, &s.dilute_u), (&s.a_v, &s.v, &s.dilute_v));
+    for (p, (s, ph)) in solids.iter().zip(phases).enumerate() {
+        let (a, phi, dilute) = c.pick((&s.a_u, &ph.u, &s.dilute_u), (&s.a_v, &ph.v, &s.dilute_v));
         // a face whose interpolated εs ≤ DIL_EP_S carries no solids momentum
         // (MFIX `source_u_s.f`, docs/model.md §2.7): its velocity is set by its row
         let dilute = dilute[k];
@@ -364,7 +371,7 @@ fn gather(
             neighbour_sum(a, phi, k)
         };
         node.phi[p + 1] = phi[k];
-        node.cross[p + 1] = c.cross_velocity(&s.u, &s.v, c0);
+        node.cross[p + 1] = c.cross_velocity(&ph.u, &ph.v, c0);
         node.drag[p] = if dilute {
             0.0
         } else {
@@ -383,7 +390,7 @@ fn decouple(
     relax: f64,
     node: &CoupledNode,
     gas: &mut GasComponent<'_>,
-    solids: &mut [SolidsFields],
+    (phases, solids): (&[PhaseState], &mut [SolidsFields]),
 ) {
     let m = solids.len();
     let (a_in, r_in, drag) = (&node.a_in, &node.r_in, &node.drag);
@@ -402,10 +409,10 @@ fn decouple(
     let eps_face_g = face_mean(gas.eps, c0, c1);
     let mut numerator = eps_face_g;
     let mut denominator = a_in[0] / relax;
-    for (p, s) in solids.iter_mut().enumerate() {
+    for (p, (s, ph)) in solids.iter_mut().zip(phases).enumerate() {
         let a_s = a_in[p + 1] / relax;
         let f = drag[p];
-        let sc = s.component(c);
+        let sc = s.component(ph, c);
         let eps_face_s = face_mean(sc.eps, c0, c1);
         numerator += eps_face_s * f / (a_s + f);
         denominator += f * a_s / (a_s + f);
@@ -426,7 +433,9 @@ fn decouple(
     if c.periodic {
         // a periodic column has no x gradient of P'_g or of K_cp ε'
         gas.d[k] = 0.0;
-        solids.iter_mut().for_each(|s| s.component(c).e[k] = 0.0);
+        solids
+            .iter_mut()
+            .for_each(|s| c.pick(&mut s.e_u, &mut s.e_v)[k] = 0.0);
     }
 }
 
@@ -443,9 +452,9 @@ fn fix_wall_rows(
             fixed_row(gas.a, k, c.wall_inflow(inflow, k));
             gas.d[k] = 0.0;
             for s in solids.iter_mut() {
-                let sc = s.component(c);
-                fixed_row(sc.a, k, 0.0);
-                sc.e[k] = 0.0;
+                let (a, e) = c.pick((&mut s.a_u, &mut s.e_u), (&mut s.a_v, &mut s.e_v));
+                fixed_row(a, k, 0.0);
+                e[k] = 0.0;
             }
         }
     }
@@ -474,8 +483,11 @@ mod tests {
         let pv = Pattern::new(nx, ny + 1).unwrap();
         let pc = Pattern::new(nx, ny).unwrap();
         let mut solids = vec![SolidsFields::new((nx, ny), &pu, &pv, &pc)];
-        solids[0].eps.copy_from_slice(&[0.4, 0.6]);
-        solids[0].u.copy_from_slice(&[0.0, 0.2, 0.0]);
+        let mut state = super::super::State::new((nx, ny), 1.0, [1.0], 0.0);
+        state.update_solids(0, |p| {
+            p.eps.copy_from_slice(&[0.4, 0.6]);
+            p.u.copy_from_slice(&[0.0, 0.2, 0.0]);
+        });
         let (mut a_g, mut d) = (Stencil5::new(pu), vec![0.0; nx + 1]);
         let (u_g, v_g, eps_g) = (vec![0.0, 1.0, 0.0], vec![0.0; nx * (ny + 1)], [0.6, 0.4]);
         let mut gas = GasComponent {
@@ -495,7 +507,15 @@ mod tests {
         node.phi[..2].copy_from_slice(&[1.0, 0.2]);
         node.drag[0] = f;
         let c = Component::u(nx, ny, false);
-        decouple(c, 1, area, relax, &node, &mut gas, &mut solids);
+        decouple(
+            c,
+            1,
+            area,
+            relax,
+            &node,
+            &mut gas,
+            (state.phases(), &mut solids),
+        );
         let (ag, as_) = (a_gas / relax, a_s / relax);
         let d_expected = area * (0.5 + 0.5 * f / (as_ + f)) / (ag + f * as_ / (as_ + f));
         assert!((d[1] - d_expected).abs() < 1e-15 * d_expected);

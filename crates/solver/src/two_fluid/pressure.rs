@@ -22,12 +22,13 @@ impl TwoFluid {
     /// Step 4: gas pressure correction (module doc); returns the mean |gas imbalance|.
     pub(super) fn pressure_correction(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
         let (nx, ny) = (self.grid.nx(), self.grid.ny());
+        let g = self.state.gas();
         let gas = GasContinuity {
             density: self.gas.density,
-            eps: &self.eps_g,
-            eps_old: &self.eps_g_old,
-            u: &self.u_g,
-            v: &self.v_g,
+            eps: g.eps(),
+            eps_old: &g.old().eps,
+            u: &g.u,
+            v: &g.v,
             d_u: &self.d_u,
             d_v: &self.d_v,
             inflow: &self.gas_inflow,
@@ -50,17 +51,17 @@ impl TwoFluid {
         let solve = since(t);
         self.profile.pressure_solve += solve;
         self.profile.pressure_assembly -= solve;
+        let g = self.state.gas_mut();
         correct_velocities(
             (nx, ny),
             &self.p_corr,
             &self.d_u,
             &self.d_v,
-            &mut self.u_g,
-            &mut self.v_g,
+            &mut g.u,
+            &mut g.v,
         );
         let w = self.settings.relax_pressure;
-        self.p_g
-            .iter_mut()
+        g.p.iter_mut()
             .zip(&self.p_corr)
             .for_each(|(p, c)| *p += w * c);
         Ok(total / (nx * ny) as f64)

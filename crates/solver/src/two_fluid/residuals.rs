@@ -13,7 +13,7 @@
 //! `DETECT_STALL` ends a step whose sum does not fall over 5 iterations
 //! ([`Convergence::stalled`]).
 
-use super::{TwoFluid, MAX_SOLIDS_PHASES};
+use super::MAX_SOLIDS_PHASES;
 
 /// Normalised residuals of one outer iteration (docs/model.md §4.11).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -122,25 +122,6 @@ impl Convergence {
             self.sum5 = sum;
         }
         None
-    }
-}
-
-impl TwoFluid {
-    /// Whether every field of the iterate is finite.
-    pub(super) fn all_finite(&self) -> bool {
-        self.p_g
-            .iter()
-            .chain(&self.u_g)
-            .chain(&self.v_g)
-            .all(|x| x.is_finite())
-            && self.solids.iter().all(|p| {
-                p.eps
-                    .iter()
-                    .chain(&p.u)
-                    .chain(&p.v)
-                    .chain(&p.theta)
-                    .all(|x| x.is_finite())
-            })
     }
 }
 

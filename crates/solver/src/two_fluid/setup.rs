@@ -8,8 +8,8 @@ use runout_mesh::{Grid, Sides};
 
 use super::diagnostics::{Counters, Profile, Worst};
 use super::{
-    lin, CellClosures, Scene, SidewallTerms, SolidsFields, SolidsSpec, TwoFluid, TwoFluidError,
-    TwoFluidSettings, MAX_SOLIDS_PHASES, PRESSURE_RTOL, THETA_SMALL,
+    lin, CellClosures, Scene, SidewallTerms, SolidsFields, SolidsSpec, State, TwoFluid,
+    TwoFluidError, TwoFluidSettings, MAX_SOLIDS_PHASES, PRESSURE_RTOL, THETA_SMALL,
 };
 use crate::kinematics::Strain;
 use crate::momentum::WallFaces;
@@ -46,17 +46,10 @@ impl TwoFluid {
             .iter()
             .map(|_| SolidsFields::new((nx, ny), &pu, &pv, &pc))
             .collect();
+        let densities = solids_specs.iter().map(|s| s.params.particles.density);
         Ok(TwoFluid {
-            eps_g: vec![1.0; n],
-            p_g: vec![0.0; n],
-            u_g: vec![0.0; (nx + 1) * ny],
-            v_g: vec![0.0; nx * (ny + 1)],
+            state: State::new((nx, ny), gas.density, densities, THETA_SMALL),
             solids,
-            eps_g_old: vec![1.0; n],
-            u_g_old: vec![0.0; (nx + 1) * ny],
-            v_g_old: vec![0.0; nx * (ny + 1)],
-            rho_eps_g: vec![gas.density; n],
-            rho_eps_g_old: vec![gas.density; n],
             mu_g: vec![gas.viscosity; n],
             d_u: vec![0.0; (nx + 1) * ny],
             d_v: vec![0.0; nx * (ny + 1)],
@@ -183,16 +176,6 @@ impl SolidsFields {
     pub(super) fn new((nx, ny): (usize, usize), pu: &Pattern, pv: &Pattern, pc: &Pattern) -> Self {
         let n = nx * ny;
         SolidsFields {
-            eps: vec![0.0; n],
-            u: vec![0.0; (nx + 1) * ny],
-            v: vec![0.0; nx * (ny + 1)],
-            theta: vec![THETA_SMALL; n],
-            eps_old: vec![0.0; n],
-            u_old: vec![0.0; (nx + 1) * ny],
-            v_old: vec![0.0; nx * (ny + 1)],
-            theta_old: vec![THETA_SMALL; n],
-            rho_eps: vec![0.0; n],
-            rho_eps_old: vec![0.0; n],
             p_s: vec![0.0; n],
             p_star: vec![0.0; n],
             mu: vec![0.0; n],

@@ -23,7 +23,7 @@ use runout_mesh::Grid;
 use runout_walls::{MomentumBranch, MomentumWallState, SolidsWallModel, ThetaWallState};
 
 use super::component::Component;
-use super::{SolidsFields, SolidsSpec};
+use super::{SolidsFields, SolidsSpec, State};
 
 /// Largest K [Pa s m⁻¹]: Jenkins' COL = tan δ_w P_k/|u_s| overflows as |u_s| → 0; far below
 /// this bound a cell's velocity is already zero to rounding.
@@ -155,24 +155,26 @@ impl Sidewalls {
 pub(super) fn update_sidewalls(
     grid: &Grid,
     sidewalls: &Sidewalls,
-    (u_g, v_g): (&[f64], &[f64]),
+    state: &State,
     solids: &mut [SolidsFields],
     specs: &[SolidsSpec],
 ) {
     let nx = grid.nx();
-    for (s, spec) in solids.iter_mut().zip(specs) {
-        for k in 0..s.eps.len() {
-            if s.eps[k] == 0.0 {
+    let (u_g, v_g) = (&state.gas().u, &state.gas().v);
+    for ((s, p), spec) in solids.iter_mut().zip(state.phases()).zip(specs) {
+        let eps = p.eps();
+        for k in 0..eps.len() {
+            if eps[k] == 0.0 {
                 s.sidewall[k] = SidewallTerms::default();
                 continue;
             }
             let (i, j) = (k % nx, k / nx);
             let (w, e) = (i + (nx + 1) * j, i + 1 + (nx + 1) * j);
-            let (us, vs) = (0.5 * (s.u[w] + s.u[e]), 0.5 * (s.v[k] + s.v[k + nx]));
+            let (us, vs) = (0.5 * (p.u[w] + p.u[e]), 0.5 * (p.v[k] + p.v[k + nx]));
             let (ug, vg) = (0.5 * (u_g[w] + u_g[e]), 0.5 * (v_g[k] + v_g[k + nx]));
             let cell = SidewallCell {
-                eps_s: s.eps[k],
-                theta: s.theta[k],
+                eps_s: eps[k],
+                theta: p.theta[k],
                 speed: us.hypot(vs),
                 gas_slip: (ug - us).hypot(vg - vs),
                 tr_d: s.strain[k].tr_d,

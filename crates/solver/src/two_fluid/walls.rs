@@ -9,7 +9,7 @@ use runout_walls::state::{corner_theta, face_theta};
 use runout_walls::{MomentumWallState, RobinFace, SolidsWallModel, ThetaWallState, WallStrain};
 
 use super::dilute::{relax_face, turns_back, ClosureCycle};
-use super::{SolidsFields, SolidsSpec};
+use super::{PhaseState, SolidsFields, SolidsSpec, State};
 use crate::momentum::WallFaces;
 use crate::single_phase::SideBc;
 
@@ -30,6 +30,7 @@ fn slot(faces: &mut WallFaces, side: Side) -> &mut Option<Vec<RobinFace>> {
 pub(super) fn wall_face_velocities(
     grid: &Grid,
     spec: &SolidsSpec,
+    phase: &PhaseState,
     s: &mut SolidsFields,
 ) -> Sides<bool> {
     let (nx, ny) = (grid.nx(), grid.ny());
@@ -63,12 +64,12 @@ pub(super) fn wall_face_velocities(
         };
         for c in 0..n_cells {
             let face = |node: usize| match side {
-                Side::South => closure(node).face_value(s.u[node], dy[0]),
+                Side::South => closure(node).face_value(phase.u[node], dy[0]),
                 Side::North => {
-                    closure(node).face_value(s.u[node + (nx + 1) * (ny - 1)], dy[ny - 1])
+                    closure(node).face_value(phase.u[node + (nx + 1) * (ny - 1)], dy[ny - 1])
                 }
-                Side::West => closure(node).face_value(s.v[nx * node], dx[0]),
-                Side::East => closure(node).face_value(s.v[nx - 1 + nx * node], dx[nx - 1]),
+                Side::West => closure(node).face_value(phase.v[nx * node], dx[0]),
+                Side::East => closure(node).face_value(phase.v[nx - 1 + nx * node], dx[nx - 1]),
             };
             out[c] = 0.5 * (face(c) + face(c + 1));
         }
@@ -132,11 +133,12 @@ pub(super) fn update_walls(
     grid: &Grid,
     gas: GasNearWalls<'_>,
     relax: WallRelaxation,
+    state: &State,
     solids: &mut [SolidsFields],
     specs: &[SolidsSpec],
 ) -> Sides<u64> {
     let mut evaluated = Sides::<u64>::default();
-    for (s, spec) in solids.iter_mut().zip(specs) {
+    for ((s, phase), spec) in solids.iter_mut().zip(state.phases()).zip(specs) {
         for side in [Side::West, Side::East, Side::South, Side::North] {
             let Some(model) = spec.wall_models.get(side) else {
                 continue;
@@ -168,6 +170,7 @@ pub(super) fn update_walls(
             let closures = SideClosures {
                 model,
                 spec,
+                phase,
                 gas: gas_side,
             };
             momentum_closures(
@@ -306,6 +309,8 @@ impl GasSide<'_> {
 struct SideClosures<'a> {
     model: &'a SolidsWallModel,
     spec: &'a SolidsSpec,
+    /// the phase's fields
+    phase: &'a PhaseState,
     gas: GasSide<'a>,
 }
 
@@ -322,13 +327,18 @@ fn momentum_closures(
     theta_faces: &[RobinFace],
     cycle: &mut [ClosureCycle],
 ) {
-    let SideClosures { model, spec, gas } = closures;
+    let SideClosures {
+        model,
+        spec,
+        phase: p,
+        gas,
+    } = closures;
     let u_w = model.wall_velocity();
     let (delta, sign, n_cells) = (wall.delta, wall.sign, wall.n_cells);
     let face_velocity = s.wall_face_velocity.get(wall.side);
     let ghost_theta = |c_along: usize| {
         let c = wall.cell(c_along);
-        theta_faces[c_along].ghost(s.theta[c], delta)
+        theta_faces[c_along].ghost(p.theta[c], delta)
     };
     for k in 0..=n_cells {
         // the cells beside node k (one at a corner)
@@ -346,7 +356,7 @@ fn momentum_closures(
             _ => 0.5,
         };
         let interp = |f: &[f64]| weight * f[wall.cell(c_lo)] + (1.0 - weight) * f[wall.cell(c_hi)];
-        let vel = wall.tangential(&s.u, &s.v, k);
+        let vel = wall.tangential(&p.u, &p.v, k);
         let closure = faces[k];
         let ghost = closure.ghost(vel, delta);
         let face_vel = closure.face_value(vel, delta);
@@ -354,8 +364,8 @@ fn momentum_closures(
         let d_tangent_normal = sign * (vel - ghost) / delta;
         let d_normal = sign
             * 0.5
-            * (wall.normal_centre(&s.u, &s.v, wall.cell(c_lo))
-                + wall.normal_centre(&s.u, &s.v, wall.cell(c_hi)))
+            * (wall.normal_centre(&p.u, &p.v, wall.cell(c_lo))
+                + wall.normal_centre(&p.u, &p.v, wall.cell(c_hi)))
             / delta;
         let d_along = match (lo, hi) {
             (Some(a), Some(b)) => (face_velocity[b] - face_velocity[a]) / wall.along_spacing[k],
@@ -365,13 +375,13 @@ fn momentum_closures(
         let strain = WallStrain::planar_floor(d_along, d_tangent_normal, 0.0, d_normal);
         let theta_rows = corner_theta(
             0.5 * (ghost_theta(c_lo) + ghost_theta(c_hi)),
-            0.5 * (s.theta[wall.cell(c_lo)] + s.theta[wall.cell(c_hi)]),
+            0.5 * (p.theta[wall.cell(c_lo)] + p.theta[wall.cell(c_hi)]),
         );
         let gas_vel = gas.face_value(wall.tangential(gas.u, gas.v, k));
         let state = MomentumWallState {
             // MFIX's IJK2 for U(i) is the cell west of the face (cell i)
-            eps_s_fluid: s.eps[wall.cell(c_lo)],
-            eps_s: interp(&s.eps),
+            eps_s_fluid: p.eps()[wall.cell(c_lo)],
+            eps_s: interp(p.eps()),
             theta: theta_rows,
             slip: (face_vel - u_w).abs(),
             gas_slip: (gas_vel - face_vel).abs(),
@@ -404,15 +414,20 @@ fn theta_closures(
     s: &SolidsFields,
     theta_faces: &mut [RobinFace],
 ) {
-    let SideClosures { model, spec, gas } = closures;
+    let SideClosures {
+        model,
+        spec,
+        phase: p,
+        gas,
+    } = closures;
     let u_w = model.wall_velocity();
     let face_velocity = s.wall_face_velocity.get(wall.side);
     for along in 0..wall.n_cells {
         let c = wall.cell(along);
         let gas_centre = wall.gas_centre(gas, along);
         let state = ThetaWallState {
-            eps_s: s.eps[c],
-            theta: face_theta(theta_faces[along].ghost(s.theta[c], wall.delta), s.theta[c]),
+            eps_s: p.eps()[c],
+            theta: face_theta(theta_faces[along].ghost(p.theta[c], wall.delta), p.theta[c]),
             slip: (face_velocity[along] - u_w).abs(),
             gas_slip: (gas_centre - face_velocity[along]).abs(),
         };

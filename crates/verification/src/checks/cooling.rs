@@ -15,7 +15,7 @@ pub struct Cooling;
 
 /// The mean θ of the box and the largest deviation of a cell from it, relative to the mean.
 fn mean_theta(tf: &TwoFluid) -> (f64, f64) {
-    let th = &tf.solids[0].theta;
+    let th = &tf.solids(0).theta;
     let mean = th.iter().sum::<f64>() / th.len() as f64;
     let spread = th.iter().fold(0.0_f64, |m, t| m.max((t - mean).abs()));
     (mean, spread / mean)
@@ -23,12 +23,12 @@ fn mean_theta(tf: &TwoFluid) -> (f64, f64) {
 
 /// Largest velocity of either phase and largest εs drift of a run.
 fn at_rest(outcome: &mut Outcome, label: &str, tf: &TwoFluid) {
-    let s = &tf.solids[0];
+    let s = tf.solids(0);
     let speed =
         s.u.iter()
             .chain(&s.v)
-            .chain(&tf.u_g)
-            .chain(&tf.v_g)
+            .chain(tf.u_g())
+            .chain(tf.v_g())
             .fold(0.0_f64, |m, x| m.max(x.abs()));
     // the linear solvers' round-off only: 1e-8 m/s against a fluctuation speed √θ ≥ 0.2 m/s
     outcome.measure(
@@ -36,7 +36,10 @@ fn at_rest(outcome: &mut Outcome, label: &str, tf: &TwoFluid) {
         speed,
         Limit::Below(1e-8),
     );
-    let drift = s.eps.iter().fold(0.0_f64, |m, e| m.max((e - EPS_S).abs()));
+    let drift = s
+        .eps()
+        .iter()
+        .fold(0.0_f64, |m, e| m.max((e - EPS_S).abs()));
     outcome.measure(format!("{label}: εs drift"), drift, Limit::Below(1e-9));
 }
 

@@ -218,13 +218,13 @@ pub fn run(setup: &ChuteCheckSetup) -> Result<ChuteCheck, ChuteCheckError> {
     } = march(&mut tf, setup)?;
     let wall_time = start.elapsed().as_secs_f64();
     let u_s = u_rows(&tf);
-    let s = &tf.solids[0];
+    let s = tf.solids(0);
     let mut drag_to_weight: f64 = 0.0;
     for j in 0..ny {
-        let weight = s.eps[j] * rho_s * g * alpha.sin();
+        let weight = s.eps()[j] * rho_s * g * alpha.sin();
         if weight > 0.0 {
             drag_to_weight =
-                drag_to_weight.max((s.drag()[j] * (tf.u_g[2 * j] - u_s[j])).abs() / weight);
+                drag_to_weight.max((tf.drag(0)[j] * (tf.u_g()[2 * j] - u_s[j])).abs() / weight);
         }
     }
     let theta_pointwise_error = s
@@ -234,12 +234,12 @@ pub fn run(setup: &ChuteCheckSetup) -> Result<ChuteCheck, ChuteCheckError> {
         .map(|(a, b)| (a / b - 1.0).abs())
         .fold(0.0, f64::max);
     Ok(ChuteCheck {
-        eps_error: relative_error(&s.eps, &reference.eps_s),
+        eps_error: relative_error(s.eps(), &reference.eps_s),
         velocity_error: relative_error(&u_s, &reference.u_s),
         theta_error: relative_error(&s.theta, &reference.theta),
         theta_pointwise_error,
         y: reference.y.clone(),
-        eps_s: s.eps.clone(),
+        eps_s: s.eps().to_vec(),
         theta: s.theta.clone(),
         u_s,
         time,
@@ -328,14 +328,13 @@ fn column(
     }));
     // start: uniform εs = holdup/H, gas and solids sliding at 0.3 m/s, θ = 1e-3 m²/s²
     let eps0 = setup.holdup / setup.height;
-    {
-        let s = &mut tf.solids[0];
+    let state = tf.state_mut();
+    state.update_solids(0, |s| {
         s.eps.iter_mut().for_each(|e| *e = eps0);
         s.theta.iter_mut().for_each(|t| *t = 1e-3);
         s.u.iter_mut().for_each(|u| *u = 0.3);
-    }
-    tf.u_g.iter_mut().for_each(|u| *u = 0.3);
-    tf.sync_volume_fractions();
+    });
+    state.gas_mut().u.iter_mut().for_each(|u| *u = 0.3);
     Ok(tf)
 }
 
@@ -353,7 +352,7 @@ struct March {
 /// u of each row of the column (node 0 of the periodic column).
 fn u_rows(tf: &TwoFluid) -> Vec<f64> {
     let ny = tf.grid().ny();
-    (0..ny).map(|j| tf.solids[0].u[2 * j]).collect()
+    (0..ny).map(|j| tf.solids(0).u[2 * j]).collect()
 }
 
 /// Marches the column in time until its relative rate of change falls below the setup's
@@ -365,9 +364,9 @@ fn march(tf: &mut TwoFluid, setup: &ChuteCheckSetup) -> Result<March, ChuteCheck
     let mut rate = f64::INFINITY;
     while time < setup.end_time {
         let before = (
-            tf.solids[0].eps.clone(),
+            tf.solids(0).eps().to_vec(),
             u_rows(tf),
-            tf.solids[0].theta.clone(),
+            tf.solids(0).theta.clone(),
         );
         let out = tf
             .step(dt, 1e-3, 1e-4, 1e4, 50)
@@ -386,13 +385,14 @@ fn march(tf: &mut TwoFluid, setup: &ChuteCheckSetup) -> Result<March, ChuteCheck
         time += dt;
         steps += 1;
         let change = |a: &[f64], b: &[f64]| relative_error(b, a) / dt;
-        rate = change(&before.0, &tf.solids[0].eps)
+        rate = change(&before.0, tf.solids(0).eps())
             .max(change(&before.1, &u_rows(tf)))
-            .max(change(&before.2, &tf.solids[0].theta));
+            .max(change(&before.2, &tf.solids(0).theta));
         if setup.verbose && steps % 200 == 0 {
             eprintln!(
                 "t = {time:.3} s, dt = {dt:.2e}, {} its, rate {rate:.2e}/s, slip row 0 {:.4}",
-                out.iterations, tf.solids[0].u[0]
+                out.iterations,
+                tf.solids(0).u[0]
             );
         }
         if rate < setup.steady_rate {

@@ -101,9 +101,10 @@ pub fn cool(t_end: f64, steps: usize) -> anyhow::Result<TwoFluid> {
         (0.0, 0.0),
         TwoFluidSettings::default(),
     )?;
-    tf.solids[0].eps.iter_mut().for_each(|e| *e = EPS_S);
-    tf.solids[0].theta.iter_mut().for_each(|t| *t = THETA0);
-    tf.sync_volume_fractions();
+    tf.state_mut().update_solids(0, |s| {
+        s.eps.iter_mut().for_each(|e| *e = EPS_S);
+        s.theta.iter_mut().for_each(|t| *t = THETA0);
+    });
     let dt = t_end / steps as f64;
     for _ in 0..steps {
         // the whole outer iteration, repeated until θ has converged; `TwoFluid::step`'s

@@ -130,14 +130,16 @@ fn bed_solver() -> anyhow::Result<TwoFluid> {
         south: INFLOW,
         north: 0.0,
     })?;
-    for j in 0..ny {
-        if grid.y.centres()[j] < bed {
-            tf.solids[0].eps[j] = 0.55;
+    let state = tf.state_mut();
+    state.update_solids(0, |s| {
+        for j in 0..ny {
+            if grid.y.centres()[j] < bed {
+                s.eps[j] = 0.55;
+            }
+            s.theta[j] = 1e-4;
         }
-        tf.solids[0].theta[j] = 1e-4;
-    }
-    tf.v_g.iter_mut().for_each(|v| *v = INFLOW);
-    tf.sync_volume_fractions();
+    });
+    state.gas_mut().v.iter_mut().for_each(|v| *v = INFLOW);
     Ok(tf)
 }
 
@@ -152,7 +154,7 @@ pub fn run(verbose: bool) -> anyhow::Result<FluidizedBed> {
     // buoyant weight of the bed per area above the bottom cell's centre, and the gas
     // column between the bottom and top cell centres
     let weight = |tf: &TwoFluid| -> f64 {
-        let s = &tf.solids[0].eps;
+        let s = &tf.solids(0).eps();
         (RHO_S - RHO_G) * G * (s.iter().sum::<f64>() - 0.5 * s[0]) * dy
     };
     let (mut time, mut dt): (f64, f64) = (0.0, 2e-4);
@@ -174,27 +176,27 @@ pub fn run(verbose: bool) -> anyhow::Result<FluidizedBed> {
         }
         // gas pressure drop between the bottom and top cell centres, less the gas's own
         // column (εg ρg g between them)
-        let p = &tf.p_g;
-        let gas_column: f64 = RHO_G * G * dy * (0.5 * tf.eps_g[0] + 0.5 * tf.eps_g[ny - 1])
-            + RHO_G * G * dy * tf.eps_g[1..ny - 1].iter().sum::<f64>();
+        let p = tf.p_g();
+        let gas_column: f64 = RHO_G * G * dy * (0.5 * tf.eps_g()[0] + 0.5 * tf.eps_g()[ny - 1])
+            + RHO_G * G * dy * tf.eps_g()[1..ny - 1].iter().sum::<f64>();
         let drop = p[0] - p[ny - 1] - gas_column;
         if time > average_from {
             drop_integral += drop * step_dt;
             weight_integral += weight(&tf) * step_dt;
-            p_s_integral += tf.solids[0].p_s[0] * step_dt;
+            p_s_integral += tf.p_s(0)[0] * step_dt;
             span += step_dt;
         }
         if verbose && steps % 200 == 0 {
             let top = (0..ny)
                 .rev()
-                .find(|&j| tf.solids[0].eps[j] > 0.1)
+                .find(|&j| tf.solids(0).eps()[j] > 0.1)
                 .unwrap_or(0);
             eprintln!(
                 "t = {time:.3} s, dt {dt:.1e}, {} its, drop {drop:.1} Pa, weight {:.1} Pa, eps bottom {:.3}, P_s bottom {:.2}, bed top {:.3} m",
                 out.iterations,
                 weight(&tf),
-                tf.solids[0].eps[0],
-                tf.solids[0].p_s[0],
+                tf.solids(0).eps()[0],
+                tf.p_s(0)[0],
                 grid.y.centres()[top]
             );
         }
@@ -205,7 +207,7 @@ pub fn run(verbose: bool) -> anyhow::Result<FluidizedBed> {
         p_s_integral / span,
     );
     let mass = tf.solids_mass(0) / mass0 - 1.0;
-    let max_eps = tf.solids[0].eps.iter().cloned().fold(0.0, f64::max);
+    let max_eps = tf.solids(0).eps().iter().cloned().fold(0.0, f64::max);
     Ok(FluidizedBed {
         drop,
         weight,
@@ -213,6 +215,6 @@ pub fn run(verbose: bool) -> anyhow::Result<FluidizedBed> {
         mass_change: mass,
         max_eps,
         steps,
-        finite: tf.p_g.iter().all(|x| x.is_finite()),
+        finite: tf.p_g().iter().all(|x| x.is_finite()),
     })
 }

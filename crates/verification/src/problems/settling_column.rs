@@ -66,15 +66,16 @@ pub fn column(steps: usize, dt: f64, verbose: bool) -> anyhow::Result<(TwoFluid,
         (0.0, -9.81),
         TwoFluidSettings::default(),
     )?;
-    for j in 0..ny {
-        for i in 0..nx {
-            if grid.y.centres()[j] < 0.2 {
-                tf.solids[0].eps[i + nx * j] = 0.3;
+    tf.state_mut().update_solids(0, |s| {
+        for j in 0..ny {
+            for i in 0..nx {
+                if grid.y.centres()[j] < 0.2 {
+                    s.eps[i + nx * j] = 0.3;
+                }
+                s.theta[i + nx * j] = 1e-4;
             }
-            tf.solids[0].theta[i + nx * j] = 1e-4;
         }
-    }
-    tf.sync_volume_fractions();
+    });
     let mass0 = tf.solids_mass(0);
     for step in 0..steps {
         tf.begin_step();
@@ -91,7 +92,7 @@ pub fn column(steps: usize, dt: f64, verbose: bool) -> anyhow::Result<(TwoFluid,
             }
         }
         if verbose && step % 50 == 0 {
-            let max_eps = tf.solids[0].eps.iter().cloned().fold(0.0, f64::max);
+            let max_eps = tf.solids(0).eps().iter().cloned().fold(0.0, f64::max);
             eprintln!(
                 "step {step}: {last:?} max eps {max_eps:.4} mass rel change {:.3e}",
                 tf.solids_mass(0) / mass0 - 1.0
