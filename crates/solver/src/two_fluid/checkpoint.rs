@@ -13,14 +13,15 @@
 //!   wall cells use the last wall-face velocity;
 //! - the θ-row classes and their change counts, and h_w^u at the floor probe.
 //!
-//! Work arrays that every step rewrites before reading (stencils, face data, the
-//! array-of-structs closure records, the strain records) are left out; the restart test
+//! Work arrays that every step rewrites before reading (stencils, face data, the strain
+//! rates) are left out; the restart test
 //! (`crates/run/tests/restart.rs`) shows the set is complete: a run restarted from a
 //! checkpoint repeats the uninterrupted run bit for bit.
 
 use runout_walls::RobinFace;
 
-use super::{ClosureCycle, TwoFluid};
+use super::dilute::ClosureCycle;
+use super::TwoFluid;
 use crate::momentum::WallFaces;
 use crate::state::{SolverState, StateError};
 use runout_mesh::Side;
@@ -38,53 +39,58 @@ impl TwoFluid {
         st.put("d_u", &self.d_u);
         st.put("d_v", &self.d_v);
         st.put("p_corr", &self.p_corr);
-        for (m, (s, p)) in self.solids.iter().zip(self.state.phases()).enumerate() {
+        let solids = self
+            .work
+            .iter()
+            .zip(&self.coefficients)
+            .zip(&self.wall_closures);
+        for (m, (((wk, c), w), p)) in solids.zip(self.state.phases()).enumerate() {
             let name = |field: &str| format!("solids[{m}].{field}");
             for (field, values) in [
                 ("eps", p.eps()),
                 ("u", &p.u),
                 ("v", &p.v),
                 ("theta", &p.theta),
-                ("p_s", &s.p_s),
-                ("p_star", &s.p_star),
-                ("mu", &s.mu),
-                ("lambda", &s.lambda),
-                ("kappa", &s.kappa),
-                ("k_cp", &s.k_cp),
-                ("f_gs", &s.f_gs),
-                ("p_kin_over_theta", &s.p_kin_over_theta),
-                ("mu_kin", &s.mu_kin),
-                ("lambda_kin", &s.lambda_kin),
-                ("gamma_over_theta", &s.gamma_over_theta),
-                ("j_slip", &s.j_slip),
-                ("tau_u", &s.tau_u),
-                ("tau_v", &s.tau_v),
-                ("tr_d", &s.tr_d),
-                ("tr_d2", &s.tr_d2),
-                ("e_u", &s.e_u),
-                ("e_v", &s.e_v),
-                ("eps_prime", &s.eps_prime),
-                ("floor_h_u", &s.floor_h_u),
+                ("p_s", &c.p_s),
+                ("p_star", &c.p_star),
+                ("mu", &c.mu),
+                ("lambda", &c.lambda),
+                ("kappa", &c.kappa),
+                ("k_cp", &c.k_cp),
+                ("f_gs", &c.f_gs),
+                ("p_kin_over_theta", &c.p_kin_over_theta),
+                ("mu_kin", &c.mu_kin),
+                ("lambda_kin", &c.lambda_kin),
+                ("gamma_over_theta", &c.gamma_over_theta),
+                ("j_slip", &c.j_slip),
+                ("tau_u", &c.tau_u),
+                ("tau_v", &c.tau_v),
+                ("tr_d", &c.tr_d),
+                ("tr_d2", &c.tr_d2),
+                ("e_u", &wk.e_u),
+                ("e_v", &wk.e_v),
+                ("eps_prime", &wk.eps_prime),
+                ("floor_h_u", &w.floor_h_u),
             ] {
                 st.put(name(field), values);
             }
-            st.put_counts(name("dilute_u"), s.dilute_u.iter().map(|&b| b as u8));
-            st.put_counts(name("dilute_v"), s.dilute_v.iter().map(|&b| b as u8));
-            st.put_counts(name("theta_dense"), s.theta_dense.iter().map(|&b| b as u8));
+            st.put_counts(name("dilute_u"), wk.dilute_u.iter().map(|&b| b as u8));
+            st.put_counts(name("dilute_v"), wk.dilute_v.iter().map(|&b| b as u8));
+            st.put_counts(name("theta_dense"), wk.theta_dense.iter().map(|&b| b as u8));
             st.put_counts(
                 name("theta_class_changes"),
-                s.theta_class_changes.iter().copied(),
+                wk.theta_class_changes.iter().copied(),
             );
             for side in Side::ALL {
                 let tag = |what: &str| name(&format!("{what}.{side:?}"));
-                st.put(tag("wall_face_velocity"), s.wall_face_velocity.get(side));
+                st.put(tag("wall_face_velocity"), w.wall_face_velocity.get(side));
                 put_faces(
                     &mut st,
                     &tag("wall_velocity"),
-                    wall_side(&s.wall_velocity, side),
+                    wall_side(&w.wall_velocity, side),
                 );
-                put_faces(&mut st, &tag("wall_theta"), wall_side(&s.wall_theta, side));
-                let cycle = s.wall_velocity_cycle.get(side);
+                put_faces(&mut st, &tag("wall_theta"), wall_side(&w.wall_theta, side));
+                let cycle = w.wall_velocity_cycle.get(side);
                 st.put(
                     tag("wall_velocity_cycle"),
                     &cycle.iter().map(|c| c.last_change).collect::<Vec<_>>(),
@@ -116,50 +122,51 @@ impl TwoFluid {
             }
             Ok(())
         })?;
-        for (m, s) in self.solids.iter_mut().enumerate() {
+        let solids = self.work.iter_mut().zip(&mut self.coefficients);
+        for (m, ((wk, c), w)) in solids.zip(&mut self.wall_closures).enumerate() {
             let name = |field: &str| format!("solids[{m}].{field}");
             for (field, values) in [
-                ("p_s", &mut s.p_s),
-                ("p_star", &mut s.p_star),
-                ("mu", &mut s.mu),
-                ("lambda", &mut s.lambda),
-                ("kappa", &mut s.kappa),
-                ("k_cp", &mut s.k_cp),
-                ("f_gs", &mut s.f_gs),
-                ("p_kin_over_theta", &mut s.p_kin_over_theta),
-                ("mu_kin", &mut s.mu_kin),
-                ("lambda_kin", &mut s.lambda_kin),
-                ("gamma_over_theta", &mut s.gamma_over_theta),
-                ("j_slip", &mut s.j_slip),
-                ("tau_u", &mut s.tau_u),
-                ("tau_v", &mut s.tau_v),
-                ("tr_d", &mut s.tr_d),
-                ("tr_d2", &mut s.tr_d2),
-                ("e_u", &mut s.e_u),
-                ("e_v", &mut s.e_v),
-                ("eps_prime", &mut s.eps_prime),
-                ("floor_h_u", &mut s.floor_h_u),
+                ("p_s", &mut c.p_s),
+                ("p_star", &mut c.p_star),
+                ("mu", &mut c.mu),
+                ("lambda", &mut c.lambda),
+                ("kappa", &mut c.kappa),
+                ("k_cp", &mut c.k_cp),
+                ("f_gs", &mut c.f_gs),
+                ("p_kin_over_theta", &mut c.p_kin_over_theta),
+                ("mu_kin", &mut c.mu_kin),
+                ("lambda_kin", &mut c.lambda_kin),
+                ("gamma_over_theta", &mut c.gamma_over_theta),
+                ("j_slip", &mut c.j_slip),
+                ("tau_u", &mut c.tau_u),
+                ("tau_v", &mut c.tau_v),
+                ("tr_d", &mut c.tr_d),
+                ("tr_d2", &mut c.tr_d2),
+                ("e_u", &mut wk.e_u),
+                ("e_v", &mut wk.e_v),
+                ("eps_prime", &mut wk.eps_prime),
+                ("floor_h_u", &mut w.floor_h_u),
             ] {
                 st.take(&name(field), values)?;
             }
-            load_flags(st, &name("dilute_u"), &mut s.dilute_u)?;
-            load_flags(st, &name("dilute_v"), &mut s.dilute_v)?;
-            load_flags(st, &name("theta_dense"), &mut s.theta_dense)?;
-            let n = s.theta_class_changes.len();
-            s.theta_class_changes
+            load_flags(st, &name("dilute_u"), &mut wk.dilute_u)?;
+            load_flags(st, &name("dilute_v"), &mut wk.dilute_v)?;
+            load_flags(st, &name("theta_dense"), &mut wk.theta_dense)?;
+            let n = wk.theta_class_changes.len();
+            wk.theta_class_changes
                 .copy_from_slice(st.take_counts(&name("theta_class_changes"), n)?);
             for side in Side::ALL {
                 let tag = |what: &str| name(&format!("{what}.{side:?}"));
                 st.take(
                     &tag("wall_face_velocity"),
-                    s.wall_face_velocity.get_mut(side),
+                    w.wall_face_velocity.get_mut(side),
                 )?;
-                *wall_side_mut(&mut s.wall_velocity, side) = take_faces(st, &tag("wall_velocity"))?;
-                *wall_side_mut(&mut s.wall_theta, side) = take_faces(st, &tag("wall_theta"))?;
+                *wall_side_mut(&mut w.wall_velocity, side) = take_faces(st, &tag("wall_velocity"))?;
+                *wall_side_mut(&mut w.wall_theta, side) = take_faces(st, &tag("wall_theta"))?;
                 let changes = find_len(st, &tag("wall_velocity_cycle"))?;
                 let mut last = vec![0.0; changes];
                 st.take(&tag("wall_velocity_cycle"), &mut last)?;
-                *s.wall_velocity_cycle.get_mut(side) = last
+                *w.wall_velocity_cycle.get_mut(side) = last
                     .into_iter()
                     .map(|last_change| ClosureCycle {
                         last_change,

@@ -11,8 +11,10 @@ use runout_closures::{evaluate, CellState, ClosureParams};
 use runout_mesh::Grid;
 
 use super::walls::wall_face_velocities;
-use super::{PhaseState, SolidsFields, SolidsSpec, State, PAR_MIN_CELLS, THETA_SMALL};
-use crate::kinematics::{strain_rates, WallVelocities};
+use super::{
+    PhaseCoefficients, PhaseState, PhaseWallClosures, SolidsSpec, State, PAR_MIN_CELLS, THETA_SMALL,
+};
+use crate::kinematics::{strain_rates, Strain, WallVelocities};
 
 /// The closure values one cell contributes to the solver (docs/model.md §2), all zero where
 /// εs = 0.
@@ -65,63 +67,74 @@ impl CellClosures {
     }
 }
 
-/// Step 1: the closures of every solids phase at the current iterate (module doc), with the
-/// gas velocities `u_g`, `v_g`; returns how many cells were evaluated (those with solids,
-/// summed over the phases).
+/// Step 1: the closures of every solids phase at the current iterate (module doc), written
+/// in place into `coefficients`, with the wall face velocities of `walls`; returns how many
+/// cells were evaluated (those with solids, summed over the phases).
 pub(super) fn update_closures(
     grid: &Grid,
     state: &State,
-    solids: &mut [SolidsFields],
+    walls: &mut [PhaseWallClosures],
+    coefficients: &mut [PhaseCoefficients],
     specs: &[SolidsSpec],
 ) -> u64 {
     let mut evaluated = 0;
     let gas = state.gas();
-    for ((s, phase), spec) in solids.iter_mut().zip(state.phases()).zip(specs) {
-        wall_strain_rates(grid, spec, phase, s);
-        evaluate_cells(grid, (&gas.u, &gas.v), phase, s, &spec.params);
-        scatter(s);
+    let phases = state
+        .phases()
+        .iter()
+        .zip(walls)
+        .zip(coefficients.iter_mut());
+    for (((phase, w), c), spec) in phases.zip(specs) {
+        wall_strain_rates(grid, spec, phase, w, &mut c.strain);
+        evaluate_cells(grid, (&gas.u, &gas.v), phase, c, &spec.params);
+        c.keep_strain_traces();
         evaluated += phase.eps().iter().filter(|&&e| e != 0.0).count() as u64;
     }
     evaluated
 }
 
 /// The strain rates of every cell, those of the wall cells with the wall face velocities.
-fn wall_strain_rates(grid: &Grid, spec: &SolidsSpec, phase: &PhaseState, s: &mut SolidsFields) {
-    let on_wall = wall_face_velocities(grid, spec, phase, s);
+fn wall_strain_rates(
+    grid: &Grid,
+    spec: &SolidsSpec,
+    phase: &PhaseState,
+    w: &mut PhaseWallClosures,
+    strain: &mut [Strain],
+) {
+    let on_wall = wall_face_velocities(grid, spec, phase, w);
     let walls = WallVelocities {
-        south: on_wall.south.then_some(&s.wall_face_velocity.south[..]),
-        north: on_wall.north.then_some(&s.wall_face_velocity.north[..]),
-        west: on_wall.west.then_some(&s.wall_face_velocity.west[..]),
-        east: on_wall.east.then_some(&s.wall_face_velocity.east[..]),
+        south: on_wall.south.then_some(&w.wall_face_velocity.south[..]),
+        north: on_wall.north.then_some(&w.wall_face_velocity.north[..]),
+        west: on_wall.west.then_some(&w.wall_face_velocity.west[..]),
+        east: on_wall.east.then_some(&w.wall_face_velocity.east[..]),
     };
-    strain_rates(grid, &phase.u, &phase.v, &walls, &mut s.strain);
+    strain_rates(grid, &phase.u, &phase.v, &walls, strain);
 }
 
-/// The closure records of every cell of one phase (`s.cells`), rows in parallel (rayon).
+/// The closure values of every cell of one phase, written in place, rows in parallel
+/// (rayon).
 fn evaluate_cells(
     grid: &Grid,
     (u_g, v_g): (&[f64], &[f64]),
     phase: &PhaseState,
-    s: &mut SolidsFields,
+    c: &mut PhaseCoefficients,
     params: &ClosureParams,
 ) {
     let nx = grid.nx();
     let (u, v, eps, theta) = (&phase.u, &phase.v, phase.eps(), &phase.theta);
-    let strain = &s.strain;
+    let (strain, rows) = c.closure_rows(nx);
     // tasks of at least PAR_MIN_CELLS cells: a small grid runs as one task
     let rows_per_task = PAR_MIN_CELLS.div_ceil(nx);
-    s.cells
-        .par_chunks_mut(nx)
-        .with_min_len(rows_per_task)
+    rows.with_min_len(rows_per_task)
         .enumerate()
-        .for_each(|(j, row)| {
-            for (i, out) in row.iter_mut().enumerate() {
+        .for_each(|(j, mut row)| {
+            for i in 0..nx {
                 let k = i + nx * j;
                 if eps[k] == 0.0 {
                     // no solids: every closure value the solver reads is zero
                     // (runout-closures gives exactly that at εs = 0; checked by
                     // the test `closures_vanish_without_solids`)
-                    *out = CellClosures::default();
+                    row.put(i, &CellClosures::default());
                     continue;
                 }
                 // |u_g − u_s| from cell-centred averages of the face velocities (§2.6)
@@ -130,37 +143,14 @@ fn evaluate_cells(
                         + (u_g[i + 1 + (nx + 1) * j] - u[i + 1 + (nx + 1) * j]));
                 let dv = 0.5 * ((v_g[k] - v[k]) + (v_g[k + nx] - v[k + nx]));
                 let st = strain[k];
-                *out = CellClosures::evaluate(
-                    &CellState {
-                        eps_s: eps[k],
-                        theta: theta[k].max(THETA_SMALL),
-                        slip: (du * du + dv * dv).sqrt(),
-                        tr_d: st.tr_d,
-                        s_ddot_s: st.s_ddot_s,
-                    },
-                    params,
-                );
+                let state = CellState {
+                    eps_s: eps[k],
+                    theta: theta[k].max(THETA_SMALL),
+                    slip: (du * du + dv * dv).sqrt(),
+                    tr_d: st.tr_d,
+                    s_ddot_s: st.s_ddot_s,
+                };
+                row.put(i, &CellClosures::evaluate(&state, params));
             }
         });
-}
-
-/// The closure records scattered into the field arrays the assemblies read.
-fn scatter(s: &mut SolidsFields) {
-    for k in 0..s.cells.len() {
-        let c = s.cells[k];
-        s.p_s[k] = c.p_s;
-        s.p_star[k] = c.p_star; // P* from the current εs (docs/model.md §2.4.1)
-        s.mu[k] = c.mu;
-        s.lambda[k] = c.lambda;
-        s.kappa[k] = c.kappa;
-        s.k_cp[k] = c.k_cp;
-        s.f_gs[k] = c.f_gs;
-        s.p_kin_over_theta[k] = c.p_kin_over_theta;
-        s.mu_kin[k] = c.mu_kin;
-        s.lambda_kin[k] = c.lambda_kin;
-        s.gamma_over_theta[k] = c.gamma_over_theta;
-        s.j_slip[k] = c.j_slip;
-        s.tr_d[k] = s.strain[k].tr_d;
-        s.tr_d2[k] = s.strain[k].tr_d2;
-    }
 }

@@ -179,7 +179,7 @@ impl TwoFluid {
                 cell(k)
             ));
         }
-        for (m, s) in self.solids.iter().enumerate() {
+        for (m, s) in self.work.iter().enumerate() {
             let (r, k) = largest(&s.imbalance);
             if r > 0.0 {
                 out.push(format!(

@@ -22,7 +22,8 @@ impl TwoFluid {
         let n = self.eps_g().len() as f64;
         let mut total = 0.0;
         self.state.try_update_all_solids(|m, p| {
-            let (s, spec) = (&mut self.solids[m], &self.solids_specs[m]);
+            let (s, coef) = (&mut self.work[m], &mut self.coefficients[m]);
+            let spec = &self.solids_specs[m];
             let inputs = CorrectionInputs {
                 density: spec.params.particles.density,
                 eps: &*p.eps,
@@ -31,7 +32,7 @@ impl TwoFluid {
                 v: &*p.v,
                 e_u: &s.e_u,
                 e_v: &s.e_v,
-                k_cp: &s.k_cp,
+                k_cp: &coef.k_cp,
                 dt,
                 scheme: self.settings.scheme,
                 periodic_x: self.settings.periodic_x,
@@ -60,14 +61,14 @@ impl TwoFluid {
                 &mut *p.v,
                 &s.e_u,
                 &s.e_v,
-                &s.k_cp,
+                &coef.k_cp,
             );
             // P* from the corrected εs (Schaeffer only, docs/model.md §4.9 step 5)
             if spec.params.friction_model.has_plastic_pressure() {
-                for (ps, &e) in s.p_star.iter_mut().zip(p.eps.iter()) {
+                for (ps, &e) in coef.p_star.iter_mut().zip(p.eps.iter()) {
                     *ps = p_star(e, &spec.params.friction);
                 }
-                self.counters.plastic_pressure_cells += s.p_star.len() as u64;
+                self.counters.plastic_pressure_cells += coef.p_star.len() as u64;
             }
             Ok(())
         })?;
@@ -87,7 +88,8 @@ impl TwoFluid {
     /// cell that would go below zero (clipped, reported by tracing).
     pub(super) fn conservative_finish(&mut self, dt: f64) {
         self.state.update_all_solids(|m, p| {
-            let (s, spec) = (&mut self.solids[m], &self.solids_specs[m]);
+            let (s, coef) = (&mut self.work[m], &mut self.coefficients[m]);
+            let spec = &self.solids_specs[m];
             let density = spec.params.particles.density;
             let inputs = CorrectionInputs {
                 density,
@@ -97,7 +99,7 @@ impl TwoFluid {
                 v: &*p.v,
                 e_u: &s.e_u,
                 e_v: &s.e_v,
-                k_cp: &s.k_cp,
+                k_cp: &coef.k_cp,
                 dt,
                 scheme: self.settings.scheme,
                 periodic_x: self.settings.periodic_x,

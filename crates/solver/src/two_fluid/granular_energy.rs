@@ -18,7 +18,7 @@ use runout_linsolve::Stencil5;
 use super::diagnostics::since;
 use super::dilute::{dilute_cell_row, next_dilute_class};
 use super::sidewalls::add_theta_flux;
-use super::{lin, SolidsFields, TwoFluid, TwoFluidError, DIL_EP_S, THETA_SMALL};
+use super::{lin, PhaseWork, TwoFluid, TwoFluidError, DIL_EP_S, THETA_SMALL};
 use crate::energy::{assemble_theta, EnergyInputs};
 use crate::momentum::{fixed_row, neighbour_sum};
 
@@ -33,25 +33,27 @@ impl TwoFluid {
         let mut residual = 0.0;
         let (gas, phases) = self.state.gas_and_phases_mut();
         let eps_g = gas.eps();
-        for ((s, p), spec) in self.solids.iter_mut().zip(phases).zip(&self.solids_specs) {
+        let solids = self.work.iter_mut().zip(phases).zip(&self.coefficients);
+        let solids = solids.zip(&self.wall_closures).zip(&self.solids_specs);
+        for ((((s, p), coef), w), spec) in solids {
             let inputs = EnergyInputs {
                 bulk_density: p.bulk_density(),
                 bulk_density_old: &p.old().rho_eps,
-                conductivity: &s.kappa,
-                p_kin_over_theta: &s.p_kin_over_theta,
-                mu_kin: &s.mu_kin,
-                lambda_kin: &s.lambda_kin,
-                dissipation_over_theta: &s.gamma_over_theta,
-                drag: &s.f_gs,
-                slip_production: &s.j_slip,
-                tr_d: &s.tr_d,
-                tr_d2: &s.tr_d2,
+                conductivity: &coef.kappa,
+                p_kin_over_theta: &coef.p_kin_over_theta,
+                mu_kin: &coef.mu_kin,
+                lambda_kin: &coef.lambda_kin,
+                dissipation_over_theta: &coef.gamma_over_theta,
+                drag: &coef.f_gs,
+                slip_production: &coef.j_slip,
+                tr_d: &coef.tr_d,
+                tr_d2: &coef.tr_d2,
             };
             assemble_theta(
                 &self.grid,
                 &inputs,
                 &spec.theta_walls,
-                Some(&s.wall_theta),
+                Some(&w.wall_theta),
                 &p.u,
                 &p.v,
                 &p.old().theta,
@@ -62,7 +64,7 @@ impl TwoFluid {
                 &mut s.a_theta,
             );
             if self.sidewalls.is_some() {
-                add_theta_flux(&self.grid, s); // docs/model.md §8
+                add_theta_flux(&self.grid, &coef.sidewall, &mut s.a_theta); // docs/model.md §8
             }
             classify_rows(p.eps(), s, freeze);
             // θ = θ_small where εg < εg* if the friction model pins it (docs/model.md §1.3)
@@ -98,7 +100,7 @@ impl TwoFluid {
 
 /// The class of each θ row: MFIX's εs > DIL_EP_S, unless `freeze` (a cycling cell keeps
 /// the class [`next_dilute_class`] gives it).
-fn classify_rows(eps: &[f64], s: &mut SolidsFields, freeze: bool) {
+fn classify_rows(eps: &[f64], s: &mut PhaseWork, freeze: bool) {
     for k in 0..eps.len() {
         let dense_now = eps[k] > DIL_EP_S;
         if freeze {

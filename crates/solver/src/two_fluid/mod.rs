@@ -25,6 +25,10 @@
 //! faces and cells (§2.7, §4.8, [`dilute`]); u and v written once through a staggered
 //! [`component`] view; time and residual locations in [`diagnostics`].
 //!
+//! What the solver holds: the fields ([`state`], keeping εg = 1 − Σεs), the closure values
+//! per cell and phase as a struct of arrays ([`coefficients`]), the wall closures between
+//! outer iterations ([`wall_closures`]) and the per-phase work storage ([`workspace`]).
+//!
 //! Schaeffer friction (docs/model.md §2.4.1): the plastic pressure P* = A (εg* − εg)^10 is kept
 //! per cell apart from P_s ([`TwoFluid::p_star`]) and enters only the solids momentum, as
 //! its own gradient −∇P* (§4.4); K_cp = dP*/dεs (§2.5); P* is recomputed from the corrected εs
@@ -40,6 +44,7 @@ use std::time::Instant;
 
 mod checkpoint;
 mod closures;
+mod coefficients;
 mod component;
 mod diagnostics;
 mod dilute;
@@ -52,7 +57,9 @@ mod scene;
 mod setup;
 mod sidewalls;
 mod state;
+mod wall_closures;
 mod walls;
+mod workspace;
 
 pub use closures::CellClosures;
 pub use diagnostics::{Counters, LinearIterations, Profile};
@@ -66,14 +73,14 @@ use runout_linsolve::{LinSolveError, LinearSolver, Stencil5};
 use runout_mesh::{Grid, Side, Sides};
 use runout_walls::{RobinFace, SolidsWallModel};
 
-use crate::kinematics::Strain;
-use crate::momentum::WallFaces;
 use crate::single_phase::{Fluid, SideBc};
 use crate::transport::{FaceData, Scheme};
+use coefficients::PhaseCoefficients;
 use diagnostics::{since, Worst};
-use dilute::ClosureCycle;
 use residuals::Convergence;
+use wall_closures::PhaseWallClosures;
 use walls::{GasNearWalls, WallRelaxation};
+use workspace::PhaseWork;
 
 /// Smallest normaliser of the gas continuity residual, as a fraction of the gas mass a mean
 /// cell holds per time step (ρ_g V/Δt): with the 1e-3 tolerance a step converges at the
@@ -189,65 +196,6 @@ impl Default for TwoFluidSettings {
     }
 }
 
-/// Closure values and work storage of one solids phase (its fields are in [`State`]).
-#[derive(Clone, Debug)]
-pub(crate) struct SolidsFields {
-    /// solids pressure P_s = P_kin + P_fric per cell [Pa]
-    pub p_s: Vec<f64>,
-    /// Schaeffer plastic pressure P* per cell [Pa] (docs/model.md §2.4.1), all 0 with other
-    /// friction models; in the solids momentum only, as −∇P* (§4.4)
-    pub p_star: Vec<f64>,
-    mu: Vec<f64>,
-    lambda: Vec<f64>,
-    kappa: Vec<f64>,
-    k_cp: Vec<f64>,
-    f_gs: Vec<f64>,
-    p_kin_over_theta: Vec<f64>,
-    mu_kin: Vec<f64>,
-    lambda_kin: Vec<f64>,
-    gamma_over_theta: Vec<f64>,
-    j_slip: Vec<f64>,
-    strain: Vec<Strain>,
-    /// dilute u and v faces of the current momentum assembly (docs/model.md §2.7)
-    dilute_u: Vec<bool>,
-    dilute_v: Vec<bool>,
-    /// closure values per cell (the parallel evaluation's output)
-    cells: Vec<CellClosures>,
-    /// tangential velocity on the wall faces of the south/north rows (per column) and the
-    /// west/east columns (per row), from the wall closures (docs/model.md §3.2): what MFIX's
-    /// ghost cells put into the strain rates of the wall cells (§4.4)
-    wall_face_velocity: Sides<Vec<f64>>,
-    /// explicit stress sources of the u and v equations, once per step (docs/model.md §4.4)
-    tau_u: Vec<f64>,
-    tau_v: Vec<f64>,
-    tr_d: Vec<f64>,
-    tr_d2: Vec<f64>,
-    e_u: Vec<f64>,
-    e_v: Vec<f64>,
-    eps_prime: Vec<f64>,
-    imbalance: Vec<f64>,
-    a_u: Stencil5,
-    a_v: Stencil5,
-    a_eps: Stencil5,
-    a_theta: Stencil5,
-    /// per-node momentum closures of the state-dependent walls
-    wall_velocity: WallFaces,
-    /// per node of each side, the cycle watch of its momentum closure (for
-    /// [`TwoFluidSettings::relax_wall_closures_oscillating_only`]; empty until used)
-    wall_velocity_cycle: Sides<Vec<ClosureCycle>>,
-    /// per-cell θ closures of the state-dependent walls
-    wall_theta: WallFaces,
-    /// the class of each cell's θ row at the last outer iteration (true: dense, a θ
-    /// equation; false: dilute, the mean of its dense neighbours; docs/model.md §4.8), and how
-    /// often it changed within the step ([`TwoFluidSettings::freeze_cycling_dilute_class`])
-    theta_dense: Vec<bool>,
-    theta_class_changes: Vec<u8>,
-    /// h_w^u of the last floor evaluation per u-node (the wall probe of paper Fig. 9)
-    pub floor_h_u: Vec<f64>,
-    /// the side walls' terms per cell (docs/model.md §8; all zero without side walls)
-    sidewall: Vec<SidewallTerms>,
-}
-
 /// Largest number of solids phases (the per-node partial-elimination work arrays are fixed
 /// size, so the momentum loop allocates nothing).
 pub const MAX_SOLIDS_PHASES: usize = 7;
@@ -288,8 +236,12 @@ pub struct TwoFluid {
     settings: TwoFluidSettings,
     /// the fields of the gas and every solids phase
     state: State,
-    /// closure values and work storage per solids phase
-    solids: Vec<SolidsFields>,
+    /// closure values, strain rates and explicit sources per solids phase, per cell
+    coefficients: Vec<PhaseCoefficients>,
+    /// the wall closures per solids phase
+    wall_closures: Vec<PhaseWallClosures>,
+    /// work storage per solids phase
+    work: Vec<PhaseWork>,
     mu_g: Vec<f64>,
     d_u: Vec<f64>,
     d_v: Vec<f64>,
@@ -374,9 +326,9 @@ impl TwoFluid {
         self.rebuild_preconditioners = true;
         self.theta_class_fresh = true;
         self.state.begin_step();
-        for s in &mut self.solids {
+        for w in &mut self.wall_closures {
             for side in Side::ALL {
-                for node in s.wall_velocity_cycle.get_mut(side) {
+                for node in w.wall_velocity_cycle.get_mut(side) {
                     node.cycling = false;
                 }
             }
@@ -431,25 +383,25 @@ impl TwoFluid {
 
     /// Solids pressure P_s = P_kin + P_fric of phase `m` per cell [Pa].
     pub fn p_s(&self, m: usize) -> &[f64] {
-        &self.solids[m].p_s
+        &self.coefficients[m].p_s
     }
 
     /// Schaeffer plastic pressure P* of phase `m` per cell [Pa] (docs/model.md §2.4.1), all 0
     /// with other friction models.
     pub fn p_star(&self, m: usize) -> &[f64] {
-        &self.solids[m].p_star
+        &self.coefficients[m].p_star
     }
 
     /// The gas–solids drag coefficient F_gs of phase `m` per cell of the last closure
     /// evaluation [kg m⁻³ s⁻¹].
     pub fn drag(&self, m: usize) -> &[f64] {
-        &self.solids[m].f_gs
+        &self.coefficients[m].f_gs
     }
 
     /// h_w^u of phase `m` at the last floor evaluation per u-node (the wall probe of paper
     /// Fig. 9; see [`TwoFluid::has_floor_model`]).
     pub fn floor_h_u(&self, m: usize) -> &[f64] {
-        &self.solids[m].floor_h_u
+        &self.wall_closures[m].floor_h_u
     }
 
     /// Material density ρ_s of phase m [kg m⁻³].
@@ -485,7 +437,7 @@ impl TwoFluid {
                 &self.grid,
                 sidewalls,
                 &self.state,
-                &mut self.solids,
+                &mut self.coefficients,
                 &self.solids_specs,
             );
         }
@@ -520,7 +472,8 @@ impl TwoFluid {
         self.counters.cell_closures += closures::update_closures(
             &self.grid,
             &self.state,
-            &mut self.solids,
+            &mut self.wall_closures,
+            &mut self.coefficients,
             &self.solids_specs,
         );
     }
@@ -542,7 +495,7 @@ impl TwoFluid {
             gas,
             relax,
             &self.state,
-            &mut self.solids,
+            &mut self.wall_closures,
             &self.solids_specs,
         );
         for side in Side::ALL {

@@ -26,7 +26,8 @@ use super::dilute::{dilute_faces, dilute_row};
 use super::residuals::CoupledNode;
 use super::sidewalls::add_momentum_sinks;
 use super::{
-    lin, PhaseState, SolidsFields, SolidsSpec, TwoFluid, TwoFluidError, MAX_SOLIDS_PHASES,
+    lin, PhaseCoefficients, PhaseState, PhaseWallClosures, PhaseWork, SolidsSpec, TwoFluid,
+    TwoFluidError, MAX_SOLIDS_PHASES,
 };
 use crate::momentum::{assemble_u, assemble_v, fixed_row, neighbour_sum, Context, PhaseFields};
 use crate::pea::eliminate_node;
@@ -55,17 +56,22 @@ impl TwoFluid {
             if let Some(sidewalls) = &self.sidewalls {
                 // docs/model.md §8: the side walls' sinks join the rows before the elimination
                 let gas_drag = sidewalls.gas_drag(self.gas.viscosity);
-                add_momentum_sinks(&self.grid, c, (&mut *gas.a, gas_drag), &mut self.solids);
+                let solids = (&self.coefficients[..], &mut self.work[..]);
+                add_momentum_sinks(&self.grid, c, (&mut *gas.a, gas_drag), solids);
             }
             residual += eliminate_drag(
                 &self.grid,
                 c,
                 self.settings.relax_velocity,
                 &mut gas,
-                (self.state.phases(), &mut self.solids),
+                SolidsParts {
+                    phases: self.state.phases(),
+                    coefficients: &self.coefficients,
+                    work: &mut self.work,
+                },
                 &mut self.worst.momentum,
             );
-            fix_wall_rows(c, &self.gas_inflow, &mut gas, &mut self.solids);
+            fix_wall_rows(c, &self.gas_inflow, &mut gas, &mut self.work);
         }
         let t = Instant::now();
         self.profile.iterations.momentum += self.solve_momentum()? as u64;
@@ -134,7 +140,12 @@ impl TwoFluid {
             components,
             fixed,
             faces,
-            (self.state.phases(), &mut self.solids),
+            SolidsParts {
+                phases: self.state.phases(),
+                coefficients: &self.coefficients,
+                work: &mut self.work,
+            },
+            &self.wall_closures,
             &self.solids_specs,
         );
     }
@@ -153,7 +164,7 @@ impl TwoFluid {
             .setup_and_solve(&self.a_vg, &mut gas.v)
             .map_err(lin("gas v momentum"))?
             .iterations;
-        for (s, p) in self.solids.iter().zip(self.state.phases_mut()) {
+        for (s, p) in self.work.iter().zip(self.state.phases_mut()) {
             iterations += self
                 .solver_u
                 .setup_and_solve(&s.a_u, &mut p.u)
@@ -184,7 +195,7 @@ impl TwoFluid {
     pub(super) fn update_stress_sources(&mut self) {
         let fixed_u = self.a_ug.pattern().fixed_mask();
         let fixed_v = self.a_vg.pattern().fixed_mask();
-        for (s, p) in self.solids.iter_mut().zip(self.state.phases()) {
+        for (s, p) in self.coefficients.iter_mut().zip(self.state.phases()) {
             crate::stress::explicit_stress(
                 &self.grid,
                 &p.u,
@@ -208,38 +219,45 @@ fn assemble_solids(
     [cu, cv]: [Component; 2],
     fixed: [&[bool]; 2],
     [u_faces, v_faces]: [&mut FaceData; 2],
-    (phases, solids): (&[PhaseState], &mut [SolidsFields]),
+    parts: SolidsParts<'_>,
+    walls: &[PhaseWallClosures],
     specs: &[SolidsSpec],
 ) {
-    for ((s, p), spec) in solids.iter_mut().zip(phases).zip(specs) {
+    let SolidsParts {
+        phases,
+        coefficients,
+        work,
+    } = parts;
+    let solids = work.iter_mut().zip(phases).zip(coefficients).zip(walls);
+    for ((((s, p), coef), w), spec) in solids.zip(specs) {
         // dilute faces (interpolated εs ≤ DIL_EP_S, docs/model.md §2.7): their rows are
         // replaced later, so the assembly skips them (most of a slide's domain)
         dilute_faces(ctx_gas.grid, cu, p.eps(), fixed[0], &mut s.dilute_u);
         dilute_faces(ctx_gas.grid, cv, p.eps(), fixed[1], &mut s.dilute_v);
         let ctx = Context {
             bcs: &spec.walls,
-            wall_faces: Some(&s.wall_velocity),
+            wall_faces: Some(&w.wall_velocity),
             ..*ctx_gas
         };
         let fields = PhaseFields {
             bulk_density: p.bulk_density(),
             bulk_density_old: &p.old().rho_eps,
             volume_fraction: p.eps(),
-            viscosity: &s.mu,
-            solids_pressure: Some(&s.p_s),
+            viscosity: &coef.mu,
+            solids_pressure: Some(&coef.p_s),
             // −∇P* only with Schaeffer (docs/model.md §4.4); none with Princeton, where
             // MFIX never computes P* (§2.4.2)
             plastic_pressure: spec
                 .params
                 .friction_model
                 .has_plastic_pressure()
-                .then_some(&s.p_star[..]),
-            explicit_source: Some(&s.tau_u),
+                .then_some(&coef.p_star[..]),
+            explicit_source: Some(&coef.tau_u),
             skip: Some(&s.dilute_u),
         };
         assemble_u(&ctx, &fields, &p.u, &p.v, &p.old().u, u_faces, &mut s.a_u);
         let fields_v = PhaseFields {
-            explicit_source: Some(&s.tau_v),
+            explicit_source: Some(&coef.tau_v),
             skip: Some(&s.dilute_v),
             ..fields
         };
@@ -271,7 +289,17 @@ struct SolidsComponent<'a> {
     eps: &'a [f64],
 }
 
-impl SolidsFields {
+/// The solids phases as the momentum stage reads and writes them.
+struct SolidsParts<'a> {
+    /// the fields of every phase
+    phases: &'a [PhaseState],
+    /// the closure values of every phase
+    coefficients: &'a [PhaseCoefficients],
+    /// the work storage of every phase
+    work: &'a mut [PhaseWork],
+}
+
+impl PhaseWork {
     /// The arrays of component `c` of the phase with fields `p`.
     fn component<'a>(&'a mut self, p: &'a PhaseState, c: Component) -> SolidsComponent<'a> {
         let (a, phi, e) = c.pick(
@@ -295,11 +323,11 @@ fn eliminate_drag(
     c: Component,
     relax: f64,
     gas: &mut GasComponent<'_>,
-    (phases, solids): (&[PhaseState], &mut [SolidsFields]),
+    mut parts: SolidsParts<'_>,
     worst: &mut (f64, usize, usize, usize, usize),
 ) -> f64 {
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
-    let m = solids.len();
+    let m = parts.work.len();
     let (mut num, mut den) = (0.0, 0.0);
     for j in 0..c.my {
         for i in 0..c.mx {
@@ -307,7 +335,7 @@ fn eliminate_drag(
             if gas.a.pattern().fixed_mask()[k] {
                 continue;
             }
-            let node = gather(c, (i, j), dx, dy, gas, (phases, solids));
+            let node = gather(c, (i, j), dx, dy, gas, &parts);
             // momentum residuals of the coupled node (before relaxation, §4.11)
             for p in 0..=m {
                 if p > 0 && node.dilute[p - 1] {
@@ -323,7 +351,7 @@ fn eliminate_drag(
                 }
             }
             let area = c.face_area(i, j, dx, dy);
-            decouple(c, k, area, relax, &node, gas, (phases, solids));
+            decouple(c, k, area, relax, &node, gas, &mut parts);
         }
     }
     if den > 0.0 {
@@ -341,7 +369,7 @@ fn gather(
     dx: &[f64],
     dy: &[f64],
     gas: &GasComponent<'_>,
-    (phases, solids): (&[PhaseState], &[SolidsFields]),
+    parts: &SolidsParts<'_>,
 ) -> CoupledNode {
     let k = i + c.mx * j;
     // the cells beside the node and their half volumes
@@ -358,7 +386,8 @@ fn gather(
     node.r_in[0] = neighbour_sum(gas.a, gas_phi, k);
     node.phi[0] = gas_phi[k];
     node.cross[0] = c.cross_velocity(gas.u, gas.v, c0);
-    for (p, (s, ph)) in solids.iter().zip(phases).enumerate() {
+    let solids = parts.work.iter().zip(parts.phases).zip(parts.coefficients);
+    for (p, ((s, ph), coef)) in solids.enumerate() {
         let (a, phi, dilute) = c.pick((&s.a_u, &ph.u, &s.dilute_u), (&s.a_v, &ph.v, &s.dilute_v));
         // a face whose interpolated εs ≤ DIL_EP_S carries no solids momentum
         // (MFIX `source_u_s.f`, docs/model.md §2.7): its velocity is set by its row
@@ -375,7 +404,7 @@ fn gather(
         node.drag[p] = if dilute {
             0.0
         } else {
-            c0.map_or(0.0, |c| s.f_gs[c] * h0) + c1.map_or(0.0, |c| s.f_gs[c] * h1)
+            c0.map_or(0.0, |c| coef.f_gs[c] * h0) + c1.map_or(0.0, |c| coef.f_gs[c] * h1)
         };
     }
     node
@@ -390,8 +419,9 @@ fn decouple(
     relax: f64,
     node: &CoupledNode,
     gas: &mut GasComponent<'_>,
-    (phases, solids): (&[PhaseState], &mut [SolidsFields]),
+    parts: &mut SolidsParts<'_>,
 ) {
+    let (phases, solids) = (parts.phases, &mut *parts.work);
     let m = solids.len();
     let (a_in, r_in, drag) = (&node.a_in, &node.r_in, &node.drag);
     let (c0, c1) = node.cells;
@@ -445,7 +475,7 @@ fn fix_wall_rows(
     c: Component,
     inflow: &Sides<f64>,
     gas: &mut GasComponent<'_>,
-    solids: &mut [SolidsFields],
+    solids: &mut [PhaseWork],
 ) {
     for k in 0..gas.d.len() {
         if gas.a.pattern().fixed_mask()[k] {
@@ -482,7 +512,7 @@ mod tests {
         let pu = Pattern::new(nx + 1, ny).unwrap();
         let pv = Pattern::new(nx, ny + 1).unwrap();
         let pc = Pattern::new(nx, ny).unwrap();
-        let mut solids = vec![SolidsFields::new((nx, ny), &pu, &pv, &pc)];
+        let mut solids = vec![PhaseWork::new((nx, ny), &pu, &pv, &pc)];
         let mut state = super::super::State::new((nx, ny), 1.0, [1.0], 0.0);
         state.update_solids(0, |p| {
             p.eps.copy_from_slice(&[0.4, 0.6]);
@@ -514,7 +544,11 @@ mod tests {
             relax,
             &node,
             &mut gas,
-            (state.phases(), &mut solids),
+            &mut SolidsParts {
+                phases: state.phases(),
+                coefficients: &[PhaseCoefficients::new((nx, ny))],
+                work: &mut solids,
+            },
         );
         let (ag, as_) = (a_gas / relax, a_s / relax);
         let d_expected = area * (0.5 + 0.5 * f / (as_ + f)) / (ag + f * as_ / (as_ + f));

@@ -8,11 +8,9 @@ use runout_mesh::{Grid, Sides};
 
 use super::diagnostics::{Counters, Profile, Worst};
 use super::{
-    lin, CellClosures, Scene, SidewallTerms, SolidsFields, SolidsSpec, State, TwoFluid,
+    lin, PhaseCoefficients, PhaseWallClosures, PhaseWork, Scene, SolidsSpec, State, TwoFluid,
     TwoFluidError, TwoFluidSettings, MAX_SOLIDS_PHASES, PRESSURE_RTOL, THETA_SMALL,
 };
-use crate::kinematics::Strain;
-use crate::momentum::WallFaces;
 use crate::single_phase::{Fluid, SideBc};
 use crate::transport::FaceData;
 
@@ -42,14 +40,16 @@ impl TwoFluid {
         let pc = Pattern::new(nx, ny).map_err(lin("cell pattern"))?;
         let [solver_u, solver_v, solver_p, solver_eps, solver_eps_fallback, solver_theta] =
             linear_solvers([&pu, &pv, &pp, &pc])?;
-        let solids = solids_specs
-            .iter()
-            .map(|_| SolidsFields::new((nx, ny), &pu, &pv, &pc))
-            .collect();
+        let m = solids_specs.len();
+        let coefficients = vec![PhaseCoefficients::new((nx, ny)); m];
+        let wall_closures = vec![PhaseWallClosures::new((nx, ny)); m];
+        let work = vec![PhaseWork::new((nx, ny), &pu, &pv, &pc); m];
         let densities = solids_specs.iter().map(|s| s.params.particles.density);
         Ok(TwoFluid {
             state: State::new((nx, ny), gas.density, densities, THETA_SMALL),
-            solids,
+            coefficients,
+            wall_closures,
+            work,
             mu_g: vec![gas.viscosity; n],
             d_u: vec![0.0; (nx + 1) * ny],
             d_v: vec![0.0; nx * (ny + 1)],
@@ -168,55 +168,4 @@ fn linear_solvers(
         solver_eps_fallback,
         solver_theta,
     ])
-}
-
-impl SolidsFields {
-    /// A phase without solids (εs = 0, at rest, θ = θ_small) on an nx × ny grid with the
-    /// u, v and cell patterns of its equations.
-    pub(super) fn new((nx, ny): (usize, usize), pu: &Pattern, pv: &Pattern, pc: &Pattern) -> Self {
-        let n = nx * ny;
-        SolidsFields {
-            p_s: vec![0.0; n],
-            p_star: vec![0.0; n],
-            mu: vec![0.0; n],
-            lambda: vec![0.0; n],
-            kappa: vec![0.0; n],
-            k_cp: vec![0.0; n],
-            f_gs: vec![0.0; n],
-            p_kin_over_theta: vec![0.0; n],
-            mu_kin: vec![0.0; n],
-            lambda_kin: vec![0.0; n],
-            gamma_over_theta: vec![0.0; n],
-            j_slip: vec![0.0; n],
-            strain: vec![Strain::default(); n],
-            cells: vec![CellClosures::default(); n],
-            dilute_u: vec![false; (nx + 1) * ny],
-            dilute_v: vec![false; nx * (ny + 1)],
-            wall_face_velocity: Sides {
-                west: vec![0.0; ny],
-                east: vec![0.0; ny],
-                south: vec![0.0; nx],
-                north: vec![0.0; nx],
-            },
-            tau_u: vec![0.0; (nx + 1) * ny],
-            tau_v: vec![0.0; nx * (ny + 1)],
-            tr_d: vec![0.0; n],
-            tr_d2: vec![0.0; n],
-            e_u: vec![0.0; (nx + 1) * ny],
-            e_v: vec![0.0; nx * (ny + 1)],
-            eps_prime: vec![0.0; n],
-            imbalance: vec![0.0; n],
-            a_u: Stencil5::new(pu.clone()),
-            a_v: Stencil5::new(pv.clone()),
-            a_eps: Stencil5::new(pc.clone()),
-            a_theta: Stencil5::new(pc.clone()),
-            wall_velocity: WallFaces::default(),
-            wall_velocity_cycle: Sides::all(Vec::new()),
-            wall_theta: WallFaces::default(),
-            theta_dense: vec![false; n],
-            theta_class_changes: vec![0; n],
-            floor_h_u: vec![0.0; nx + 1],
-            sidewall: vec![SidewallTerms::default(); n],
-        }
-    }
 }

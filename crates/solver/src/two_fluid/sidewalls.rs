@@ -23,7 +23,7 @@ use runout_mesh::Grid;
 use runout_walls::{MomentumBranch, MomentumWallState, SolidsWallModel, ThetaWallState};
 
 use super::component::Component;
-use super::{SolidsFields, SolidsSpec, State};
+use super::{PhaseCoefficients, PhaseWork, SolidsSpec, State};
 
 /// Largest K [Pa s m⁻¹]: Jenkins' COL = tan δ_w P_k/|u_s| overflows as |u_s| → 0; far below
 /// this bound a cell's velocity is already zero to rounding.
@@ -156,12 +156,12 @@ pub(super) fn update_sidewalls(
     grid: &Grid,
     sidewalls: &Sidewalls,
     state: &State,
-    solids: &mut [SolidsFields],
+    coefficients: &mut [PhaseCoefficients],
     specs: &[SolidsSpec],
 ) {
     let nx = grid.nx();
     let (u_g, v_g) = (&state.gas().u, &state.gas().v);
-    for ((s, p), spec) in solids.iter_mut().zip(state.phases()).zip(specs) {
+    for ((s, p), spec) in coefficients.iter_mut().zip(state.phases()).zip(specs) {
         let eps = p.eps();
         for k in 0..eps.len() {
             if eps[k] == 0.0 {
@@ -195,7 +195,7 @@ pub(super) fn add_momentum_sinks(
     grid: &Grid,
     c: Component,
     (gas_rows, gas_drag): (&mut runout_linsolve::Stencil5, f64),
-    solids: &mut [SolidsFields],
+    (coefficients, work): (&[PhaseCoefficients], &mut [PhaseWork]),
 ) {
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
     for j in 0..c.my {
@@ -211,8 +211,8 @@ pub(super) fn add_momentum_sinks(
             let (lo, hi) = (half(lo), half(hi));
             let volume = lo.map_or(0.0, |x| x.1) + hi.map_or(0.0, |x| x.1);
             gas_rows.a_p[k] += gas_drag * volume;
-            for s in solids.iter_mut() {
-                let (dilute, terms) = (c.pick(&s.dilute_u, &s.dilute_v)[k], &s.sidewall);
+            for (s, coef) in work.iter_mut().zip(coefficients) {
+                let (dilute, terms) = (c.pick(&s.dilute_u, &s.dilute_v)[k], &coef.sidewall);
                 if dilute {
                     continue;
                 }
@@ -226,13 +226,17 @@ pub(super) fn add_momentum_sinks(
 
 /// Adds the side walls' θ flux to the assembled θ rows of one phase: (2/W) h_θ V on the
 /// diagonal, (2/W) c_θ V to the source.
-pub(super) fn add_theta_flux(grid: &Grid, s: &mut SolidsFields) {
+pub(super) fn add_theta_flux(
+    grid: &Grid,
+    sidewall: &[SidewallTerms],
+    a_theta: &mut runout_linsolve::Stencil5,
+) {
     let nx = grid.nx();
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
-    for (k, terms) in s.sidewall.iter().enumerate() {
+    for (k, terms) in sidewall.iter().enumerate() {
         let volume = dx[k % nx] * dy[k / nx];
-        s.a_theta.a_p[k] += terms.theta_sink * volume;
-        s.a_theta.b[k] += terms.theta_source * volume;
+        a_theta.a_p[k] += terms.theta_sink * volume;
+        a_theta.b[k] += terms.theta_source * volume;
     }
 }
 

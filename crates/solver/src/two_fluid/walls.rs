@@ -9,7 +9,7 @@ use runout_walls::state::{corner_theta, face_theta};
 use runout_walls::{MomentumWallState, RobinFace, SolidsWallModel, ThetaWallState, WallStrain};
 
 use super::dilute::{relax_face, turns_back, ClosureCycle};
-use super::{PhaseState, SolidsFields, SolidsSpec, State};
+use super::{PhaseState, PhaseWallClosures, SolidsSpec, State};
 use crate::momentum::WallFaces;
 use crate::single_phase::SideBc;
 
@@ -31,7 +31,7 @@ pub(super) fn wall_face_velocities(
     grid: &Grid,
     spec: &SolidsSpec,
     phase: &PhaseState,
-    s: &mut SolidsFields,
+    s: &mut PhaseWallClosures,
 ) -> Sides<bool> {
     let (nx, ny) = (grid.nx(), grid.ny());
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
@@ -134,7 +134,7 @@ pub(super) fn update_walls(
     gas: GasNearWalls<'_>,
     relax: WallRelaxation,
     state: &State,
-    solids: &mut [SolidsFields],
+    solids: &mut [PhaseWallClosures],
     specs: &[SolidsSpec],
 ) -> Sides<u64> {
     let mut evaluated = Sides::<u64>::default();
@@ -322,7 +322,7 @@ fn momentum_closures(
     wall: &WallSide<'_>,
     closures: &SideClosures<'_>,
     relax: WallRelaxation,
-    s: &mut SolidsFields,
+    s: &mut PhaseWallClosures,
     faces: &mut [RobinFace],
     theta_faces: &[RobinFace],
     cycle: &mut [ClosureCycle],
@@ -411,7 +411,7 @@ fn momentum_closures(
 fn theta_closures(
     wall: &WallSide<'_>,
     closures: &SideClosures<'_>,
-    s: &SolidsFields,
+    s: &PhaseWallClosures,
     theta_faces: &mut [RobinFace],
 ) {
     let SideClosures {
