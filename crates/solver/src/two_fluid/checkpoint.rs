@@ -36,11 +36,12 @@ impl TwoFluid {
         st.put("p_g", &g.p);
         st.put("u_g", &g.u);
         st.put("v_g", &g.v);
-        st.put("d_u", &self.d_u);
-        st.put("d_v", &self.d_v);
-        st.put("p_corr", &self.p_corr);
+        st.put("d_u", &self.workspace.d_u);
+        st.put("d_v", &self.workspace.d_v);
+        st.put("p_corr", &self.workspace.p_corr);
         let solids = self
-            .work
+            .workspace
+            .solids
             .iter()
             .zip(&self.coefficients)
             .zip(&self.wall_closures);
@@ -112,9 +113,9 @@ impl TwoFluid {
         st.take("p_g", &mut g.p)?;
         st.take("u_g", &mut g.u)?;
         st.take("v_g", &mut g.v)?;
-        st.take("d_u", &mut self.d_u)?;
-        st.take("d_v", &mut self.d_v)?;
-        st.take("p_corr", &mut self.p_corr)?;
+        st.take("d_u", &mut self.workspace.d_u)?;
+        st.take("d_v", &mut self.workspace.d_v)?;
+        st.take("p_corr", &mut self.workspace.p_corr)?;
         self.state.try_update_all_solids(|m, p| {
             let name = |field: &str| format!("solids[{m}].{field}");
             for (field, values) in [("eps", p.eps), ("u", p.u), ("v", p.v), ("theta", p.theta)] {
@@ -122,7 +123,7 @@ impl TwoFluid {
             }
             Ok(())
         })?;
-        let solids = self.work.iter_mut().zip(&mut self.coefficients);
+        let solids = self.workspace.solids.iter_mut().zip(&mut self.coefficients);
         for (m, ((wk, c), w)) in solids.zip(&mut self.wall_closures).enumerate() {
             let name = |field: &str| format!("solids[{m}].{field}");
             for (field, values) in [

@@ -172,14 +172,14 @@ impl TwoFluid {
                 "momentum: largest residual {r:.3e} in {phase} {comp} at node ({i}, {j}), x = {x:.4} m, y = {y:.4} m"
             ));
         }
-        let (r, k) = largest(&self.imbalance);
+        let (r, k) = largest(&self.workspace.imbalance);
         if r > 0.0 {
             out.push(format!(
                 "gas continuity: largest imbalance {r:.3e} kg/s per m in {}",
                 cell(k)
             ));
         }
-        for (m, s) in self.work.iter().enumerate() {
+        for (m, s) in self.workspace.solids.iter().enumerate() {
             let (r, k) = largest(&s.imbalance);
             if r > 0.0 {
                 out.push(format!(

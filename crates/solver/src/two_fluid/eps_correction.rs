@@ -22,7 +22,7 @@ impl TwoFluid {
         let n = self.eps_g().len() as f64;
         let mut total = 0.0;
         self.state.try_update_all_solids(|m, p| {
-            let (s, coef) = (&mut self.work[m], &mut self.coefficients[m]);
+            let (s, coef) = (&mut self.workspace.solids[m], &mut self.coefficients[m]);
             let spec = &self.solids_specs[m];
             let inputs = CorrectionInputs {
                 density: spec.params.particles.density,
@@ -41,8 +41,8 @@ impl TwoFluid {
             total += s.imbalance.iter().map(|x| x.abs()).sum::<f64>() / n;
             let t = Instant::now();
             let iterations = solve_eps_prime(
-                self.solver_eps.as_mut(),
-                self.solver_eps_fallback.as_mut(),
+                self.workspace.solvers.eps.as_mut(),
+                self.workspace.solvers.eps_fallback.as_mut(),
                 &s.a_eps,
                 &mut s.eps_prime,
             )
@@ -88,7 +88,7 @@ impl TwoFluid {
     /// cell that would go below zero (clipped, reported by tracing).
     pub(super) fn conservative_finish(&mut self, dt: f64) {
         self.state.update_all_solids(|m, p| {
-            let (s, coef) = (&mut self.work[m], &mut self.coefficients[m]);
+            let (s, coef) = (&mut self.workspace.solids[m], &mut self.coefficients[m]);
             let spec = &self.solids_specs[m];
             let density = spec.params.particles.density;
             let inputs = CorrectionInputs {

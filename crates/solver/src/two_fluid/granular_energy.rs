@@ -29,11 +29,17 @@ impl TwoFluid {
         let mut worst_theta = (0.0, 0);
         let relax = self.settings.relax_theta;
         let nx = self.grid.nx();
-        let freeze = self.settings.freeze_cycling_dilute_class && !self.theta_class_fresh;
+        let freeze =
+            self.settings.freeze_cycling_dilute_class && !self.workspace.flags.theta_class_fresh;
         let mut residual = 0.0;
         let (gas, phases) = self.state.gas_and_phases_mut();
         let eps_g = gas.eps();
-        let solids = self.work.iter_mut().zip(phases).zip(&self.coefficients);
+        let solids = self
+            .workspace
+            .solids
+            .iter_mut()
+            .zip(phases)
+            .zip(&self.coefficients);
         let solids = solids.zip(&self.wall_closures).zip(&self.solids_specs);
         for ((((s, p), coef), w), spec) in solids {
             let inputs = EnergyInputs {
@@ -60,7 +66,7 @@ impl TwoFluid {
                 dt,
                 self.settings.scheme,
                 &p.theta,
-                &mut self.c_faces,
+                &mut self.workspace.c_faces,
                 &mut s.a_theta,
             );
             if self.sidewalls.is_some() {
@@ -83,7 +89,9 @@ impl TwoFluid {
             residual += rows.finish(&mut s.a_theta, &mut worst_theta);
             let t = Instant::now();
             self.profile.iterations.theta += self
-                .solver_theta
+                .workspace
+                .solvers
+                .theta
                 .setup_and_solve(&s.a_theta, &mut p.theta)
                 .map_err(lin("granular energy"))?
                 .iterations as u64;
@@ -92,7 +100,7 @@ impl TwoFluid {
             self.profile.theta_assembly -= solve;
             p.theta.iter_mut().for_each(|t| *t = t.max(THETA_SMALL));
         }
-        self.theta_class_fresh = false;
+        self.workspace.flags.theta_class_fresh = false;
         self.worst.theta = worst_theta;
         Ok(residual)
     }

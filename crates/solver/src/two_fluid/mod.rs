@@ -74,13 +74,13 @@ use runout_mesh::{Grid, Side, Sides};
 use runout_walls::{RobinFace, SolidsWallModel};
 
 use crate::single_phase::{Fluid, SideBc};
-use crate::transport::{FaceData, Scheme};
+use crate::transport::Scheme;
 use coefficients::PhaseCoefficients;
 use diagnostics::{since, Worst};
 use residuals::Convergence;
 use wall_closures::PhaseWallClosures;
 use walls::{GasNearWalls, WallRelaxation};
-use workspace::PhaseWork;
+use workspace::{IterationFlags, PhaseWork, Solvers, Workspace};
 
 /// Smallest normaliser of the gas continuity residual, as a fraction of the gas mass a mean
 /// cell holds per time step (ρ_g V/Δt): with the 1e-3 tolerance a step converges at the
@@ -240,36 +240,8 @@ pub struct TwoFluid {
     coefficients: Vec<PhaseCoefficients>,
     /// the wall closures per solids phase
     wall_closures: Vec<PhaseWallClosures>,
-    /// work storage per solids phase
-    work: Vec<PhaseWork>,
-    mu_g: Vec<f64>,
-    d_u: Vec<f64>,
-    d_v: Vec<f64>,
-    p_corr: Vec<f64>,
-    imbalance: Vec<f64>,
-    u_faces: FaceData,
-    v_faces: FaceData,
-    c_faces: FaceData,
-    a_ug: Stencil5,
-    a_vg: Stencil5,
-    a_p: Stencil5,
-    solver_u: Box<dyn LinearSolver>,
-    solver_v: Box<dyn LinearSolver>,
-    solver_p: Box<dyn LinearSolver>,
-    solver_eps: Box<dyn LinearSolver>,
-    /// MFIX's own ε' solver (BiCGSTAB with line relaxation, `LEQ_IT` 20, docs/model.md §4.13),
-    /// used where the multigrid-preconditioned solve breaks down
-    solver_eps_fallback: Box<dyn LinearSolver>,
-    solver_theta: Box<dyn LinearSolver>,
-    pressure_pinned: bool,
-    /// the multigrid preconditioners of the P' and ε' solves are built on the first outer
-    /// iteration of a step and kept for the others ([`LinearSolver::refresh`])
-    rebuild_preconditioners: bool,
-    /// the closures were evaluated at the current iterate (the start of a step) and need
-    /// not be evaluated again by the next outer iteration
-    closures_fresh: bool,
-    /// the next θ solve is the step's first: it classifies every cell afresh
-    theta_class_fresh: bool,
+    /// work arrays, stencils, linear solvers and iteration flags
+    workspace: Workspace,
     /// where the time went
     profile: Profile,
     /// how often each optional piece ran
@@ -323,8 +295,8 @@ impl TwoFluid {
 
     /// Stores the current fields as the old time level.
     pub fn begin_step(&mut self) {
-        self.rebuild_preconditioners = true;
-        self.theta_class_fresh = true;
+        self.workspace.flags.rebuild_preconditioners = true;
+        self.workspace.flags.theta_class_fresh = true;
         self.state.begin_step();
         for w in &mut self.wall_closures {
             for side in Side::ALL {
@@ -423,7 +395,7 @@ impl TwoFluid {
     pub fn outer_iteration(&mut self, dt: f64) -> Result<TwoFluidResiduals, TwoFluidError> {
         // 1. closures at the current iterate (already fresh at a step's first iteration),
         //    then the closures of the state-dependent walls
-        if !std::mem::take(&mut self.closures_fresh) {
+        if !std::mem::take(&mut self.workspace.flags.closures_fresh) {
             let t = Instant::now();
             self.update_closures();
             self.profile.closures += since(t);
@@ -542,7 +514,7 @@ impl TwoFluid {
         let t = Instant::now();
         self.update_stress_sources();
         self.profile.stress += since(t);
-        self.closures_fresh = true;
+        self.workspace.flags.closures_fresh = true;
         let mut convergence = Convergence::new();
         let mut out = TwoFluidStep {
             iterations: 0,

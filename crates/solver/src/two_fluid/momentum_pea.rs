@@ -42,8 +42,8 @@ impl TwoFluid {
         let mut residual = 0.0;
         for c in Component::both(nx, ny, self.settings.periodic_x) {
             let (a, d) = c.pick(
-                (&mut self.a_ug, &mut self.d_u),
-                (&mut self.a_vg, &mut self.d_v),
+                (&mut self.workspace.a_ug, &mut self.workspace.d_u),
+                (&mut self.workspace.a_vg, &mut self.workspace.d_v),
             );
             let g = self.state.gas();
             let mut gas = GasComponent {
@@ -56,7 +56,7 @@ impl TwoFluid {
             if let Some(sidewalls) = &self.sidewalls {
                 // docs/model.md §8: the side walls' sinks join the rows before the elimination
                 let gas_drag = sidewalls.gas_drag(self.gas.viscosity);
-                let solids = (&self.coefficients[..], &mut self.work[..]);
+                let solids = (&self.coefficients[..], &mut self.workspace.solids[..]);
                 add_momentum_sinks(&self.grid, c, (&mut *gas.a, gas_drag), solids);
             }
             residual += eliminate_drag(
@@ -67,11 +67,11 @@ impl TwoFluid {
                 SolidsParts {
                     phases: self.state.phases(),
                     coefficients: &self.coefficients,
-                    work: &mut self.work,
+                    work: &mut self.workspace.solids,
                 },
                 &mut self.worst.momentum,
             );
-            fix_wall_rows(c, &self.gas_inflow, &mut gas, &mut self.work);
+            fix_wall_rows(c, &self.gas_inflow, &mut gas, &mut self.workspace.solids);
         }
         let t = Instant::now();
         self.profile.iterations.momentum += self.solve_momentum()? as u64;
@@ -101,7 +101,7 @@ impl TwoFluid {
             bulk_density: g.bulk_density(),
             bulk_density_old: &g.old().rho_eps,
             volume_fraction: g.eps(),
-            viscosity: &self.mu_g,
+            viscosity: &self.workspace.mu_g,
             solids_pressure: None,
             plastic_pressure: None,
             // the gas's own cross terms are left out: with uniform μ_g they reduce to
@@ -116,8 +116,8 @@ impl TwoFluid {
             u_g,
             v_g,
             &g.old().u,
-            &mut self.u_faces,
-            &mut self.a_ug,
+            &mut self.workspace.u_faces,
+            &mut self.workspace.a_ug,
         );
         assemble_v(
             &ctx_gas,
@@ -125,16 +125,16 @@ impl TwoFluid {
             u_g,
             v_g,
             &g.old().v,
-            &mut self.v_faces,
-            &mut self.a_vg,
+            &mut self.workspace.v_faces,
+            &mut self.workspace.a_vg,
         );
         let (nx, ny) = (grid.nx(), grid.ny());
         let components = Component::both(nx, ny, self.settings.periodic_x);
         let fixed = [
-            self.a_ug.pattern().fixed_mask(),
-            self.a_vg.pattern().fixed_mask(),
+            self.workspace.a_ug.pattern().fixed_mask(),
+            self.workspace.a_vg.pattern().fixed_mask(),
         ];
-        let faces = [&mut self.u_faces, &mut self.v_faces];
+        let faces = [&mut self.workspace.u_faces, &mut self.workspace.v_faces];
         assemble_solids(
             &ctx_gas,
             components,
@@ -143,7 +143,7 @@ impl TwoFluid {
             SolidsParts {
                 phases: self.state.phases(),
                 coefficients: &self.coefficients,
-                work: &mut self.work,
+                work: &mut self.workspace.solids,
             },
             &self.wall_closures,
             &self.solids_specs,
@@ -155,23 +155,31 @@ impl TwoFluid {
         let mut iterations = 0;
         let gas = self.state.gas_mut();
         iterations += self
-            .solver_u
-            .setup_and_solve(&self.a_ug, &mut gas.u)
+            .workspace
+            .solvers
+            .u
+            .setup_and_solve(&self.workspace.a_ug, &mut gas.u)
             .map_err(lin("gas u momentum"))?
             .iterations;
         iterations += self
-            .solver_v
-            .setup_and_solve(&self.a_vg, &mut gas.v)
+            .workspace
+            .solvers
+            .v
+            .setup_and_solve(&self.workspace.a_vg, &mut gas.v)
             .map_err(lin("gas v momentum"))?
             .iterations;
-        for (s, p) in self.work.iter().zip(self.state.phases_mut()) {
+        for (s, p) in self.workspace.solids.iter().zip(self.state.phases_mut()) {
             iterations += self
-                .solver_u
+                .workspace
+                .solvers
+                .u
                 .setup_and_solve(&s.a_u, &mut p.u)
                 .map_err(lin("solids u momentum"))?
                 .iterations;
             iterations += self
-                .solver_v
+                .workspace
+                .solvers
+                .v
                 .setup_and_solve(&s.a_v, &mut p.v)
                 .map_err(lin("solids v momentum"))?
                 .iterations;
@@ -193,8 +201,8 @@ impl TwoFluid {
     /// The explicit stress sources of every solids phase from the current velocities and
     /// closures (docs/model.md §4.4: once per step, at its start).
     pub(super) fn update_stress_sources(&mut self) {
-        let fixed_u = self.a_ug.pattern().fixed_mask();
-        let fixed_v = self.a_vg.pattern().fixed_mask();
+        let fixed_u = self.workspace.a_ug.pattern().fixed_mask();
+        let fixed_v = self.workspace.a_vg.pattern().fixed_mask();
         for (s, p) in self.coefficients.iter_mut().zip(self.state.phases()) {
             crate::stress::explicit_stress(
                 &self.grid,

@@ -29,40 +29,46 @@ impl TwoFluid {
             eps_old: &g.old().eps,
             u: &g.u,
             v: &g.v,
-            d_u: &self.d_u,
-            d_v: &self.d_v,
+            d_u: &self.workspace.d_u,
+            d_v: &self.workspace.d_v,
             inflow: &self.gas_inflow,
             scheme: self.settings.scheme,
-            pinned: self.pressure_pinned,
+            pinned: self.workspace.flags.pressure_pinned,
         };
-        let total = assemble(&self.grid, &gas, dt, &mut self.imbalance, &mut self.a_p);
-        self.p_corr.iter_mut().for_each(|x| *x = 0.0);
+        let total = assemble(
+            &self.grid,
+            &gas,
+            dt,
+            &mut self.workspace.imbalance,
+            &mut self.workspace.a_p,
+        );
+        self.workspace.p_corr.iter_mut().for_each(|x| *x = 0.0);
         let t = Instant::now();
         self.profile.iterations.pressure += solve_keeping_preconditioner(
-            self.solver_p.as_mut(),
-            &self.a_p,
-            &mut self.p_corr,
-            self.rebuild_preconditioners,
+            self.workspace.solvers.p.as_mut(),
+            &self.workspace.a_p,
+            &mut self.workspace.p_corr,
+            self.workspace.flags.rebuild_preconditioners,
         )
         .map_err(lin("gas pressure correction"))?
             as u64;
         // both multigrid hierarchies of this step are built (ε' is solved first)
-        self.rebuild_preconditioners = false;
+        self.workspace.flags.rebuild_preconditioners = false;
         let solve = since(t);
         self.profile.pressure_solve += solve;
         self.profile.pressure_assembly -= solve;
         let g = self.state.gas_mut();
         correct_velocities(
             (nx, ny),
-            &self.p_corr,
-            &self.d_u,
-            &self.d_v,
+            &self.workspace.p_corr,
+            &self.workspace.d_u,
+            &self.workspace.d_v,
             &mut g.u,
             &mut g.v,
         );
         let w = self.settings.relax_pressure;
         g.p.iter_mut()
-            .zip(&self.p_corr)
+            .zip(&self.workspace.p_corr)
             .for_each(|(p, c)| *p += w * c);
         Ok(total / (nx * ny) as f64)
     }

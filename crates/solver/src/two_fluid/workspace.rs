@@ -1,8 +1,70 @@
-//! Work storage of one solids phase, allocated once and rewritten by every outer iteration:
-//! the matrices of its equations, the corrections' coefficients (e_s of docs/model.md §4.7,
-//! ε'), its mass imbalance, the dilute faces (§2.7) and the θ-row classes (§4.8).
+//! Work storage, allocated once and rewritten by every outer iteration: the matrices of
+//! the equations, the corrections' coefficients (d_g of docs/model.md §4.6, e_s of §4.7, P',
+//! ε'), the mass imbalances, the face data of the convection scheme (§4.2), the dilute faces
+//! (§2.7) and the θ-row classes (§4.8) per solids phase; the linear solvers (§4.13); and the
+//! flags of the outer iteration.
 
-use runout_linsolve::{Pattern, Stencil5};
+use runout_linsolve::{LinearSolver, Pattern, Stencil5};
+
+use crate::transport::FaceData;
+
+/// The work storage of the solver (module doc).
+pub(crate) struct Workspace {
+    /// gas viscosity per cell [Pa s]
+    pub mu_g: Vec<f64>,
+    /// d_g of the u and v nodes (docs/model.md §4.6)
+    pub d_u: Vec<f64>,
+    pub d_v: Vec<f64>,
+    /// P' of the last gas pressure correction
+    pub p_corr: Vec<f64>,
+    /// gas mass imbalance per cell before the pressure correction
+    pub imbalance: Vec<f64>,
+    /// face data of the u, v and cell equations' convection (docs/model.md §4.2)
+    pub u_faces: FaceData,
+    pub v_faces: FaceData,
+    pub c_faces: FaceData,
+    /// the gas u, v and P' equations
+    pub a_ug: Stencil5,
+    pub a_vg: Stencil5,
+    pub a_p: Stencil5,
+    /// work storage per solids phase
+    pub solids: Vec<PhaseWork>,
+    /// the linear solvers
+    pub solvers: Solvers,
+    /// the flags of the outer iteration
+    pub flags: IterationFlags,
+}
+
+/// The linear solvers of the equations (docs/model.md §4.13).
+pub(crate) struct Solvers {
+    /// momentum u and v (every phase)
+    pub u: Box<dyn LinearSolver>,
+    pub v: Box<dyn LinearSolver>,
+    /// gas pressure correction
+    pub p: Box<dyn LinearSolver>,
+    /// solids volume-fraction correction
+    pub eps: Box<dyn LinearSolver>,
+    /// MFIX's own ε' solver (BiCGSTAB with line relaxation, `LEQ_IT` 20, docs/model.md §4.13),
+    /// used where the multigrid-preconditioned solve breaks down
+    pub eps_fallback: Box<dyn LinearSolver>,
+    /// granular energy
+    pub theta: Box<dyn LinearSolver>,
+}
+
+/// The flags of the outer iteration.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct IterationFlags {
+    /// P' is pinned at cell 0 (no side is open)
+    pub pressure_pinned: bool,
+    /// the multigrid preconditioners of the P' and ε' solves are built on the first outer
+    /// iteration of a step and kept for the others ([`LinearSolver::refresh`])
+    pub rebuild_preconditioners: bool,
+    /// the closures were evaluated at the current iterate (the start of a step) and need
+    /// not be evaluated again by the next outer iteration
+    pub closures_fresh: bool,
+    /// the next θ solve is the step's first: it classifies every cell afresh
+    pub theta_class_fresh: bool,
+}
 
 /// Work storage of one solids phase (module doc).
 #[derive(Clone, Debug)]
