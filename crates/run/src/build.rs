@@ -193,8 +193,8 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
     if let Some(max) = case.models.friction.max_solids_phases() {
         if case.solids.len() > max {
             return Err(unsupported(format!(
-                "{:?} friction with more than {max} solids phase(s) is not implemented",
-                case.models.friction
+                "{} friction with more than {max} solids phase(s) is not implemented",
+                case.models.friction.name()
             )));
         }
     }

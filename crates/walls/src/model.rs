@@ -20,7 +20,6 @@ use crate::face::RobinFace;
 use crate::specularity::LiBenyahia;
 use crate::state::{wall_theta, MomentumWallState, ThetaWallState, WALL_S_DDOT_S_FLOOR};
 use runout_closures::drag::{dga_wall_wen_yu, DragInputs};
-use runout_closures::friction::princeton;
 use runout_closures::guards::DIL_EP_S;
 use runout_closures::kinetic::{lun_1984, GasCoupling, KineticStress, SolidsState};
 use runout_closures::ClosureParams;
@@ -461,7 +460,8 @@ fn kinetic_momentum(
     };
     let h = if frictional_branch {
         if state.eps_s > eps_s_min {
-            let stress = princeton(
+            // the Princeton stress: only Princeton has wall friction
+            let stress = params.friction_model.stress(
                 state.eps_s,
                 theta,
                 params.particles.diameter,

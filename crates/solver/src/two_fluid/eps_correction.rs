@@ -7,7 +7,6 @@
 
 use std::time::Instant;
 
-use runout_closures::friction::p_star;
 use runout_linsolve::{LinSolveError, LinearSolver, Stencil5};
 
 use super::diagnostics::since;
@@ -62,9 +61,9 @@ impl TwoFluid {
                 &s.k_cp,
             );
             // P* from the corrected εs (Schaeffer only, docs/model.md §4.9 step 5)
-            if spec.params.friction_model.has_plastic_pressure() {
+            if let Some(star) = spec.params.friction_model.plastic_pressure() {
                 for (p, &e) in s.p_star.iter_mut().zip(&s.eps) {
-                    *p = p_star(e, &spec.params.friction);
+                    *p = star.p_star(e, &spec.params.friction);
                 }
                 self.counters.plastic_pressure_cells += s.p_star.len() as u64;
             }
