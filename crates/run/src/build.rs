@@ -327,7 +327,6 @@ fn two_fluid_settings(case: &Case) -> TwoFluidSettings {
             == runout_case::WallRelaxationScope::Oscillating,
         freeze_cycling_dilute_class: case.numerics.dilute_cells
             == runout_case::DiluteCellClass::FrozenWhenCycling,
-        periodic_x: false,
         exact_solids_continuity: case.numerics.exact_solids_mass,
         detect_stall: case.run.tolerances.detect_stall,
     }

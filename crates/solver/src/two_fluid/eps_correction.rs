@@ -32,7 +32,6 @@ impl TwoFluid {
                 k_cp: &s.k_cp,
                 dt,
                 scheme: self.settings.scheme,
-                periodic_x: self.settings.periodic_x,
             };
             assemble_correction(&self.grid, &inputs, &mut s.imbalance, &mut s.a_eps);
             total += s.imbalance.iter().map(|x| x.abs()).sum::<f64>() / n;
@@ -97,7 +96,6 @@ impl TwoFluid {
                 k_cp: &s.k_cp,
                 dt,
                 scheme: self.settings.scheme,
-                periodic_x: self.settings.periodic_x,
             };
             mass_imbalance(&self.grid, &inputs, &mut s.imbalance);
             let nx = self.grid.nx();

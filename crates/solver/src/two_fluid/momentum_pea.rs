@@ -37,7 +37,7 @@ impl TwoFluid {
         self.assemble_momentum(dt);
         let (nx, ny) = (self.grid.nx(), self.grid.ny());
         let mut residual = 0.0;
-        for c in Component::both(nx, ny, self.settings.periodic_x) {
+        for c in Component::both(nx, ny, self.grid.periodic_x()) {
             let (a, d) = c.pick(
                 (&mut self.a_ug, &mut self.d_u),
                 (&mut self.a_vg, &mut self.d_v),
@@ -85,7 +85,6 @@ impl TwoFluid {
             scheme: self.settings.scheme,
             gas_pressure: &self.p_g,
             wall_faces: None,
-            periodic_x: self.settings.periodic_x,
         };
         let gas_fields = PhaseFields {
             bulk_density: &self.rho_eps_g,
@@ -119,7 +118,7 @@ impl TwoFluid {
             &mut self.a_vg,
         );
         let (nx, ny) = (grid.nx(), grid.ny());
-        let components = Component::both(nx, ny, self.settings.periodic_x);
+        let components = Component::both(nx, ny, self.grid.periodic_x());
         let fixed = [
             self.a_ug.pattern().fixed_mask(),
             self.a_vg.pattern().fixed_mask(),
@@ -160,7 +159,7 @@ impl TwoFluid {
                 .map_err(lin("solids v momentum"))?
                 .iterations;
         }
-        if self.settings.periodic_x {
+        if self.grid.periodic_x() {
             // node nx of a periodic column is node 0 (fixed in the solves)
             let (nx, ny) = (self.grid.nx(), self.grid.ny());
             let mx = nx + 1;

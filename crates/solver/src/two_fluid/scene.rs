@@ -17,7 +17,7 @@
 
 use std::fmt;
 
-use runout_mesh::{Side, Sides};
+use runout_mesh::{Grid, Side, Sides};
 use runout_walls::{SolidsWallModel, Specularity};
 
 use super::{SolidsSpec, TwoFluidSettings};
@@ -127,19 +127,19 @@ impl PhaseScene {
 }
 
 impl Scene {
-    /// The scene of a solver with these phases and settings on `cells`.
+    /// The scene of a solver with these phases and settings on `grid`.
     pub fn of(
-        cells: (usize, usize),
+        grid: &Grid,
         specs: &[SolidsSpec],
         settings: &TwoFluidSettings,
         sidewall_width: Option<f64>,
     ) -> Scene {
         Scene {
-            cells,
+            cells: (grid.nx(), grid.ny()),
             phases: specs.iter().map(PhaseScene::of).collect(),
             scheme: format!("{:?}", settings.scheme),
             sidewalls: sidewall_width,
-            periodic_x: settings.periodic_x,
+            periodic_x: grid.periodic_x(),
             exact_solids_continuity: settings.exact_solids_continuity,
         }
     }
