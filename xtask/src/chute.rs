@@ -36,7 +36,7 @@ pub fn verify(root: &Path) -> Result<Outcome> {
          solids (mean εs 0.575); the paper's material (d = 0.5 mm, ρs = 2000 kg m⁻³, e = 0.9, \
          Princeton friction φ = 35°, εs,max = 0.65, εs,min = 0.5); Johnson–Jackson floor \
          φ' = 0.1, e_w = 0.7, δ_w = 11°; free-slip lid with zero θ flux; 80 uniform cells.\n\n\
-         - **2-D:** `TwoFluid` on one periodic column (`TwoFluidSettings::periodic_x`, MFIX's \
+         - **2-D:** `TwoFluid` on one periodic column (a periodic x axis, `Axis::periodic`, MFIX's \
          `CYCLIC_X` on one cell), started from uniform εs, u = 0.3 m/s, θ = 1e-3 m²/s², \
          marched with implicit Euler (MFIX's outer iteration, tolerance 1e-3) until the \
          largest relative rate of change of εs, u_s and θ is below 1e-4 s⁻¹.\n\

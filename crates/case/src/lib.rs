@@ -16,6 +16,7 @@ mod load;
 mod name;
 mod read;
 mod ron_error;
+mod run_control;
 mod schema;
 mod sidewalls;
 mod size;
@@ -27,6 +28,7 @@ mod validate_grid;
 pub use checker::FieldError;
 pub use load::{case_files, load, load_case, CaseError, Fidelity, Loaded, SourcedCase};
 pub use name::{is_valid_name, run_dir};
+pub use run_control::*;
 pub use schema::*;
 pub use size::{
     available_memory_bytes, case_size, estimated_memory_bytes, format_bytes, CaseSize,

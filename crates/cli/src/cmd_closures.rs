@@ -200,7 +200,7 @@ mod tests {
         assert_eq!(params.particles, paper.particles);
         assert_eq!(params.gas, paper.gas);
         assert_eq!(params.friction, paper.friction);
-        assert_eq!(params.friction_model, FrictionModel::Princeton);
+        assert_eq!(params.friction_model, FrictionModel::princeton());
         assert_eq!(params.drag, Drag::default());
         assert!(args.validate().is_ok());
     }
@@ -234,7 +234,7 @@ mod tests {
             "ma-ahmadi",
         ]);
         let params = args.params();
-        assert_eq!(params.friction_model, FrictionModel::Schaeffer);
+        assert_eq!(params.friction_model, FrictionModel::schaeffer());
         assert_eq!(params.drag, Drag::GidaspowBlend);
         assert_eq!(params.radial, RadialDistribution::MaAhmadi);
         assert_eq!(choice_name(&args.drag), "gidaspow-blend");

@@ -128,8 +128,8 @@ impl MaterialArgs {
                 RadialChoice::MaAhmadi => RadialDistribution::MaAhmadi,
             },
             friction_model: match self.friction {
-                FrictionChoice::Princeton => FrictionModel::Princeton,
-                FrictionChoice::Schaeffer => FrictionModel::Schaeffer,
+                FrictionChoice::Princeton => FrictionModel::princeton(),
+                FrictionChoice::Schaeffer => FrictionModel::schaeffer(),
                 FrictionChoice::None => FrictionModel::None,
             },
             drag,

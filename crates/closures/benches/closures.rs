@@ -27,7 +27,7 @@ fn full_closure_set(c: &mut Criterion) {
         |b| b.iter(|| evaluate(black_box(&dilute), black_box(&params))),
     );
     let schaeffer = ClosureParams {
-        friction_model: FrictionModel::Schaeffer,
+        friction_model: FrictionModel::schaeffer(),
         ..params
     };
     c.bench_function("closure set, one cell (Schaeffer)", |b| {

@@ -4,7 +4,7 @@
 
 use crate::drag::{dga_single_particle, Drag, DragInputs};
 use crate::energy::{shear_production, slip_production, viscous_damping};
-use crate::friction::{k_cp_from_princeton, FrictionModel, FrictionParams, FrictionalStress};
+use crate::friction::{FrictionModel, FrictionParams, FrictionalStress};
 use crate::guards::DIL_EP_S;
 use crate::kinetic::{lun_1984, GasCoupling, KineticStress, SolidsState};
 use crate::radial::RadialDistribution;
@@ -59,11 +59,11 @@ pub struct ClosureParams {
     pub particles: Particles,
     /// gas properties
     pub gas: Gas,
-    /// εs,max, εs,min, φ and the frictional code constants
+    /// εs,max, εs,min and φ of the frictional closures
     pub friction: FrictionParams,
     /// g0 model (default Carnahan–Starling)
     pub radial: RadialDistribution,
-    /// frictional model (default Princeton, the paper's)
+    /// frictional model with its code constants (default Princeton, the paper's)
     pub friction_model: FrictionModel,
     /// drag law (default Syamlal–O'Brien 0.8/2.65)
     pub drag: Drag,
@@ -176,7 +176,7 @@ pub fn evaluate(state: &CellState, params: &ClosureParams) -> ClosureSet {
     );
     // K_cp (docs/model.md §2.5), reusing the Princeton P_f/P_c just computed
     let k_cp = match params.friction_model {
-        FrictionModel::Princeton => k_cp_from_princeton(eps_s, &friction, &params.friction),
+        FrictionModel::Princeton(c) => c.k_cp_from_stress(eps_s, &friction, &params.friction),
         model => model.k_cp(
             eps_s,
             state.theta,

@@ -30,17 +30,22 @@ pub struct PrincetonConstants {
     pub delta: f64,
 }
 
-impl Default for PrincetonConstants {
+impl PrincetonConstants {
     /// MFIX 21.3.2 `constant_mod.f` (identical in 2016-1): Fr = 0.5 dyn/cm², N_Pc = 2,
     /// D_Pc = 5, N_Pf = 1.03, δ = 0.01 (docs/model.md §2.4.2, §5).
+    pub const MFIX: Self = Self {
+        fr: 0.5 * TO_SI,
+        n_pc: 2.0,
+        d_pc: 5.0,
+        n_pf: 1.03,
+        delta: 0.01,
+    };
+}
+
+impl Default for PrincetonConstants {
+    /// [`PrincetonConstants::MFIX`].
     fn default() -> Self {
-        Self {
-            fr: 0.5 * TO_SI,
-            n_pc: 2.0,
-            d_pc: 5.0,
-            n_pf: 1.03,
-            delta: 0.01,
-        }
+        Self::MFIX
     }
 }
 
@@ -56,19 +61,26 @@ pub struct SchaefferConstants {
     pub mu_max: f64,
 }
 
-impl Default for SchaefferConstants {
+impl SchaefferConstants {
     /// A = 1e25 dyn/cm² (`a_ps`), exponent 10 (`b_ps`), μ_max = 1000 poise (`MAX_MU_s`),
     /// MFIX 21.3.2 (docs/model.md §2.4.1).
+    pub const MFIX: Self = Self {
+        a: 1e25 * TO_SI,
+        exponent: 10,
+        mu_max: 1000.0 * TO_SI,
+    };
+}
+
+impl Default for SchaefferConstants {
+    /// [`SchaefferConstants::MFIX`].
     fn default() -> Self {
-        Self {
-            a: 1e25 * TO_SI,
-            exponent: 10,
-            mu_max: 1000.0 * TO_SI,
-        }
+        Self::MFIX
     }
 }
 
-/// Material and model parameters of the frictional closures (docs/model.md §2.4, §5).
+/// Material parameters of the frictional closures (docs/model.md §2.4, §5), per solids
+/// phase from the case; the models' code constants travel with the model
+/// ([`FrictionModel::Schaeffer`], [`FrictionModel::Princeton`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FrictionParams {
     /// εs,max = 1 − `EP_STAR` [-] (paper: 0.65, "ε_s*")
@@ -77,29 +89,23 @@ pub struct FrictionParams {
     pub eps_s_min: f64,
     /// sin φ of the internal friction angle φ = `PHI` [-] (converted once from degrees)
     pub sin_phi: f64,
-    /// Princeton code constants
-    pub princeton: PrincetonConstants,
-    /// Schaeffer code constants
-    pub schaeffer: SchaefferConstants,
 }
 
 impl FrictionParams {
     /// Parameters from εs,max, εs,min and the internal friction angle φ in degrees
-    /// (style A6.13: degrees in, converted once), with MFIX's code constants.
+    /// (style A6.13: degrees in, converted once).
     pub fn new(eps_s_max: f64, eps_s_min: f64, phi_internal_deg: f64) -> Self {
         Self {
             eps_s_max,
             eps_s_min,
             sin_phi: phi_internal_deg.to_radians().sin(),
-            princeton: PrincetonConstants::default(),
-            schaeffer: SchaefferConstants::default(),
         }
     }
 }
 
 impl Default for FrictionParams {
     /// The paper's sensitivity-analysis values (paper Table 3): εs,max = 0.65, εs,min = 0.5,
-    /// φ = 35°; MFIX code constants (docs/model.md §5).
+    /// φ = 35°.
     fn default() -> Self {
         Self::new(0.65, 0.5, 35.0)
     }
@@ -129,120 +135,56 @@ pub struct FrictionalStress {
 
 // ---------------------------------------------------------------- Schaeffer (§2.4.1)
 
-/// Plastic pressure P* = A (εg* − εg)^10 for εg < εg*, else 0 \[Pa\], with εg = 1 − εs,
-/// εg* = 1 − εs,max, A = 1e24 Pa (paper Eq. 8; docs/model.md §2.4.1; MFIX Neg_H).
-/// Not used with the Princeton model (docs/model.md §3.10.3).
-#[inline]
-pub fn p_star(eps_s: f64, p: &FrictionParams) -> f64 {
-    let excess = ((1.0 - p.eps_s_max) - (1.0 - eps_s)).max(0.0);
-    p.schaeffer.a * excess.powi(p.schaeffer.exponent)
-}
+impl SchaefferConstants {
+    /// Plastic pressure P* = A (εg* − εg)^10 for εg < εg*, else 0 \[Pa\], with εg = 1 − εs,
+    /// εg* = 1 − εs,max, A = 1e24 Pa (paper Eq. 8; docs/model.md §2.4.1; MFIX Neg_H).
+    /// Not used with the Princeton model (docs/model.md §3.10.3).
+    #[inline]
+    pub fn p_star(&self, eps_s: f64, p: &FrictionParams) -> f64 {
+        let excess = ((1.0 - p.eps_s_max) - (1.0 - eps_s)).max(0.0);
+        self.a * excess.powi(self.exponent)
+    }
 
-/// Inverse of [`p_star`]: εg = εg* − (P*/A)^{1/10} [-], used to rebuild εs in packed cells
-/// (docs/model.md §2.4.1; MFIX INV_H). Valid for P* ≥ 0.
-#[inline]
-pub fn eps_g_from_p_star(p_star: f64, p: &FrictionParams) -> f64 {
-    (1.0 - p.eps_s_max) - (p_star / p.schaeffer.a).powf(1.0 / f64::from(p.schaeffer.exponent))
-}
+    /// Inverse of [`SchaefferConstants::p_star`]: εg = εg* − (P*/A)^{1/10} [-], used to
+    /// rebuild εs in packed cells (docs/model.md §2.4.1; MFIX INV_H). Valid for P* ≥ 0.
+    #[inline]
+    pub fn eps_g_from_p_star(&self, p_star: f64, p: &FrictionParams) -> f64 {
+        (1.0 - p.eps_s_max) - (p_star / self.a).powf(1.0 / f64::from(self.exponent))
+    }
 
-/// dP*/dεs = 10 A (εs − εs,max)^9 for εs > εs,max, else 0 \[Pa\] (docs/model.md §2.4.1, §2.5;
-/// MFIX dPodEP_s, written with εg* − εg like P*). K_cp of the Schaeffer model.
-#[inline]
-pub fn dp_star_deps(eps_s: f64, p: &FrictionParams) -> f64 {
-    let excess = ((1.0 - p.eps_s_max) - (1.0 - eps_s)).max(0.0);
-    let exponent = p.schaeffer.exponent;
-    f64::from(exponent) * p.schaeffer.a * excess.powi(exponent - 1)
-}
+    /// dP*/dεs = 10 A (εs − εs,max)^9 for εs > εs,max, else 0 \[Pa\] (docs/model.md §2.4.1,
+    /// §2.5; MFIX dPodEP_s, written with εg* − εg like P*). K_cp of the Schaeffer model.
+    #[inline]
+    pub fn dp_star_deps(&self, eps_s: f64, p: &FrictionParams) -> f64 {
+        let excess = ((1.0 - p.eps_s_max) - (1.0 - eps_s)).max(0.0);
+        let exponent = self.exponent;
+        f64::from(exponent) * self.a * excess.powi(exponent - 1)
+    }
 
-/// Schaeffer viscosity μ = min(P* sin²φ / (√(4 sin²φ I₂D) + 1e-15), μ_max) [Pa s]
-/// (≈ P* sinφ/(2√I₂D); docs/model.md §2.4.1; MFIX FRICTION_SCHAEFFER), μ_max = 100 Pa s.
-/// `i2_dev_d` = I₂D [1/s²], second invariant of the deviatoric strain rate (= S:S/2).
-#[inline]
-pub fn mu_schaeffer(p_star: f64, i2_dev_d: f64, p: &FrictionParams) -> f64 {
-    let sin2_phi = p.sin_phi * p.sin_phi;
-    (p_star * sin2_phi / ((4.0 * sin2_phi * i2_dev_d).sqrt() + SMALL_NUMBER))
-        .min(p.schaeffer.mu_max)
-}
+    /// Schaeffer viscosity μ = min(P* sin²φ / (√(4 sin²φ I₂D) + 1e-15), μ_max) [Pa s]
+    /// (≈ P* sinφ/(2√I₂D); docs/model.md §2.4.1; MFIX FRICTION_SCHAEFFER), μ_max = 100 Pa s.
+    /// `i2_dev_d` = I₂D [1/s²], second invariant of the deviatoric strain rate (= S:S/2).
+    #[inline]
+    pub fn viscosity(&self, p_star: f64, i2_dev_d: f64, p: &FrictionParams) -> f64 {
+        let sin2_phi = p.sin_phi * p.sin_phi;
+        (p_star * sin2_phi / ((4.0 * sin2_phi * i2_dev_d).sqrt() + SMALL_NUMBER)).min(self.mu_max)
+    }
 
-/// Schaeffer model at one state (docs/model.md §2.4.1): P* and μ_Schaeffer with S:S floored at 0 and
-/// I₂D = S:S/2 (I₂D = ½ D':D' and S:S = D':D' for the deviator D' of D), λ = 0, P_fric = 0.
-/// Active only where εg < εg* (P* = 0 elsewhere, so μ = 0).
-#[inline]
-pub fn schaeffer(eps_s: f64, s_ddot_s: f64, p: &FrictionParams) -> FrictionalStress {
-    let p_star = p_star(eps_s, p);
-    FrictionalStress {
-        p_star,
-        mu_fric: mu_schaeffer(p_star, 0.5 * s_ddot_s.max(0.0), p),
-        ..FrictionalStress::default()
+    /// Schaeffer model at one state (docs/model.md §2.4.1): P* and μ_Schaeffer with S:S
+    /// floored at 0 and I₂D = S:S/2 (I₂D = ½ D':D' and S:S = D':D' for the deviator D' of D),
+    /// λ = 0, P_fric = 0. Active only where εg < εg* (P* = 0 elsewhere, so μ = 0).
+    #[inline]
+    pub fn stress(&self, eps_s: f64, s_ddot_s: f64, p: &FrictionParams) -> FrictionalStress {
+        let p_star = self.p_star(eps_s, p);
+        FrictionalStress {
+            p_star,
+            mu_fric: self.viscosity(p_star, 0.5 * s_ddot_s.max(0.0), p),
+            ..FrictionalStress::default()
+        }
     }
 }
 
 // ---------------------------------------------------------------- Princeton (§2.4.2)
-
-/// Linearisation point εs,at = εs,max − δ of P_c (docs/model.md §2.4.2 step 2).
-#[inline]
-fn eps_s_at(p: &FrictionParams) -> f64 {
-    p.eps_s_max - p.princeton.delta
-}
-
-/// dP_c/dεs of the power law, Fr [N_Pc (εs − εs,min)^{N_Pc−1}/(εs,max − εs)^{D_Pc}
-/// + D_Pc (εs − εs,min)^{N_Pc}/(εs,max − εs)^{D_Pc+1}].
-#[inline]
-fn dpc_power_law(eps_s: f64, p: &FrictionParams) -> f64 {
-    let c = &p.princeton;
-    let above_min = eps_s - p.eps_s_min;
-    let below_max = p.eps_s_max - eps_s;
-    c.fr * (c.n_pc * above_min.powf(c.n_pc - 1.0) / below_max.powf(c.d_pc)
-        + c.d_pc * above_min.powf(c.n_pc) / below_max.powf(c.d_pc + 1.0))
-}
-
-/// Slope P_c' = Fr [N_Pc (εs,at − εs,min)^{N_Pc−1}/δ^{D_Pc} + D_Pc (εs,at − εs,min)^{N_Pc}/δ^{D_Pc+1}]
-/// of the linear extrapolation, written with δ as MFIX does (`dpcdep_at`).
-#[inline]
-fn dpc_at(p: &FrictionParams) -> f64 {
-    let c = &p.princeton;
-    let above_min = eps_s_at(p) - p.eps_s_min;
-    c.fr * (c.n_pc * above_min.powf(c.n_pc - 1.0) / c.delta.powf(c.d_pc)
-        + c.d_pc * above_min.powf(c.n_pc) / c.delta.powf(c.d_pc + 1.0))
-}
-
-/// Princeton critical pressure P_c(εs) \[Pa\] (paper Eq. 10 middle branch; docs/model.md §2.4.2
-/// step 2; MFIX FRICTION_PRINCETON):
-/// - εs ≤ εs,min: 0 (friction not evaluated);
-/// - εs ≤ εs,max − δ: P_c = Fr (εs − εs,min)^2/(εs,max − εs)^5;
-/// - above: linear extrapolation P_c = P_c,at + P_c' (εs − εs,at), εs,at = εs,max − δ,
-///   P_c,at = Fr (εs,at − εs,min)²/δ⁵, P_c' = dP_c/dεs at εs,at
-///   (paper values: 9.8e6 Pa and 5.04e9 Pa). No A(εg* − εg)^10 branch (docs/model.md §3.10.3).
-#[inline]
-pub fn critical_pressure(eps_s: f64, p: &FrictionParams) -> f64 {
-    let c = &p.princeton;
-    let at = eps_s_at(p);
-    if eps_s <= p.eps_s_min {
-        0.0
-    } else if eps_s > at {
-        let p_c_at = c.fr * (at - p.eps_s_min).powf(c.n_pc) / c.delta.powf(c.d_pc);
-        p_c_at + dpc_at(p) * (eps_s - at)
-    } else {
-        c.fr * (eps_s - p.eps_s_min).powf(c.n_pc) / (p.eps_s_max - eps_s).powf(c.d_pc)
-    }
-}
-
-/// dP_c/dεs \[Pa\] of [`critical_pressure`] (docs/model.md §2.5; MFIX `calc_k_cp.f`):
-/// Fr [2(εs − εs,min)/(εs,max − εs)^5 + 5(εs − εs,min)²/(εs,max − εs)^6] up to εs,max − δ,
-/// the constant P_c' beyond, 0 at or below εs,min.
-#[inline]
-pub fn dcritical_pressure_deps(eps_s: f64, p: &FrictionParams) -> f64 {
-    let at = eps_s_at(p);
-    if eps_s <= p.eps_s_min {
-        0.0
-    } else {
-        if eps_s > at {
-            dpc_at(p)
-        } else {
-            dpc_power_law(eps_s, p)
-        }
-    }
-}
 
 /// Strain scale ζ = √(θ/d² + S:S) [1/s] (MFIX 21.3.2 SAVAGE = 2, paper Eq. 9; docs/model.md
 /// §2.4.2 step 1), S:S = tr(D²) − (tr D)²/3 ≥ 0 from the cell-centred solids strain rate.
@@ -252,18 +194,6 @@ pub fn dcritical_pressure_deps(eps_s: f64, p: &FrictionParams) -> f64 {
 #[inline]
 pub fn strain_scale(theta: f64, d_p: f64, s_ddot_s: f64) -> f64 {
     (theta.max(THETA_SMALL) / (d_p * d_p) + s_ddot_s.max(0.0)).sqrt()
-}
-
-/// Exponent n [-]: √3/(2 sinφ) if tr D ≥ 0 (dilatation), N_Pf = 1.03 if tr D < 0
-/// (compaction) (docs/model.md §2.4.2 step 3; paper Eq. 10 text says 0 in compaction: MFIX
-/// uses 1.03, docs/model.md §3.10.2). Requires φ < 60° so that n > 1 in dilatation.
-#[inline]
-pub fn princeton_exponent(tr_d: f64, p: &FrictionParams) -> f64 {
-    if tr_d >= 0.0 {
-        3.0_f64.sqrt() / (2.0 * p.sin_phi)
-    } else {
-        p.princeton.n_pf
-    }
 }
 
 /// Uncapped P_f/P_c [-] (paper Eq. 9 with exponent n − 1, docs/model.md §2.4.2 step 4):
@@ -287,110 +217,265 @@ pub fn pf_over_pc_max(n: f64) -> f64 {
     (n / (n - 1.0)).powf(n - 1.0)
 }
 
-/// Princeton frictional stress at one state (paper Eqs. 9–10 as MFIX computes them,
-/// docs/model.md §2.4.2; MFIX FRICTION_PRINCETON with SAVAGE = 2), zero for εs ≤ εs,min:
-/// ζ = √(θ/d² + S:S); P_f = P_c · (P_f/P_c);
-/// m_f = √2 P_f sinφ [n − (n − 1)(P_f/P_c)^{1/(n−1)}]; if P_f/P_c > (n/(n−1))^{n−1} it is set
-/// to that bound and m_f = 0; μ_fric = m_f/(2ζ) [Pa s] (no upper cap),
-/// λ_fric = −(2/3) μ_fric [Pa s], P_fric = P_f \[Pa\]. One solids phase: the polydisperse factor
-/// εs/Σε_cp is 1.
-#[inline]
-pub fn princeton(
-    eps_s: f64,
-    theta: f64,
-    d_p: f64,
-    tr_d: f64,
-    s_ddot_s: f64,
-    p: &FrictionParams,
-) -> FrictionalStress {
-    if eps_s <= p.eps_s_min {
-        return FrictionalStress::default();
+impl PrincetonConstants {
+    /// Linearisation point εs,at = εs,max − δ of P_c (docs/model.md §2.4.2 step 2).
+    #[inline]
+    pub fn eps_s_at(&self, p: &FrictionParams) -> f64 {
+        p.eps_s_max - self.delta
     }
-    let zeta = strain_scale(theta, d_p, s_ddot_s);
-    let p_c = critical_pressure(eps_s, p);
-    let n = princeton_exponent(tr_d, p);
-    let mut ratio = pf_over_pc_uncapped(tr_d, zeta, n, p.sin_phi);
-    let mut p_f = p_c * ratio;
-    let mut m_f = SQRT_2 * p_f * p.sin_phi * (n - (n - 1.0) * ratio.powf(1.0 / (n - 1.0)));
-    let cap = pf_over_pc_max(n);
-    if ratio > cap {
-        ratio = cap;
-        p_f = p_c * cap;
-        m_f = 0.0;
+
+    /// dP_c/dεs of the power law, Fr [N_Pc (εs − εs,min)^{N_Pc−1}/(εs,max − εs)^{D_Pc}
+    /// + D_Pc (εs − εs,min)^{N_Pc}/(εs,max − εs)^{D_Pc+1}].
+    #[inline]
+    fn dpc_power_law(&self, eps_s: f64, p: &FrictionParams) -> f64 {
+        let above_min = eps_s - p.eps_s_min;
+        let below_max = p.eps_s_max - eps_s;
+        self.fr
+            * (self.n_pc * above_min.powf(self.n_pc - 1.0) / below_max.powf(self.d_pc)
+                + self.d_pc * above_min.powf(self.n_pc) / below_max.powf(self.d_pc + 1.0))
     }
-    let mu_fric = m_f / (2.0 * zeta);
-    FrictionalStress {
-        p_fric: p_f,
-        mu_fric,
-        lambda_fric: -2.0 / 3.0 * mu_fric,
-        p_star: 0.0,
-        p_c,
-        pf_over_pc: ratio,
-        zeta,
-        n,
+
+    /// Slope P_c' = Fr [N_Pc (εs,at − εs,min)^{N_Pc−1}/δ^{D_Pc} + D_Pc (εs,at −
+    /// εs,min)^{N_Pc}/δ^{D_Pc+1}] of the linear extrapolation, written with δ as MFIX does
+    /// (`dpcdep_at`).
+    #[inline]
+    fn dpc_at(&self, p: &FrictionParams) -> f64 {
+        let above_min = self.eps_s_at(p) - p.eps_s_min;
+        self.fr
+            * (self.n_pc * above_min.powf(self.n_pc - 1.0) / self.delta.powf(self.d_pc)
+                + self.d_pc * above_min.powf(self.n_pc) / self.delta.powf(self.d_pc + 1.0))
+    }
+
+    /// Princeton critical pressure P_c(εs) \[Pa\] (paper Eq. 10 middle branch; docs/model.md
+    /// §2.4.2 step 2; MFIX FRICTION_PRINCETON):
+    /// - εs ≤ εs,min: 0 (friction not evaluated);
+    /// - εs ≤ εs,max − δ: P_c = Fr (εs − εs,min)^2/(εs,max − εs)^5;
+    /// - above: linear extrapolation P_c = P_c,at + P_c' (εs − εs,at), εs,at = εs,max − δ,
+    ///   P_c,at = Fr (εs,at − εs,min)²/δ⁵, P_c' = dP_c/dεs at εs,at
+    ///   (paper values: 9.8e6 Pa and 5.04e9 Pa). No A(εg* − εg)^10 branch (docs/model.md
+    ///   §3.10.3).
+    #[inline]
+    pub fn critical_pressure(&self, eps_s: f64, p: &FrictionParams) -> f64 {
+        let at = self.eps_s_at(p);
+        if eps_s <= p.eps_s_min {
+            0.0
+        } else if eps_s > at {
+            let p_c_at = self.fr * (at - p.eps_s_min).powf(self.n_pc) / self.delta.powf(self.d_pc);
+            p_c_at + self.dpc_at(p) * (eps_s - at)
+        } else {
+            self.fr * (eps_s - p.eps_s_min).powf(self.n_pc) / (p.eps_s_max - eps_s).powf(self.d_pc)
+        }
+    }
+
+    /// dP_c/dεs \[Pa\] of [`PrincetonConstants::critical_pressure`] (docs/model.md §2.5; MFIX
+    /// `calc_k_cp.f`): Fr [2(εs − εs,min)/(εs,max − εs)^5 + 5(εs − εs,min)²/(εs,max − εs)^6]
+    /// up to εs,max − δ, the constant P_c' beyond, 0 at or below εs,min.
+    #[inline]
+    pub fn dcritical_pressure_deps(&self, eps_s: f64, p: &FrictionParams) -> f64 {
+        let at = self.eps_s_at(p);
+        if eps_s <= p.eps_s_min {
+            0.0
+        } else if eps_s > at {
+            self.dpc_at(p)
+        } else {
+            self.dpc_power_law(eps_s, p)
+        }
+    }
+
+    /// Exponent n [-]: √3/(2 sinφ) if tr D ≥ 0 (dilatation), N_Pf = 1.03 if tr D < 0
+    /// (compaction) (docs/model.md §2.4.2 step 3; paper Eq. 10 text says 0 in compaction:
+    /// MFIX uses 1.03, docs/model.md §3.10.2). Requires φ < 60° so that n > 1 in dilatation.
+    #[inline]
+    pub fn exponent(&self, tr_d: f64, p: &FrictionParams) -> f64 {
+        if tr_d >= 0.0 {
+            3.0_f64.sqrt() / (2.0 * p.sin_phi)
+        } else {
+            self.n_pf
+        }
+    }
+
+    /// Princeton frictional stress at one state (paper Eqs. 9–10 as MFIX computes them,
+    /// docs/model.md §2.4.2; MFIX FRICTION_PRINCETON with SAVAGE = 2), zero for εs ≤ εs,min:
+    /// ζ = √(θ/d² + S:S); P_f = P_c · (P_f/P_c);
+    /// m_f = √2 P_f sinφ [n − (n − 1)(P_f/P_c)^{1/(n−1)}]; if P_f/P_c > (n/(n−1))^{n−1} it is
+    /// set to that bound and m_f = 0; μ_fric = m_f/(2ζ) [Pa s] (no upper cap),
+    /// λ_fric = −(2/3) μ_fric [Pa s], P_fric = P_f \[Pa\]. One solids phase: the polydisperse
+    /// factor εs/Σε_cp is 1.
+    #[inline]
+    pub fn stress(
+        &self,
+        eps_s: f64,
+        theta: f64,
+        d_p: f64,
+        tr_d: f64,
+        s_ddot_s: f64,
+        p: &FrictionParams,
+    ) -> FrictionalStress {
+        if eps_s <= p.eps_s_min {
+            return FrictionalStress::default();
+        }
+        let zeta = strain_scale(theta, d_p, s_ddot_s);
+        let p_c = self.critical_pressure(eps_s, p);
+        let n = self.exponent(tr_d, p);
+        let mut ratio = pf_over_pc_uncapped(tr_d, zeta, n, p.sin_phi);
+        let mut p_f = p_c * ratio;
+        let mut m_f = SQRT_2 * p_f * p.sin_phi * (n - (n - 1.0) * ratio.powf(1.0 / (n - 1.0)));
+        let cap = pf_over_pc_max(n);
+        if ratio > cap {
+            ratio = cap;
+            p_f = p_c * cap;
+            m_f = 0.0;
+        }
+        let mu_fric = m_f / (2.0 * zeta);
+        FrictionalStress {
+            p_fric: p_f,
+            mu_fric,
+            lambda_fric: -2.0 / 3.0 * mu_fric,
+            p_star: 0.0,
+            p_c,
+            pf_over_pc: ratio,
+            zeta,
+            n,
+        }
+    }
+
+    /// K_cp = dP_s/dεs \[Pa\] of the Princeton model (docs/model.md §2.5; MFIX `calc_k_cp.f`,
+    /// SAVAGE = 2): (P_f/P_c) · dP_c/dεs for εs > εs,min, else 0. Kinetic pressure is left
+    /// out (as in MFIX). P_f/P_c as in [`PrincetonConstants::stress`], except that its cap
+    /// always uses N_Pf and is applied only when tr D ≠ 0 and r ≤ 1 (MFIX code detail).
+    #[inline]
+    pub fn k_cp(
+        &self,
+        eps_s: f64,
+        theta: f64,
+        d_p: f64,
+        tr_d: f64,
+        s_ddot_s: f64,
+        p: &FrictionParams,
+    ) -> f64 {
+        if eps_s <= p.eps_s_min {
+            return 0.0;
+        }
+        let zeta = strain_scale(theta, d_p, s_ddot_s);
+        let n = self.exponent(tr_d, p);
+        let mut ratio = pf_over_pc_uncapped(tr_d, zeta, n, p.sin_phi);
+        let general_branch = tr_d != 0.0 && tr_d / (zeta * n * SQRT_2 * p.sin_phi) <= 1.0;
+        if general_branch {
+            ratio = ratio.min(pf_over_pc_max(self.n_pf));
+        }
+        ratio * self.dcritical_pressure_deps(eps_s, p)
+    }
+
+    /// K_cp \[Pa\] from an already evaluated Princeton stress: (P_f/P_c) · dP_c/dεs, with the
+    /// P_f/P_c of [`PrincetonConstants::stress`]. Equal to [`PrincetonConstants::k_cp`]
+    /// (SAVAGE = 2): in compaction n = N_Pf, so both caps coincide, and in dilatation
+    /// P_f/P_c ≤ 1 stays below either cap. Saves the second evaluation of ζ, n and P_f/P_c
+    /// in [`crate::cell::evaluate`].
+    #[inline]
+    pub fn k_cp_from_stress(
+        &self,
+        eps_s: f64,
+        stress: &FrictionalStress,
+        p: &FrictionParams,
+    ) -> f64 {
+        if eps_s <= p.eps_s_min {
+            return 0.0;
+        }
+        stress.pf_over_pc * self.dcritical_pressure_deps(eps_s, p)
     }
 }
 
-/// K_cp = dP_s/dεs \[Pa\] of the Princeton model (docs/model.md §2.5; MFIX `calc_k_cp.f`,
-/// SAVAGE = 2): (P_f/P_c) · dP_c/dεs for εs > εs,min, else 0. Kinetic pressure is left out
-/// (as in MFIX). P_f/P_c as in [`princeton`], except that its cap always uses N_Pf and is
-/// applied only when tr D ≠ 0 and r ≤ 1 (MFIX code detail).
-#[inline]
-pub fn k_cp_princeton(
-    eps_s: f64,
-    theta: f64,
-    d_p: f64,
-    tr_d: f64,
-    s_ddot_s: f64,
-    p: &FrictionParams,
-) -> f64 {
-    if eps_s <= p.eps_s_min {
-        return 0.0;
-    }
-    let zeta = strain_scale(theta, d_p, s_ddot_s);
-    let n = princeton_exponent(tr_d, p);
-    let mut ratio = pf_over_pc_uncapped(tr_d, zeta, n, p.sin_phi);
-    let general_branch = tr_d != 0.0 && tr_d / (zeta * n * SQRT_2 * p.sin_phi) <= 1.0;
-    if general_branch {
-        ratio = ratio.min(pf_over_pc_max(p.princeton.n_pf));
-    }
-    ratio * dcritical_pressure_deps(eps_s, p)
-}
-
-/// K_cp \[Pa\] from an already evaluated Princeton stress: (P_f/P_c) · dP_c/dεs, with the
-/// P_f/P_c of [`princeton`]. Equal to [`k_cp_princeton`] (SAVAGE = 2): in compaction n = N_Pf,
-/// so both caps coincide, and in dilatation P_f/P_c ≤ 1 stays below either cap. Saves the
-/// second evaluation of ζ, n and P_f/P_c in [`crate::cell::evaluate`].
-#[inline]
-pub fn k_cp_from_princeton(eps_s: f64, stress: &FrictionalStress, p: &FrictionParams) -> f64 {
-    if eps_s <= p.eps_s_min {
-        return 0.0;
-    }
-    stress.pf_over_pc * dcritical_pressure_deps(eps_s, p)
-}
-
-/// Choice of frictional model (MFIX `FRICTION_MODEL`, docs/model.md §2.4).
-/// Default: Princeton (`SRIVASTAVA`), the paper's model (MFIX's own default is Schaeffer).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
+/// Choice of frictional model (MFIX `FRICTION_MODEL`, docs/model.md §2.4), each with its
+/// code constants. Default: Princeton (`SRIVASTAVA`), the paper's model (MFIX's own default
+/// is Schaeffer). Case files name the model only ([`FrictionName`]); its constants are
+/// MFIX's.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(from = "FrictionName", into = "FrictionName")]
 pub enum FrictionModel {
     /// `NONE`: kinetic theory only.
     None,
-    /// `SCHAEFFER`: [`schaeffer`], with P* as a separate pressure.
+    /// `SCHAEFFER`: [`SchaefferConstants::stress`], with P* as a separate pressure.
+    Schaeffer(SchaefferConstants),
+    /// `SRIVASTAVA` (Princeton): [`PrincetonConstants::stress`].
+    Princeton(PrincetonConstants),
+}
+
+/// The name of a frictional model as case files write it (`friction: Schaeffer`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub enum FrictionName {
+    /// [`FrictionModel::None`]
+    None,
+    /// [`FrictionModel::Schaeffer`]
     Schaeffer,
-    /// `SRIVASTAVA` (Princeton): [`princeton`].
-    #[default]
+    /// [`FrictionModel::Princeton`]
     Princeton,
 }
 
+impl From<FrictionName> for FrictionModel {
+    /// The named model with MFIX's constants.
+    fn from(name: FrictionName) -> Self {
+        match name {
+            FrictionName::None => Self::None,
+            FrictionName::Schaeffer => Self::schaeffer(),
+            FrictionName::Princeton => Self::princeton(),
+        }
+    }
+}
+
+impl From<FrictionModel> for FrictionName {
+    fn from(model: FrictionModel) -> Self {
+        match model {
+            FrictionModel::None => Self::None,
+            FrictionModel::Schaeffer(_) => Self::Schaeffer,
+            FrictionModel::Princeton(_) => Self::Princeton,
+        }
+    }
+}
+
+impl Default for FrictionModel {
+    /// Princeton with MFIX's constants, the paper's model.
+    fn default() -> Self {
+        Self::princeton()
+    }
+}
+
 impl FrictionModel {
-    /// Whether the model has a plastic pressure P* that enters the solids momentum as its
-    /// own gradient −∇P* and is rebuilt from the corrected εs (Schaeffer: P* = A (εg* − εg)^10,
-    /// paper Eq. 8; docs/model.md §2.4.1, §4.4, §4.9 step 5). Princeton has none: MFIX never
-    /// computes P* with it (§2.4.2).
+    /// Schaeffer with MFIX 21.3.2's constants ([`SchaefferConstants::default`]).
+    pub fn schaeffer() -> Self {
+        Self::Schaeffer(SchaefferConstants::default())
+    }
+
+    /// Princeton with MFIX 21.3.2's constants ([`PrincetonConstants::default`]).
+    pub fn princeton() -> Self {
+        Self::Princeton(PrincetonConstants::default())
+    }
+
+    /// The model's name as case files write it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::None => "None",
+            Self::Schaeffer(_) => "Schaeffer",
+            Self::Princeton(_) => "Princeton",
+        }
+    }
+
+    /// The plastic pressure P* of the model, if it has one: it enters the solids momentum
+    /// as its own gradient −∇P* and is rebuilt from the corrected εs (Schaeffer: P* =
+    /// A (εg* − εg)^10, paper Eq. 8; docs/model.md §2.4.1, §4.4, §4.9 step 5). Princeton
+    /// has none: MFIX never computes P* with it (§2.4.2).
+    #[inline]
+    pub fn plastic_pressure(&self) -> Option<&SchaefferConstants> {
+        match self {
+            Self::Schaeffer(c) => Some(c),
+            Self::None | Self::Princeton(_) => None,
+        }
+    }
+
+    /// Whether the model has a plastic pressure P* ([`FrictionModel::plastic_pressure`]).
     #[inline]
     pub fn has_plastic_pressure(self) -> bool {
-        matches!(self, Self::Schaeffer)
+        self.plastic_pressure().is_some()
     }
 
     /// The gas fraction εg* = 1 − εs,max below which the model holds θ at θ_small (a fixed
@@ -398,7 +483,7 @@ impl FrictionModel {
     /// regime εg < εg* has no granular temperature); `None` if θ is never pinned.
     #[inline]
     pub fn pins_theta_below(self, p: &FrictionParams) -> Option<f64> {
-        matches!(self, Self::Schaeffer).then_some(1.0 - p.eps_s_max)
+        matches!(self, Self::Schaeffer(_)).then_some(1.0 - p.eps_s_max)
     }
 
     /// The most solids phases the model is implemented for (`None`: no limit). Schaeffer's
@@ -407,18 +492,18 @@ impl FrictionModel {
     #[inline]
     pub fn max_solids_phases(self) -> Option<usize> {
         match self {
-            Self::Schaeffer => Some(1),
-            Self::None | Self::Princeton => None,
+            Self::Schaeffer(_) => Some(1),
+            Self::None | Self::Princeton(_) => None,
         }
     }
 
     /// Whether a Johnson–Jackson or Jenkins wall adds the frictional wall stress
     /// FRI = tan δ_w (P_f − 2 μ_f S_nn) and μ_f to its slip coefficient, h_w^u =
     /// (COL + FRI)/(μ_k + μ_f), where the fluid cell's εs > εs,min (Princeton only, as MFIX
-    /// `calc_grbdry.f`: docs/model.md §3.5 step 3).
+    /// `calc_grbdry.f`: docs/model.md §3.5 step 3); the stress is then [`FrictionModel::stress`].
     #[inline]
     pub fn has_wall_friction(self) -> bool {
-        matches!(self, Self::Princeton)
+        matches!(self, Self::Princeton(_))
     }
 
     /// Frictional stresses of the chosen model (docs/model.md §2.4); all zero for `None`.
@@ -434,14 +519,15 @@ impl FrictionModel {
     ) -> FrictionalStress {
         match self {
             Self::None => FrictionalStress::default(),
-            Self::Schaeffer => schaeffer(eps_s, s_ddot_s, p),
-            Self::Princeton => princeton(eps_s, theta, d_p, tr_d, s_ddot_s, p),
+            Self::Schaeffer(c) => c.stress(eps_s, s_ddot_s, p),
+            Self::Princeton(c) => c.stress(eps_s, theta, d_p, tr_d, s_ddot_s, p),
         }
     }
 
     /// K_cp = dP_s/dεs \[Pa\] for the solids volume-fraction correction (docs/model.md §2.5;
-    /// MFIX `calc_k_cp.f`): Princeton [`k_cp_princeton`], Schaeffer [`dp_star_deps`],
-    /// `None` 0 (no close-packed pressure). The solver sets K_cp = 0 in wall cells.
+    /// MFIX `calc_k_cp.f`): Princeton [`PrincetonConstants::k_cp`], Schaeffer
+    /// [`SchaefferConstants::dp_star_deps`], `None` 0 (no close-packed pressure). The solver
+    /// sets K_cp = 0 in wall cells.
     #[inline]
     pub fn k_cp(
         self,
@@ -454,8 +540,8 @@ impl FrictionModel {
     ) -> f64 {
         match self {
             Self::None => 0.0,
-            Self::Schaeffer => dp_star_deps(eps_s, p),
-            Self::Princeton => k_cp_princeton(eps_s, theta, d_p, tr_d, s_ddot_s, p),
+            Self::Schaeffer(c) => c.dp_star_deps(eps_s, p),
+            Self::Princeton(c) => c.k_cp(eps_s, theta, d_p, tr_d, s_ddot_s, p),
         }
     }
 }
@@ -471,18 +557,38 @@ mod tests {
         let p = FrictionParams::default();
         let answers = |m: FrictionModel| {
             (
-                m.has_plastic_pressure(),
+                m.plastic_pressure().copied(),
                 m.pins_theta_below(&p),
                 m.max_solids_phases(),
                 m.has_wall_friction(),
             )
         };
         let eps_g_star = 1.0 - p.eps_s_max;
+        let schaeffer = SchaefferConstants::default();
         assert_eq!(
-            answers(FrictionModel::Schaeffer),
-            (true, Some(eps_g_star), Some(1), false)
+            answers(FrictionModel::schaeffer()),
+            (Some(schaeffer), Some(eps_g_star), Some(1), false)
         );
-        assert_eq!(answers(FrictionModel::Princeton), (false, None, None, true));
-        assert_eq!(answers(FrictionModel::None), (false, None, None, false));
+        assert_eq!(
+            answers(FrictionModel::princeton()),
+            (None, None, None, true)
+        );
+        assert_eq!(answers(FrictionModel::None), (None, None, None, false));
+    }
+
+    /// Case files name the model only; it comes with MFIX's constants and writes back as
+    /// its name.
+    #[test]
+    fn a_model_reads_and_writes_as_its_name() {
+        for (name, model) in [
+            ("None", FrictionModel::None),
+            ("Schaeffer", FrictionModel::schaeffer()),
+            ("Princeton", FrictionModel::princeton()),
+        ] {
+            let json = format!("\"{name}\"");
+            assert_eq!(serde_json::from_str::<FrictionModel>(&json).unwrap(), model);
+            assert_eq!(serde_json::to_string(&model).unwrap(), json);
+            assert_eq!(model.name(), name);
+        }
     }
 }

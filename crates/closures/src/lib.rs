@@ -44,7 +44,10 @@ pub mod stress;
 
 pub use cell::{evaluate, CellState, ClosureParams, ClosureSet, Gas, Particles};
 pub use drag::{Drag, DragInputs};
-pub use friction::{FrictionModel, FrictionParams, FrictionalStress};
+pub use friction::{
+    FrictionModel, FrictionName, FrictionParams, FrictionalStress, PrincetonConstants,
+    SchaefferConstants,
+};
 pub use kinetic::{GasCoupling, KineticStress, SolidsState};
 pub use radial::RadialDistribution;
 pub use stress::SolidsStress;

@@ -2,16 +2,17 @@
 
 use proptest::prelude::*;
 use runout_closures::drag::Drag;
-use runout_closures::friction::{
-    critical_pressure, dcritical_pressure_deps, dp_star_deps, k_cp_princeton, p_star, princeton,
-    FrictionParams,
-};
+use runout_closures::friction::{FrictionParams, PrincetonConstants, SchaefferConstants};
 use runout_closures::kinetic::{lun_1984, GasCoupling, SolidsState};
 use runout_closures::radial::{
     dg0_deps_carnahan_starling, dg0_deps_ma_ahmadi, g0_carnahan_starling, g0_ma_ahmadi,
     RadialDistribution, MA_AHMADI_EPS_LIMIT,
 };
 use runout_closures::{evaluate, CellState, ClosureParams, FrictionModel, Gas, Particles};
+
+/// The frictional models' code constants (MFIX 21.3.2).
+const PRINCETON: PrincetonConstants = PrincetonConstants::MFIX;
+const SCHAEFFER: SchaefferConstants = SchaefferConstants::MFIX;
 
 /// Relative tolerance of analytic derivatives against central differences (issue 3 (b)).
 const FD_REL_TOL: f64 = 1e-6;
@@ -50,8 +51,8 @@ fn radial() -> impl Strategy<Value = RadialDistribution> {
 fn friction_model() -> impl Strategy<Value = FrictionModel> {
     prop_oneof![
         Just(FrictionModel::None),
-        Just(FrictionModel::Schaeffer),
-        Just(FrictionModel::Princeton)
+        Just(FrictionModel::schaeffer()),
+        Just(FrictionModel::princeton())
     ]
 }
 
@@ -172,19 +173,19 @@ proptest! {
     ) {
         let p = FrictionParams::new(0.65, 0.5, phi);
         let d_p = 5e-4;
-        let at = p.eps_s_max - p.princeton.delta;
+        let at = p.eps_s_max - PRINCETON.delta;
         let kink_distance = (eps_s - p.eps_s_min).abs().min((eps_s - at).abs());
         prop_assume!(kink_distance > 1e-4);
         let h = 1e-4 * kink_distance;
         assert_derivative(
             "dP_c/deps",
-            dcritical_pressure_deps(eps_s, &p),
-            central_difference(|x| critical_pressure(x, &p), eps_s, h),
+            PRINCETON.dcritical_pressure_deps(eps_s, &p),
+            central_difference(|x| PRINCETON.critical_pressure(x, &p), eps_s, h),
         );
-        let p_fric = |x| princeton(x, theta, d_p, tr_d, s_ddot_s, &p).p_fric;
+        let p_fric = |x| PRINCETON.stress(x, theta, d_p, tr_d, s_ddot_s, &p).p_fric;
         assert_derivative(
             "K_cp Princeton",
-            k_cp_princeton(eps_s, theta, d_p, tr_d, s_ddot_s, &p),
+            PRINCETON.k_cp(eps_s, theta, d_p, tr_d, s_ddot_s, &p),
             central_difference(p_fric, eps_s, h),
         );
         let above_packing = eps_s - p.eps_s_max;
@@ -192,8 +193,8 @@ proptest! {
             let h = 1e-4 * above_packing;
             assert_derivative(
                 "dP*/deps",
-                dp_star_deps(eps_s, &p),
-                central_difference(|x| p_star(x, &p), eps_s, h),
+                SCHAEFFER.dp_star_deps(eps_s, &p),
+                central_difference(|x| SCHAEFFER.p_star(x, &p), eps_s, h),
             );
         }
     }
@@ -230,7 +231,7 @@ proptest! {
         let f = model.stress(eps_s, theta, 5e-4, tr_d, s_ddot_s, &p);
         prop_assert_eq!((f.p_fric, f.mu_fric, f.lambda_fric, f.p_star), (0.0, 0.0, 0.0, 0.0));
         prop_assert_eq!(model.k_cp(eps_s, theta, 5e-4, tr_d, s_ddot_s, &p), 0.0);
-        prop_assert_eq!(critical_pressure(eps_s, &p), 0.0);
+        prop_assert_eq!(PRINCETON.critical_pressure(eps_s, &p), 0.0);
     }
 
     /// Princeton is continuous across the linearisation point εs,max − δ: P_c, dP_c/dεs,
@@ -243,19 +244,19 @@ proptest! {
         s_ddot_s in 0.0..100.0f64,
     ) {
         let p = FrictionParams::default();
-        let at = p.eps_s_max - p.princeton.delta;
+        let at = p.eps_s_max - PRINCETON.delta;
         // relative change allowed: slope · 2h / value, with the slope of P_c at εs,at
         let allowed = 1e-5;
         let pairs = [
-            (critical_pressure(at - h, &p), critical_pressure(at + h, &p)),
-            (dcritical_pressure_deps(at - h, &p), dcritical_pressure_deps(at + h, &p)),
+            (PRINCETON.critical_pressure(at - h, &p), PRINCETON.critical_pressure(at + h, &p)),
+            (PRINCETON.dcritical_pressure_deps(at - h, &p), PRINCETON.dcritical_pressure_deps(at + h, &p)),
             (
-                princeton(at - h, theta, 5e-4, tr_d, s_ddot_s, &p).p_fric,
-                princeton(at + h, theta, 5e-4, tr_d, s_ddot_s, &p).p_fric,
+                PRINCETON.stress(at - h, theta, 5e-4, tr_d, s_ddot_s, &p).p_fric,
+                PRINCETON.stress(at + h, theta, 5e-4, tr_d, s_ddot_s, &p).p_fric,
             ),
             (
-                princeton(at - h, theta, 5e-4, tr_d, s_ddot_s, &p).mu_fric,
-                princeton(at + h, theta, 5e-4, tr_d, s_ddot_s, &p).mu_fric,
+                PRINCETON.stress(at - h, theta, 5e-4, tr_d, s_ddot_s, &p).mu_fric,
+                PRINCETON.stress(at + h, theta, 5e-4, tr_d, s_ddot_s, &p).mu_fric,
             ),
         ];
         for (below, above) in pairs {
@@ -297,7 +298,7 @@ proptest! {
             ..ClosureParams::default()
         };
         let set = evaluate(&state, &params);
-        let direct = k_cp_princeton(
+        let direct = PRINCETON.k_cp(
             state.eps_s, state.theta, params.particles.diameter, state.tr_d, state.s_ddot_s,
             &params.friction,
         );
@@ -333,7 +334,7 @@ fn model_enums_deserialize_strictly() {
         serde_json::from_str::<Drag>(r#"{"SyamlalOBrien":{"c1":0.8,"d1":2.65,"e1":1}}"#).is_err()
     );
     let model: FrictionModel = serde_json::from_str(r#""Princeton""#).unwrap();
-    assert_eq!(model, FrictionModel::Princeton);
+    assert_eq!(model, FrictionModel::princeton());
     assert!(serde_json::from_str::<FrictionModel>(r#""Srivastava""#).is_err());
     let rdf: RadialDistribution = serde_json::from_str(r#""MaAhmadi""#).unwrap();
     assert_eq!(rdf, RadialDistribution::MaAhmadi);

@@ -11,16 +11,17 @@ use runout_closures::drag::{
     dga_wen_yu, Drag, DragInputs,
 };
 use runout_closures::energy::{shear_production, slip_production, viscous_damping};
-use runout_closures::friction::{
-    critical_pressure, dcritical_pressure_deps, dp_star_deps, eps_g_from_p_star, k_cp_princeton,
-    princeton, schaeffer, FrictionParams,
-};
+use runout_closures::friction::{FrictionParams, PrincetonConstants, SchaefferConstants};
 use runout_closures::kinetic::{lun_1984, GasCoupling, SolidsState};
 use runout_closures::radial::{
     dg0_deps_carnahan_starling, dg0_deps_ma_ahmadi, g0_carnahan_starling, g0_ma_ahmadi,
 };
 use runout_closures::{evaluate, CellState, ClosureParams, FrictionModel, Gas, Particles};
 use serde_json::Value;
+
+/// The frictional models' code constants (MFIX 21.3.2).
+const PRINCETON: PrincetonConstants = PrincetonConstants::MFIX;
+const SCHAEFFER: SchaefferConstants = SchaefferConstants::MFIX;
 
 const REL_TOL: f64 = 1e-12;
 
@@ -154,7 +155,7 @@ fn princeton_matches_reference() {
             num(row, "tr_d"),
             num(row, "s_ddot_s"),
         );
-        let f = princeton(eps_s, theta, p.d_p, tr_d, s_ddot_s, &p.friction);
+        let f = PRINCETON.stress(eps_s, theta, p.d_p, tr_d, s_ddot_s, &p.friction);
         let label = format!("eps_s = {eps_s}, theta = {theta}, trD = {tr_d}, S:S = {s_ddot_s}");
         for (name, got) in [
             ("p_c", f.p_c),
@@ -167,20 +168,20 @@ fn princeton_matches_reference() {
         ] {
             assert_rel(&format!("{name} ({label})"), got, num(row, name), REL_TOL);
         }
-        let k_cp = k_cp_princeton(eps_s, theta, p.d_p, tr_d, s_ddot_s, &p.friction);
+        let k_cp = PRINCETON.k_cp(eps_s, theta, p.d_p, tr_d, s_ddot_s, &p.friction);
         assert_rel(&format!("k_cp ({label})"), k_cp, num(row, "k_cp"), REL_TOL);
     }
     for row in v["critical_pressure"].as_array().unwrap() {
         let eps_s = num(row, "eps_s");
         assert_rel(
             &format!("P_c at {eps_s}"),
-            critical_pressure(eps_s, &p.friction),
+            PRINCETON.critical_pressure(eps_s, &p.friction),
             num(row, "p_c"),
             REL_TOL,
         );
         assert_rel(
             &format!("dP_c/deps at {eps_s}"),
-            dcritical_pressure_deps(eps_s, &p.friction),
+            PRINCETON.dcritical_pressure_deps(eps_s, &p.friction),
             num(row, "dp_c"),
             REL_TOL,
         );
@@ -194,7 +195,7 @@ fn schaeffer_matches_reference() {
     for row in v["schaeffer"].as_array().unwrap() {
         let (eps_s, s_ddot_s) = (num(row, "eps_s"), num(row, "s_ddot_s"));
         let label = format!("eps_s = {eps_s}, S:S = {s_ddot_s}");
-        let f = schaeffer(eps_s, s_ddot_s, &p.friction);
+        let f = SCHAEFFER.stress(eps_s, s_ddot_s, &p.friction);
         assert_rel(
             &format!("P* ({label})"),
             f.p_star,
@@ -209,13 +210,13 @@ fn schaeffer_matches_reference() {
         );
         assert_rel(
             &format!("dP*/deps ({label})"),
-            dp_star_deps(eps_s, &p.friction),
+            SCHAEFFER.dp_star_deps(eps_s, &p.friction),
             num(row, "dp_star_deps"),
             REL_TOL,
         );
         assert_rel(
             &format!("INV_H ({label})"),
-            eps_g_from_p_star(f.p_star, &p.friction),
+            SCHAEFFER.eps_g_from_p_star(f.p_star, &p.friction),
             num(row, "eps_g_from_p_star"),
             REL_TOL,
         );
@@ -310,7 +311,7 @@ fn energy_sources_match_reference() {
                 viscosity: p.mu_g,
             },
             friction: p.friction,
-            friction_model: FrictionModel::Princeton,
+            friction_model: FrictionModel::princeton(),
             ..ClosureParams::default()
         };
         let state = CellState {
@@ -401,16 +402,20 @@ fn spec_check_values_kinetic() {
 #[test]
 fn spec_check_values_princeton() {
     let p = FrictionParams::default();
-    let f = princeton(0.60, 0.01, 5e-4, 0.0, 100.0, &p);
+    let f = PRINCETON.stress(0.60, 0.01, 5e-4, 0.0, 100.0, &p);
     assert_printed("P_f at 0.60", f.p_fric, "1600");
     assert_printed("mu_fric at 0.60", f.mu_fric, "3.2406");
-    let f = princeton(0.645, 0.01, 5e-4, 0.5, 100.0, &p);
+    let f = PRINCETON.stress(0.645, 0.01, 5e-4, 0.5, 100.0, &p);
     assert_printed("P_f at 0.645", f.p_fric, "3.49636e7");
     assert_printed("mu_fric at 0.645", f.mu_fric, "7.08878e4");
     // linearisation point and slope (§2.4.2 step 2)
-    let at = p.eps_s_max - p.princeton.delta;
-    assert_printed("P_c,at", critical_pressure(at, &p), "9.8e6");
-    assert_printed("P_c'", dcritical_pressure_deps(0.66, &p), "5.04e9");
+    let at = p.eps_s_max - PRINCETON.delta;
+    assert_printed("P_c,at", PRINCETON.critical_pressure(at, &p), "9.8e6");
+    assert_printed(
+        "P_c'",
+        PRINCETON.dcritical_pressure_deps(0.66, &p),
+        "5.04e9",
+    );
 }
 
 /// `got` rounds to `printed` at the number of significant digits printed in the spec:

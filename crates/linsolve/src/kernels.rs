@@ -102,3 +102,12 @@ pub(crate) fn first_non_finite(x: &[f64]) -> Option<usize> {
         x.iter().position(|v| !v.is_finite())
     }
 }
+
+/// A raw pointer to a vector shared by parallel tasks that write disjoint entries (the line
+/// smoothers of the multigrid, the column blocks of the line preconditioner; see the SAFETY
+/// notes at the call sites).
+#[derive(Clone, Copy)]
+pub(crate) struct SharedMut(pub(crate) *mut f64);
+// SAFETY: only used for the disjoint writes documented at the call sites.
+unsafe impl Send for SharedMut {}
+unsafe impl Sync for SharedMut {}

@@ -22,7 +22,7 @@ use std::time::{Duration, Instant};
 
 use rayon::prelude::*;
 
-use crate::kernels::{axpy, dot, for_each_indexed, norm2, PAR_MIN_LEN};
+use crate::kernels::{axpy, dot, for_each_indexed, norm2, SharedMut, PAR_MIN_LEN};
 use crate::stencil::{apply5, check_len, reduced_rhs, residual5, rows_per_task, Op5};
 use crate::{check_rtol, LinSolveError, LinearSolver, Pattern, SolveStats, Stencil5};
 
@@ -346,14 +346,6 @@ fn prolong_add(fine: &mut Level, e: &[f64], nxc: usize) {
             .for_each(|(j, r)| add_row(j, r));
     }
 }
-
-/// A raw pointer to a level's solution shared by the line-smoother tasks, which write
-/// disjoint cells (see the SAFETY notes at the call sites).
-#[derive(Clone, Copy)]
-struct SharedMut(*mut f64);
-// SAFETY: only used for the colour-disjoint writes documented above.
-unsafe impl Send for SharedMut {}
-unsafe impl Sync for SharedMut {}
 
 /// Dense LU with partial pivoting for the coarsest level.
 #[derive(Default)]

@@ -13,6 +13,8 @@ pub struct Axis {
     centres: Vec<f64>,
     widths: Vec<f64>,
     face_spacing: Vec<f64>,
+    /// the two end faces are one face ([`Axis::periodic`])
+    periodic: bool,
 }
 
 impl Axis {
@@ -48,6 +50,7 @@ impl Axis {
             centres,
             widths,
             face_spacing,
+            periodic: false,
         })
     }
 
@@ -91,6 +94,19 @@ impl Axis {
                 cells: n,
             }],
         )
+    }
+
+    /// The same axis made periodic: its last face is its first (MFIX `CYCLIC_X`). The
+    /// geometry is unchanged; what a periodic axis admits (the two-fluid solver: the x axis,
+    /// one cell) is the solver's to check.
+    pub fn periodic(mut self) -> Axis {
+        self.periodic = true;
+        self
+    }
+
+    /// Whether the axis is periodic ([`Axis::periodic`]).
+    pub fn is_periodic(&self) -> bool {
+        self.periodic
     }
 
     /// Number of cells.
@@ -173,5 +189,21 @@ impl Axis {
             .windows(2)
             .map(|p| (p[1] / p[0]).max(p[0] / p[1]))
             .fold(1.0, f64::max)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_periodic_axis_keeps_its_geometry() {
+        let axis = Axis::uniform(0.0, 1.0, 4).unwrap();
+        assert!(!axis.is_periodic());
+        let periodic = axis.clone().periodic();
+        assert!(periodic.is_periodic());
+        assert_eq!(periodic.faces(), axis.faces());
+        assert_eq!(periodic.face_spacing(), axis.face_spacing());
+        assert_ne!(periodic, axis);
     }
 }

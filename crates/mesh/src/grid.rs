@@ -172,6 +172,11 @@ impl Grid {
         })
     }
 
+    /// Whether the x axis is periodic ([`Axis::periodic`]).
+    pub fn periodic_x(&self) -> bool {
+        self.x.is_periodic()
+    }
+
     /// Cells in x.
     pub fn nx(&self) -> usize {
         self.x.len()

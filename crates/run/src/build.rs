@@ -193,8 +193,8 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
     if let Some(max) = case.models.friction.max_solids_phases() {
         if case.solids.len() > max {
             return Err(unsupported(format!(
-                "{:?} friction with more than {max} solids phase(s) is not implemented",
-                case.models.friction
+                "{} friction with more than {max} solids phase(s) is not implemented",
+                case.models.friction.name()
             )));
         }
     }
@@ -327,7 +327,6 @@ fn two_fluid_settings(case: &Case) -> TwoFluidSettings {
             == runout_case::WallRelaxationScope::Oscillating,
         freeze_cycling_dilute_class: case.numerics.dilute_cells
             == runout_case::DiluteCellClass::FrozenWhenCycling,
-        periodic_x: false,
         exact_solids_continuity: case.numerics.exact_solids_mass,
         detect_stall: case.run.tolerances.detect_stall,
     }

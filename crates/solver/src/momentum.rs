@@ -95,10 +95,6 @@ pub struct Context<'a> {
     pub gas_pressure: &'a [f64],
     /// per-node wall closures overriding `bcs` on the sides they cover
     pub wall_faces: Option<&'a WallFaces>,
-    /// a periodic column of one cell (nx = 1, [`crate::two_fluid::TwoFluidSettings`]): the
-    /// u-node 0 spans the whole cell, both its neighbours are itself (every x term cancels),
-    /// and node nx is fixed (the caller copies node 0 into it)
-    pub periodic_x: bool,
 }
 
 /// Width of the u control volume at x-face i: centre to centre inside, half a cell at the
@@ -277,7 +273,7 @@ fn u_faces(ctx: &Context<'_>, phase: &PhaseFields<'_>, u: &[f64], v: &[f64], fac
     };
     let nodes = UNodes {
         grid,
-        periodic: ctx.periodic_x,
+        periodic: ctx.grid.periodic_x(),
     };
     let cells_beside = |i: usize| nodes.cells_beside(i);
     let x_weight = |w: usize, e: usize| nodes.x_weight(w, e);
@@ -302,7 +298,7 @@ fn u_faces(ctx: &Context<'_>, phase: &PhaseFields<'_>, u: &[f64], v: &[f64], fac
             let k = faces.xf(i, j);
             // periodic column: the face couples node 0 to its own copy, and its flux and
             // diffusion cancel those of the wrapped face on the other side
-            if ctx.periodic_x || both_skipped(phase.skip, i - 1 + mx * j, i + mx * j) {
+            if ctx.grid.periodic_x() || both_skipped(phase.skip, i - 1 + mx * j, i + mx * j) {
                 (faces.flux_x[k], faces.cond_x[k]) = (0.0, 0.0);
                 continue;
             }
@@ -355,7 +351,7 @@ fn u_sources(ctx: &Context<'_>, phase: &PhaseFields<'_>, u_old: &[f64], a: &mut 
     let mu = phase.viscosity;
     let nodes = UNodes {
         grid,
-        periodic: ctx.periodic_x,
+        periodic: ctx.grid.periodic_x(),
     };
     let cells_beside = |i: usize| nodes.cells_beside(i);
     let x_weight = |w: usize, e: usize| nodes.x_weight(w, e);

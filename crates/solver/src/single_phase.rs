@@ -101,6 +101,9 @@ pub enum SolverError {
         /// the solver error
         source: LinSolveError,
     },
+    /// A periodic axis: the single-phase solver has walls or outlets on every side.
+    #[error("the single-phase solver has no periodic axis")]
+    Periodic,
     /// A non-finite value appeared.
     #[error("{equation}: non-finite value at node {node} after outer iteration {iteration}")]
     NonFinite {
@@ -202,6 +205,9 @@ impl SinglePhase {
         gravity: (f64, f64),
         settings: Settings,
     ) -> Result<Self, SolverError> {
+        if grid.x.is_periodic() || grid.y.is_periodic() {
+            return Err(SolverError::Periodic);
+        }
         let (nx, ny) = (grid.nx(), grid.ny());
         let lin = |equation| move |source| SolverError::Linear { equation, source };
         let mut pu = Pattern::new(nx + 1, ny).map_err(lin("u"))?;
@@ -410,7 +416,6 @@ impl SinglePhase {
             scheme: self.settings.scheme,
             gas_pressure: &self.p,
             wall_faces: None,
-            periodic_x: false,
         };
         let phase = PhaseFields {
             bulk_density: &self.density_cells,
@@ -465,7 +470,6 @@ impl SinglePhase {
             scheme: self.settings.scheme,
             gas_pressure: &self.p,
             wall_faces: None,
-            periodic_x: false,
         };
         let phase = PhaseFields {
             bulk_density: &self.density_cells,

@@ -41,9 +41,6 @@ pub struct CorrectionInputs<'a> {
     pub dt: f64,
     /// scheme of the face volume fractions in the mass imbalance (MFIX `DISCRETIZE(2)`)
     pub scheme: Scheme,
-    /// a periodic column of one cell (nx = 1): the fluxes through its west and east faces
-    /// are the same flux and cancel, so both are left out
-    pub periodic_x: bool,
 }
 
 /// Net solids mass imbalance of every cell with the given velocities, ρs [(εs − εs⁰) V/Δt +
@@ -62,7 +59,9 @@ pub fn mass_imbalance(grid: &Grid, x: &CorrectionInputs<'_>, out: &mut [f64]) {
         let row = nx * j;
         for i in 0..=nx {
             let vel = x.u[i + (nx + 1) * j];
-            if vel == 0.0 || (x.periodic_x && (i == 0 || i == nx)) {
+            // a periodic column of one cell (nx = 1): the fluxes through its west and east
+            // faces are the same flux and cancel, so both are left out
+            if vel == 0.0 || (grid.periodic_x() && (i == 0 || i == nx)) {
                 continue;
             }
             let eps_face = if i == 0 || i == nx {
@@ -198,7 +197,7 @@ pub fn assemble_correction(
                 .enumerate()
             {
                 let flux = sign * vel * area;
-                if x.periodic_x && slot < 2 {
+                if grid.periodic_x() && slot < 2 {
                     continue;
                 }
                 let Some(n) = nb else {

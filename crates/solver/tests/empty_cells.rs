@@ -15,8 +15,8 @@ fn closures_vanish_without_solids() {
     ];
     let frictions = [
         FrictionModel::None,
-        FrictionModel::Schaeffer,
-        FrictionModel::Princeton,
+        FrictionModel::schaeffer(),
+        FrictionModel::princeton(),
     ];
     for drag in drags {
         for friction_model in frictions {

@@ -59,7 +59,6 @@ fn two_layer_couette_is_exact() {
         scheme: Scheme::Superbee,
         gas_pressure: &pressure,
         wall_faces: None,
-        periodic_x: false,
     };
     let phase = PhaseFields {
         bulk_density: &ones,

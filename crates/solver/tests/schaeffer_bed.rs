@@ -36,7 +36,7 @@ fn bed(steps: usize, dt: f64, verbose: bool) -> (TwoFluid, f64) {
     let no_slip = SideBc::Wall(RobinFace::dirichlet(0.0));
     let free_slip = SideBc::Wall(RobinFace::ZERO_GRADIENT);
     let zero_flux = Some(RobinFace::ZERO_GRADIENT);
-    let params = paper_particles_in_air(FrictionModel::Schaeffer, EPS_MAX);
+    let params = paper_particles_in_air(FrictionModel::schaeffer(), EPS_MAX);
     let spec = SolidsSpec {
         params,
         eps_max: EPS_MAX,

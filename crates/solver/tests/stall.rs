@@ -21,7 +21,7 @@ fn suspension(detect_stall: bool) -> TwoFluid {
     );
     let walls = Sides::all(SideBc::Wall(RobinFace::dirichlet(0.0)));
     let spec = SolidsSpec {
-        params: paper_particles_in_air(FrictionModel::Princeton, 0.65),
+        params: paper_particles_in_air(FrictionModel::princeton(), 0.65),
         eps_max: 0.65,
         walls: walls.clone(),
         theta_walls: Sides::all(Some(RobinFace::ZERO_GRADIENT)),

@@ -89,7 +89,6 @@ fn correct(k_cp_value: f64) -> (f64, f64) {
         k_cp: &k_cp,
         dt,
         scheme: Scheme::Upwind,
-        periodic_x: false,
     };
     assemble_correction(&grid, &inputs, &mut imbalance, &mut a);
     let before = imbalance.iter().map(|x| x.abs()).sum::<f64>();
@@ -120,7 +119,6 @@ fn correct(k_cp_value: f64) -> (f64, f64) {
         k_cp: &k_cp,
         dt,
         scheme: Scheme::Upwind,
-        periodic_x: false,
     };
     mass_imbalance(&grid, &after_inputs, &mut imbalance);
     let after = imbalance.iter().map(|x| x.abs()).sum::<f64>();

@@ -20,7 +20,6 @@ use crate::face::RobinFace;
 use crate::specularity::LiBenyahia;
 use crate::state::{wall_theta, MomentumWallState, ThetaWallState, WALL_S_DDOT_S_FLOOR};
 use runout_closures::drag::{dga_wall_wen_yu, DragInputs};
-use runout_closures::friction::princeton;
 use runout_closures::guards::DIL_EP_S;
 use runout_closures::kinetic::{lun_1984, GasCoupling, KineticStress, SolidsState};
 use runout_closures::ClosureParams;
@@ -234,6 +233,66 @@ impl SolidsWallModel {
                 RobinFace::user_theta(user.h_theta, user.theta_w, user.c),
             )),
             Self::JohnsonJackson { .. } | Self::Jenkins { .. } => None,
+        }
+    }
+
+    /// A one-line description of the condition for the run's scene (`runout check
+    /// --explain`), e.g. `Johnson–Jackson (φ = 0.1)`.
+    pub fn describe(&self) -> String {
+        match self {
+            Self::NoSlip => "no-slip".into(),
+            Self::FreeSlip => "free-slip".into(),
+            Self::PartialSlip(p) => format!(
+                "user partial slip (h_w^u = {} m⁻¹, h_w^θ = {} m⁻¹)",
+                p.h_u, p.h_theta
+            ),
+            Self::JohnsonJackson {
+                specularity: Specularity::Constant(phi),
+                ..
+            } => format!("Johnson–Jackson (φ = {phi})"),
+            Self::JohnsonJackson {
+                specularity: Specularity::LiBenyahia(_),
+                ..
+            } => "Johnson–Jackson revisited (Li–Benyahia φ(r))".into(),
+            Self::Jenkins { .. } => "Jenkins".into(),
+        }
+    }
+
+    /// K = τ_w/|u_sl| [Pa s m⁻¹] of this condition on the side walls of a channel of width
+    /// `width`, with the solids profile flat across it (docs/model.md §8): free slip 0; user
+    /// partial slip μ_s h_w^u; JJ, revisited JJ and Jenkins COL (+ FRI on the frictional
+    /// branch) at `state`; no slip, which a flat profile cannot meet, its parabolic limit
+    /// 6 μ_s/W. Jenkins' COL overflows as |u_sl| → 0: the caller bounds K.
+    pub fn side_wall_stress_per_slip(
+        &self,
+        state: &MomentumWallState,
+        mu_s: f64,
+        width: f64,
+        params: &ClosureParams,
+    ) -> f64 {
+        match self {
+            Self::FreeSlip => 0.0,
+            Self::NoSlip => 6.0 * mu_s / width,
+            Self::PartialSlip(user) => mu_s * user.h_u,
+            Self::JohnsonJackson { .. } | Self::Jenkins { .. } => {
+                let d = self.momentum(state, params).diagnostics;
+                match d.branch {
+                    MomentumBranch::Kinetic => d.col,
+                    MomentumBranch::KineticFrictional => d.col + d.fri,
+                    _ => 0.0,
+                }
+            }
+        }
+    }
+
+    /// The factor from the θ face coefficients of [`SolidsWallModel::granular_temperature`]
+    /// (h, c) to the wall's granular-energy flux q_w = factor (c − h θ): κ_s for the user
+    /// partial slip, written in MFIX's manual units (docs/model.md §3.3); 1 for the flux
+    /// form of JJ and Jenkins (§3.6, §3.8) and for the zero-flux walls.
+    pub fn theta_flux_factor(&self, kappa_s: f64) -> f64 {
+        match self {
+            Self::PartialSlip(_) => kappa_s,
+            _ => 1.0,
         }
     }
 
@@ -461,7 +520,8 @@ fn kinetic_momentum(
     };
     let h = if frictional_branch {
         if state.eps_s > eps_s_min {
-            let stress = princeton(
+            // the Princeton stress: only Princeton has wall friction
+            let stress = params.friction_model.stress(
                 state.eps_s,
                 theta,
                 params.particles.diameter,

@@ -31,8 +31,8 @@ fn params(dry: bool, friction: FrictionModel) -> ClosureParams {
 
 fn friction_model() -> impl Strategy<Value = FrictionModel> {
     prop_oneof![
-        Just(FrictionModel::Princeton),
-        Just(FrictionModel::Schaeffer),
+        Just(FrictionModel::princeton()),
+        Just(FrictionModel::schaeffer()),
         Just(FrictionModel::None)
     ]
 }
@@ -155,7 +155,7 @@ proptest! {
                                                dry in any::<bool>()) {
         let wall = SolidsWallModel::jenkins(e_w, delta_w, 0.0).unwrap();
         let t = wall.granular_temperature(&ThetaWallState { eps_s, theta, slip, gas_slip },
-                                          &params(dry, FrictionModel::Princeton));
+                                          &params(dry, FrictionModel::princeton()));
         prop_assert!(t.face.g >= 0.0 && t.face.h >= 0.0 && t.face.c >= 0.0, "{t:?}");
     }
 
@@ -289,7 +289,7 @@ fn branch_rules() {
     assert!((e.h_u - e.col / e.mu_kin).abs() < 1e-12 * e.h_u);
     // Schaeffer (no Princeton): h = COL/μ_k even in a dense cell
     let schaeffer = ClosureParams {
-        friction_model: FrictionModel::Schaeffer,
+        friction_model: FrictionModel::schaeffer(),
         ..p
     };
     let s = jj.momentum(&dense, &schaeffer).diagnostics;

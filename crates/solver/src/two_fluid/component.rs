@@ -24,7 +24,7 @@ pub(super) struct Component {
     pub mx: usize,
     /// nodes per column of the component's block
     pub my: usize,
-    /// u of a periodic-x column (`TwoFluidSettings::periodic_x`): node 0 lies between cell
+    /// u of a periodic-x column (`Grid::periodic_x`): node 0 lies between cell
     /// nx − 1 and cell 0, and there is no x gradient of P'_g or of K_cp ε'
     pub periodic: bool,
 }

@@ -7,7 +7,6 @@
 
 use std::time::Instant;
 
-use runout_closures::friction::p_star;
 use runout_linsolve::{LinSolveError, LinearSolver, Stencil5};
 
 use super::diagnostics::since;
@@ -35,7 +34,6 @@ impl TwoFluid {
                 k_cp: &coef.k_cp,
                 dt,
                 scheme: self.settings.scheme,
-                periodic_x: self.settings.periodic_x,
             };
             assemble_correction(&self.grid, &inputs, &mut s.imbalance, &mut s.a_eps);
             total += s.imbalance.iter().map(|x| x.abs()).sum::<f64>() / n;
@@ -64,9 +62,9 @@ impl TwoFluid {
                 &coef.k_cp,
             );
             // P* from the corrected εs (Schaeffer only, docs/model.md §4.9 step 5)
-            if spec.params.friction_model.has_plastic_pressure() {
+            if let Some(star) = spec.params.friction_model.plastic_pressure() {
                 for (ps, &e) in coef.p_star.iter_mut().zip(p.eps.iter()) {
-                    *ps = p_star(e, &spec.params.friction);
+                    *ps = star.p_star(e, &spec.params.friction);
                 }
                 self.counters.plastic_pressure_cells += coef.p_star.len() as u64;
             }
@@ -102,7 +100,6 @@ impl TwoFluid {
                 k_cp: &coef.k_cp,
                 dt,
                 scheme: self.settings.scheme,
-                periodic_x: self.settings.periodic_x,
             };
             mass_imbalance(&self.grid, &inputs, &mut s.imbalance);
             let nx = self.grid.nx();

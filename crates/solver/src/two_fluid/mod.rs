@@ -156,13 +156,6 @@ pub struct TwoFluidSettings {
     /// εs 1.00078e-4 ↔ 0.99672e-4 for 30 iterations). Not in MFIX; where the class settles
     /// within a step, the converged step is MFIX's (docs/performance.md, session 7).
     pub freeze_cycling_dilute_class: bool,
-    /// A fully developed column: periodic in x with a single column of cells (nx = 1), as
-    /// MFIX's `CYCLIC_X` on one cell. Every ∂/∂x vanishes: the x-face fluxes of a cell cancel,
-    /// u has one unknown per row (node 0, with the whole cell as its control volume; node nx
-    /// is its copy) and no x pressure gradient. The west and east sides must be free-slip
-    /// walls (they then add nothing to v or θ). Used by the steady chute check (issue 7,
-    /// docs/chute1d.md).
-    pub periodic_x: bool,
     /// End each converged step with exact discrete solids continuity
     /// ([`TwoFluid::conservative_finish`]; not MFIX): the solids mass then changes only by
     /// the boundary flux, where MFIX lets the step tolerance's remainder accumulate where
@@ -189,7 +182,6 @@ impl Default for TwoFluidSettings {
             relax_wall_closures: 1.0,
             relax_wall_closures_oscillating_only: false,
             freeze_cycling_dilute_class: false,
-            periodic_x: false,
             exact_solids_continuity: false,
             detect_stall: true,
         }
@@ -209,9 +201,18 @@ pub enum TwoFluidError {
     /// Gas inflow asked for on a side that is not a wall.
     #[error("gas inflow on the {0} side, which is an outlet")]
     InflowOnOutlet(String),
-    /// A periodic-x column with more than one cell across or with an outlet on its x sides.
+    /// A periodic-x grid ([`runout_mesh::Grid::periodic_x`]) with more than one cell across
+    /// or with an outlet on its x sides. Periodic x is a fully developed column, MFIX's
+    /// `CYCLIC_X` on one cell: every ∂/∂x vanishes, the x-face fluxes of a cell cancel, u has
+    /// one unknown per row (node 0, with the whole cell as its control volume; node nx is its
+    /// copy) and no x pressure gradient. The west and east sides must be free-slip walls
+    /// (they then add nothing to v or θ). Used by the steady chute check (issue 7,
+    /// docs/chute1d.md).
     #[error("periodic x needs one column of cells (nx = 1, got {0}) and walls on the west and east sides")]
     PeriodicColumn(usize),
+    /// A periodic y axis (only x may be periodic, [`runout_mesh::Grid::periodic_x`]).
+    #[error("the y axis cannot be periodic: only a column periodic in x is supported")]
+    PeriodicY,
     /// A linear solve failed.
     #[error("{equation}: {source}")]
     Linear {
@@ -286,7 +287,7 @@ impl TwoFluid {
     /// The scene of the current phases, settings and side walls.
     fn derive_scene(&self) -> Scene {
         Scene::of(
-            (self.grid.nx(), self.grid.ny()),
+            &self.grid,
             &self.solids_specs,
             &self.settings,
             self.sidewalls.as_ref().map(|w| w.width),

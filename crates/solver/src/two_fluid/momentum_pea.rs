@@ -40,7 +40,7 @@ impl TwoFluid {
         self.assemble_momentum(dt);
         let (nx, ny) = (self.grid.nx(), self.grid.ny());
         let mut residual = 0.0;
-        for c in Component::both(nx, ny, self.settings.periodic_x) {
+        for c in Component::both(nx, ny, self.grid.periodic_x()) {
             let (a, d) = c.pick(
                 (&mut self.workspace.a_ug, &mut self.workspace.d_u),
                 (&mut self.workspace.a_vg, &mut self.workspace.d_v),
@@ -95,7 +95,6 @@ impl TwoFluid {
             scheme: self.settings.scheme,
             gas_pressure: &g.p,
             wall_faces: None,
-            periodic_x: self.settings.periodic_x,
         };
         let gas_fields = PhaseFields {
             bulk_density: g.bulk_density(),
@@ -129,7 +128,7 @@ impl TwoFluid {
             &mut self.workspace.a_vg,
         );
         let (nx, ny) = (grid.nx(), grid.ny());
-        let components = Component::both(nx, ny, self.settings.periodic_x);
+        let components = Component::both(nx, ny, self.grid.periodic_x());
         let fixed = [
             self.workspace.a_ug.pattern().fixed_mask(),
             self.workspace.a_vg.pattern().fixed_mask(),
@@ -184,7 +183,7 @@ impl TwoFluid {
                 .map_err(lin("solids v momentum"))?
                 .iterations;
         }
-        if self.settings.periodic_x {
+        if self.grid.periodic_x() {
             // node nx of a periodic column is node 0 (fixed in the solves)
             let (nx, ny) = (self.grid.nx(), self.grid.ny());
             let mx = nx + 1;

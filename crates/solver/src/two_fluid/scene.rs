@@ -17,8 +17,7 @@
 
 use std::fmt;
 
-use runout_mesh::{Side, Sides};
-use runout_walls::{SolidsWallModel, Specularity};
+use runout_mesh::{Grid, Side, Sides};
 
 use super::{SolidsSpec, TwoFluidSettings};
 use crate::single_phase::SideBc;
@@ -64,33 +63,10 @@ pub struct Scene {
     pub exact_solids_continuity: bool,
 }
 
-/// The name of a state-dependent or fixed solids wall model.
-fn wall_name(model: &SolidsWallModel) -> String {
-    match model {
-        SolidsWallModel::NoSlip => "no-slip".into(),
-        SolidsWallModel::FreeSlip => "free-slip".into(),
-        SolidsWallModel::PartialSlip(p) => {
-            format!(
-                "user partial slip (h_w^u = {} m⁻¹, h_w^θ = {} m⁻¹)",
-                p.h_u, p.h_theta
-            )
-        }
-        SolidsWallModel::JohnsonJackson {
-            specularity: Specularity::Constant(phi),
-            ..
-        } => format!("Johnson–Jackson (φ = {phi})"),
-        SolidsWallModel::JohnsonJackson {
-            specularity: Specularity::LiBenyahia(_),
-            ..
-        } => "Johnson–Jackson revisited (Li–Benyahia φ(r))".into(),
-        SolidsWallModel::Jenkins { .. } => "Jenkins".into(),
-    }
-}
-
 /// The closure of one side of one phase.
 fn side_closure(spec: &SolidsSpec, side: Side) -> WallClosure {
     if let Some(model) = spec.wall_models.get(side) {
-        return WallClosure::PerFace(wall_name(model));
+        return WallClosure::PerFace(model.describe());
     }
     match spec.walls.get(side) {
         SideBc::Wall(face) if face.g == 0.0 => WallClosure::Fixed("no-slip".into()),
@@ -127,19 +103,19 @@ impl PhaseScene {
 }
 
 impl Scene {
-    /// The scene of a solver with these phases and settings on `cells`.
+    /// The scene of a solver with these phases and settings on `grid`.
     pub fn of(
-        cells: (usize, usize),
+        grid: &Grid,
         specs: &[SolidsSpec],
         settings: &TwoFluidSettings,
         sidewall_width: Option<f64>,
     ) -> Scene {
         Scene {
-            cells,
+            cells: (grid.nx(), grid.ny()),
             phases: specs.iter().map(PhaseScene::of).collect(),
             scheme: format!("{:?}", settings.scheme),
             sidewalls: sidewall_width,
-            periodic_x: settings.periodic_x,
+            periodic_x: grid.periodic_x(),
             exact_solids_continuity: settings.exact_solids_continuity,
         }
     }

@@ -30,10 +30,13 @@ impl TwoFluid {
             return Err(TwoFluidError::TooManyPhases(solids_specs.len()));
         }
         let (nx, ny) = (grid.nx(), grid.ny());
-        let scene = Scene::of((nx, ny), &solids_specs, &settings, None);
+        let scene = Scene::of(&grid, &solids_specs, &settings, None);
         let n = nx * ny;
         let outlet = |b: &SideBc| !matches!(b, SideBc::Wall(_));
-        let periodic = settings.periodic_x;
+        if grid.y.is_periodic() {
+            return Err(TwoFluidError::PeriodicY);
+        }
+        let periodic = grid.periodic_x();
         if periodic && (nx != 1 || outlet(&gas_walls.west) || outlet(&gas_walls.east)) {
             return Err(TwoFluidError::PeriodicColumn(nx));
         }

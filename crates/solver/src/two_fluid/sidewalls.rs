@@ -20,7 +20,7 @@
 
 use runout_closures::ClosureParams;
 use runout_mesh::Grid;
-use runout_walls::{MomentumBranch, MomentumWallState, SolidsWallModel, ThetaWallState};
+use runout_walls::{MomentumWallState, SolidsWallModel, ThetaWallState};
 
 use super::component::Component;
 use super::{PhaseCoefficients, PhaseWork, SolidsSpec, State};
@@ -75,57 +75,35 @@ pub struct SidewallTerms {
 impl Sidewalls {
     /// τ_w/u_s = K of the solids at one cell [Pa s m⁻¹] (module doc).
     pub fn stress_per_slip(&self, cell: &SidewallCell, params: &ClosureParams) -> f64 {
-        let k = match &self.solids {
-            SolidsWallModel::FreeSlip => 0.0,
-            SolidsWallModel::NoSlip => 6.0 * cell.mu_s / self.width,
-            SolidsWallModel::PartialSlip(user) => cell.mu_s * user.h_u,
-            SolidsWallModel::JohnsonJackson { .. } | SolidsWallModel::Jenkins { .. } => {
-                let wall = self.solids.momentum(
-                    &MomentumWallState {
-                        eps_s_fluid: cell.eps_s,
-                        eps_s: cell.eps_s,
-                        theta: cell.theta,
-                        slip: cell.speed,
-                        gas_slip: cell.gas_slip,
-                        tr_d: cell.tr_d,
-                        s_ddot_s: cell.s_ddot_s,
-                        // the wall normal z: D_zz = 0
-                        s_nn: -cell.tr_d / 3.0,
-                    },
-                    params,
-                );
-                let d = wall.diagnostics;
-                match d.branch {
-                    MomentumBranch::Kinetic => d.col,
-                    MomentumBranch::KineticFrictional => d.col + d.fri,
-                    _ => 0.0,
-                }
-            }
+        let state = MomentumWallState {
+            eps_s_fluid: cell.eps_s,
+            eps_s: cell.eps_s,
+            theta: cell.theta,
+            slip: cell.speed,
+            gas_slip: cell.gas_slip,
+            tr_d: cell.tr_d,
+            s_ddot_s: cell.s_ddot_s,
+            // the wall normal z: D_zz = 0
+            s_nn: -cell.tr_d / 3.0,
         };
+        let k = self
+            .solids
+            .side_wall_stress_per_slip(&state, cell.mu_s, self.width, params);
         k.min(MAX_STRESS_PER_SLIP)
     }
 
     /// (h_θ, c_θ) of the walls' granular-energy flux q_w = c_θ − h_θ θ at one cell
     /// [kg m⁻² s⁻¹, kg s⁻³] (module doc).
     pub fn theta_flux(&self, cell: &SidewallCell, params: &ClosureParams) -> (f64, f64) {
-        let face = self
-            .solids
-            .granular_temperature(
-                &ThetaWallState {
-                    eps_s: cell.eps_s,
-                    theta: cell.theta,
-                    slip: cell.speed,
-                    gas_slip: cell.gas_slip,
-                },
-                params,
-            )
-            .face;
-        match self.solids {
-            // MFIX's manual units: dθ/dn + h_θ θ = c, the flux κ_s times it
-            SolidsWallModel::PartialSlip(_) => (cell.kappa_s * face.h, cell.kappa_s * face.c),
-            // zero flux (g = 1, h = c = 0) or the JJ/Jenkins flux form κ ∂θ/∂n + h_θ θ = c_θ
-            _ => (face.h, face.c),
-        }
+        let state = ThetaWallState {
+            eps_s: cell.eps_s,
+            theta: cell.theta,
+            slip: cell.speed,
+            gas_slip: cell.gas_slip,
+        };
+        let face = self.solids.granular_temperature(&state, params).face;
+        let factor = self.solids.theta_flux_factor(cell.kappa_s);
+        (factor * face.h, factor * face.c)
     }
 
     /// The cell's width-averaged terms (module doc).

@@ -77,10 +77,7 @@ impl ChuteSidewalls {
             .face;
         // JJ and Jenkins: κ ∂θ/∂n + h_θ θ = c_θ, the flux into the flow c_θ − h_θ θ; the
         // user form is in MFIX's manual units (times κ_s); no-/free-slip: zero flux
-        let scale = match self.solids {
-            SolidsWallModel::PartialSlip(_) => kappa_s,
-            _ => 1.0,
-        };
+        let scale = self.solids.theta_flux_factor(kappa_s);
         SidewallLoad {
             momentum: per_width * stress,
             generation: per_width * scale * face.c,

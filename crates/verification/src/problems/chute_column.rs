@@ -1,7 +1,7 @@
 //! Issue 7's inclined-plane check: steady, fully developed flow down a slope with a
-//! Johnson–Jackson floor, computed by the 2-D two-fluid solver on a periodic column
-//! ([`TwoFluidSettings::periodic_x`]) marched in time to a steady state, against the 1-D
-//! steady boundary-value solve of the same equations and closures ([`crate::chute1d`]),
+//! Johnson–Jackson floor, computed by the 2-D two-fluid solver on a periodic column (a
+//! periodic x axis, [`runout_mesh::Axis::periodic`]) marched in time to a steady state,
+//! against the 1-D steady boundary-value solve of the same equations and closures ([`crate::chute1d`]),
 //! on the same y grid. Run by the `chute` check ([`crate::checks::chute`]): fast in
 //! `crates/verification/tests/chute_column.rs`, full by `cargo xtask verify chute`
 //! (docs/chute.md).
@@ -267,7 +267,9 @@ fn column(
 ) -> Result<TwoFluid, ChuteCheckError> {
     // the 2-D column: one cell across (its width drops out), the same y grid
     let grid = Grid::new(
-        Axis::uniform(0.0, setup.height, 1).map_err(|e| ChuteCheckError::Column(e.to_string()))?,
+        Axis::uniform(0.0, setup.height, 1)
+            .map_err(|e| ChuteCheckError::Column(e.to_string()))?
+            .periodic(),
         axis,
     );
     let params = ClosureParams {
@@ -312,7 +314,6 @@ fn column(
     let gravity = (g * alpha.sin(), -g * alpha.cos());
     let settings = TwoFluidSettings {
         scheme: Scheme::Upwind,
-        periodic_x: true,
         ..TwoFluidSettings::default()
     };
     let gas = Fluid {

@@ -25,7 +25,7 @@ pub const THETA0: f64 = 0.5;
 
 /// The paper's material with Princeton friction, εs,max = 0.65.
 pub fn params() -> ClosureParams {
-    paper_particles_in_air(FrictionModel::Princeton, 0.65)
+    paper_particles_in_air(FrictionModel::princeton(), 0.65)
 }
 
 /// The exact θ(t) of the cooling law above ([`damped_cooling_theta`]).

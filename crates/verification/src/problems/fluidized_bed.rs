@@ -85,7 +85,7 @@ fn bed_solver() -> anyhow::Result<TwoFluid> {
         },
         friction: FrictionParams::new(0.65, 0.5, 35.0),
         radial: RadialDistribution::CarnahanStarling,
-        friction_model: FrictionModel::Princeton,
+        friction_model: FrictionModel::princeton(),
         drag: Drag::Gidaspow,
     };
     let spec = SolidsSpec {

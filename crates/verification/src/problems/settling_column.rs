@@ -29,7 +29,7 @@ pub fn column(steps: usize, dt: f64, verbose: bool) -> anyhow::Result<(TwoFluid,
     let no_slip = SideBc::Wall(RobinFace::dirichlet(0.0));
     let free_slip = SideBc::Wall(RobinFace::ZERO_GRADIENT);
     let zero_flux = Some(RobinFace::ZERO_GRADIENT);
-    let params = paper_particles_in_air(FrictionModel::Princeton, 0.65);
+    let params = paper_particles_in_air(FrictionModel::princeton(), 0.65);
     let spec = SolidsSpec {
         params,
         eps_max: 0.65,
