@@ -128,6 +128,18 @@ pub(super) fn since(t: Instant) -> f64 {
     t.elapsed().as_secs_f64()
 }
 
+/// What the solver records about itself: where the time went, how often each optional piece
+/// ran, and where the residuals of the last outer iteration were largest.
+#[derive(Clone, Debug, Default)]
+pub(super) struct Diagnostics {
+    /// where the time went
+    pub(super) profile: Profile,
+    /// how often each optional piece ran
+    pub(super) counters: Counters,
+    /// where the residuals of the last outer iteration were largest
+    pub(super) worst: Worst,
+}
+
 /// Locations of the largest residuals of the last outer iteration (for diagnoses).
 #[derive(Clone, Copy, Debug, Default)]
 pub(super) struct Worst {
@@ -156,7 +168,7 @@ impl TwoFluid {
             )
         };
         let mut out = Vec::new();
-        let (r, p, dir, i, j) = self.worst.momentum;
+        let (r, p, dir, i, j) = self.diagnostics.worst.momentum;
         if r > 0.0 {
             let phase = if p == 0 {
                 "gas".to_string()
@@ -189,7 +201,7 @@ impl TwoFluid {
                 ));
             }
         }
-        let (r, k) = self.worst.theta;
+        let (r, k) = self.diagnostics.worst.theta;
         if r > 0.0 {
             out.push(format!(
                 "granular energy: largest residual {r:.3e} in {}",

@@ -45,10 +45,10 @@ impl TwoFluid {
                 &mut s.eps_prime,
             )
             .map_err(lin("solids volume fraction"))?;
-            self.profile.iterations.eps += iterations as u64;
+            self.diagnostics.profile.iterations.eps += iterations as u64;
             let solve = since(t);
-            self.profile.eps_solve += solve;
-            self.profile.eps_assembly -= solve;
+            self.diagnostics.profile.eps_solve += solve;
+            self.diagnostics.profile.eps_assembly -= solve;
             apply_correction(
                 &self.grid,
                 &mut s.eps_prime,
@@ -66,7 +66,7 @@ impl TwoFluid {
                 for (ps, &e) in coef.p_star.iter_mut().zip(p.eps.iter()) {
                     *ps = star.p_star(e, &spec.params.friction);
                 }
-                self.counters.plastic_pressure_cells += coef.p_star.len() as u64;
+                self.diagnostics.counters.plastic_pressure_cells += coef.p_star.len() as u64;
             }
             Ok(())
         })?;

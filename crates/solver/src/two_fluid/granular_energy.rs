@@ -88,7 +88,7 @@ impl TwoFluid {
             };
             residual += rows.finish(&mut s.a_theta, &mut worst_theta);
             let t = Instant::now();
-            self.profile.iterations.theta += self
+            self.diagnostics.profile.iterations.theta += self
                 .workspace
                 .solvers
                 .theta
@@ -96,12 +96,12 @@ impl TwoFluid {
                 .map_err(lin("granular energy"))?
                 .iterations as u64;
             let solve = since(t);
-            self.profile.theta_solve += solve;
-            self.profile.theta_assembly -= solve;
+            self.diagnostics.profile.theta_solve += solve;
+            self.diagnostics.profile.theta_assembly -= solve;
             p.theta.iter_mut().for_each(|t| *t = t.max(THETA_SMALL));
         }
         self.workspace.flags.theta_class_fresh = false;
-        self.worst.theta = worst_theta;
+        self.diagnostics.worst.theta = worst_theta;
         Ok(residual)
     }
 }

@@ -76,7 +76,7 @@ use runout_walls::{RobinFace, SolidsWallModel};
 use crate::single_phase::{Fluid, SideBc};
 use crate::transport::Scheme;
 use coefficients::PhaseCoefficients;
-use diagnostics::{since, Worst};
+use diagnostics::{since, Diagnostics};
 use residuals::Convergence;
 use wall_closures::PhaseWallClosures;
 use walls::{GasNearWalls, WallRelaxation};
@@ -243,14 +243,10 @@ pub struct TwoFluid {
     wall_closures: Vec<PhaseWallClosures>,
     /// work arrays, stencils, linear solvers and iteration flags
     workspace: Workspace,
-    /// where the time went
-    profile: Profile,
-    /// how often each optional piece ran
-    counters: Counters,
+    /// profile timers, counters and the worst residual locations
+    diagnostics: Diagnostics,
     /// what this solver computes (derived when built, and when the side walls are set)
     scene: Scene,
-    /// where the residuals of the last outer iteration were largest
-    worst: Worst,
     /// the side walls of a quasi-2-D channel (docs/model.md §8), none in a plane flow
     sidewalls: Option<Sidewalls>,
 }
@@ -281,7 +277,7 @@ impl TwoFluid {
 
     /// How often each optional piece of the outer iteration ran ([`Counters`]).
     pub fn counters(&self) -> Counters {
-        self.counters.clone()
+        self.diagnostics.counters.clone()
     }
 
     /// The scene of the current phases, settings and side walls.
@@ -399,7 +395,7 @@ impl TwoFluid {
         if !std::mem::take(&mut self.workspace.flags.closures_fresh) {
             let t = Instant::now();
             self.update_closures();
-            self.profile.closures += since(t);
+            self.diagnostics.profile.closures += since(t);
         }
         let t = Instant::now();
         if self.scene.has_per_face_walls() {
@@ -414,23 +410,23 @@ impl TwoFluid {
                 &self.solids_specs,
             );
         }
-        self.profile.walls += since(t);
+        self.diagnostics.profile.walls += since(t);
         // 2. momentum of every phase, drag by partial elimination
         let t = Instant::now();
         let momentum = self.momentum(dt)?;
-        self.profile.momentum_assembly += since(t);
+        self.diagnostics.profile.momentum_assembly += since(t);
         // 3. solids volume-fraction correction, εg = 1 − Σεs
         let t = Instant::now();
         let solids_mass = self.volume_fraction_correction(dt)?;
-        self.profile.eps_assembly += since(t);
+        self.diagnostics.profile.eps_assembly += since(t);
         // 4. gas pressure correction
         let t = Instant::now();
         let gas_mass = self.pressure_correction(dt)?;
-        self.profile.pressure_assembly += since(t);
+        self.diagnostics.profile.pressure_assembly += since(t);
         // 5. granular energy
         let t = Instant::now();
         let theta = self.granular_energy(dt)?;
-        self.profile.theta_assembly += since(t);
+        self.diagnostics.profile.theta_assembly += since(t);
         // 6. residuals (each stage returned its own)
         Ok(TwoFluidResiduals {
             momentum,
@@ -442,7 +438,7 @@ impl TwoFluid {
 
     /// Step 1: closures per cell and phase at the current iterate ([`closures`]).
     fn update_closures(&mut self) {
-        self.counters.cell_closures += closures::update_closures(
+        self.diagnostics.counters.cell_closures += closures::update_closures(
             &self.grid,
             &self.state,
             &mut self.wall_closures,
@@ -472,7 +468,7 @@ impl TwoFluid {
             &self.solids_specs,
         );
         for side in Side::ALL {
-            *self.counters.wall_closure_faces.get_mut(side) += faces.get(side);
+            *self.diagnostics.counters.wall_closure_faces.get_mut(side) += faces.get(side);
         }
     }
 }
@@ -511,10 +507,10 @@ impl TwoFluid {
         let mean_volume = self.grid.x.length() * self.grid.y.length() / self.eps_g().len() as f64;
         let t = Instant::now();
         self.update_closures();
-        self.profile.closures += since(t);
+        self.diagnostics.profile.closures += since(t);
         let t = Instant::now();
         self.update_stress_sources();
-        self.profile.stress += since(t);
+        self.diagnostics.profile.stress += since(t);
         self.workspace.flags.closures_fresh = true;
         let mut convergence = Convergence::new();
         let mut out = TwoFluidStep {
@@ -582,7 +578,7 @@ impl TwoFluid {
 
     /// Wall time per part of the outer iteration so far.
     pub fn profile(&self) -> Profile {
-        self.profile
+        self.diagnostics.profile
     }
 
     /// Gas enters through the wall sides given, at this velocity normal to the side into

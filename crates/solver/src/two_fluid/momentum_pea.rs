@@ -36,7 +36,7 @@ use crate::transport::FaceData;
 impl TwoFluid {
     /// Step 2 (module doc); returns the momentum residual summed over u and v.
     pub(super) fn momentum(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
-        self.worst.momentum = (0.0, 0, 0, 0, 0);
+        self.diagnostics.worst.momentum = (0.0, 0, 0, 0, 0);
         self.assemble_momentum(dt);
         let (nx, ny) = (self.grid.nx(), self.grid.ny());
         let mut residual = 0.0;
@@ -69,16 +69,16 @@ impl TwoFluid {
                     coefficients: &self.coefficients,
                     work: &mut self.workspace.solids,
                 },
-                &mut self.worst.momentum,
+                &mut self.diagnostics.worst.momentum,
             );
             fix_wall_rows(c, &self.gas_inflow, &mut gas, &mut self.workspace.solids);
         }
         let t = Instant::now();
-        self.profile.iterations.momentum += self.solve_momentum()? as u64;
+        self.diagnostics.profile.iterations.momentum += self.solve_momentum()? as u64;
         // solves are reported apart from the assembly that encloses them
         let solve = since(t);
-        self.profile.momentum_solve += solve;
-        self.profile.momentum_assembly -= solve;
+        self.diagnostics.profile.momentum_solve += solve;
+        self.diagnostics.profile.momentum_assembly -= solve;
         Ok(residual)
     }
 

@@ -44,7 +44,7 @@ impl TwoFluid {
         );
         self.workspace.p_corr.iter_mut().for_each(|x| *x = 0.0);
         let t = Instant::now();
-        self.profile.iterations.pressure += solve_keeping_preconditioner(
+        self.diagnostics.profile.iterations.pressure += solve_keeping_preconditioner(
             self.workspace.solvers.p.as_mut(),
             &self.workspace.a_p,
             &mut self.workspace.p_corr,
@@ -55,8 +55,8 @@ impl TwoFluid {
         // both multigrid hierarchies of this step are built (ε' is solved first)
         self.workspace.flags.rebuild_preconditioners = false;
         let solve = since(t);
-        self.profile.pressure_solve += solve;
-        self.profile.pressure_assembly -= solve;
+        self.diagnostics.profile.pressure_solve += solve;
+        self.diagnostics.profile.pressure_assembly -= solve;
         let g = self.state.gas_mut();
         correct_velocities(
             (nx, ny),

@@ -6,7 +6,7 @@
 use runout_linsolve::{build, LinearSolver, LinearSolverKind, MultigridParams, Pattern, Stencil5};
 use runout_mesh::{Grid, Sides};
 
-use super::diagnostics::{Counters, Profile, Worst};
+use super::diagnostics::Diagnostics;
 use super::{
     lin, IterationFlags, PhaseCoefficients, PhaseWallClosures, PhaseWork, Scene, SolidsSpec,
     Solvers, State, TwoFluid, TwoFluidError, TwoFluidSettings, Workspace, MAX_SOLIDS_PHASES,
@@ -81,10 +81,8 @@ impl TwoFluid {
                     theta_class_fresh: true,
                 },
             },
-            profile: Profile::default(),
-            counters: Counters::default(),
+            diagnostics: Diagnostics::default(),
             scene,
-            worst: Worst::default(),
             sidewalls: None,
             grid,
             gas,
