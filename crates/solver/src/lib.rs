@@ -1,7 +1,8 @@
 //! runout-solver: the finite-volume machinery of runout (docs/model.md §4).
 //!
 //! - [`transport`]: upwind/Superbee convection and diffusion on a structured block;
-//! - [`momentum`]: one phase's momentum equations with variable ρε, ε, μ (docs/model.md §4.4);
+//! - [`momentum`]: one phase's momentum equations with variable ρε, ε, μ (docs/model.md §4.4),
+//!   u and v assembled once through the [`staggered`] component view;
 //! - [`single_phase`]: the incompressible SIMPLE core on a stretched staggered grid;
 //! - [`two_fluid`]: the first two-fluid model (gas + M solids, docs/model.md §4.9) built from
 //!   [`energy`] (granular energy, §4.8),
@@ -21,6 +22,7 @@ pub mod kinematics;
 pub mod momentum;
 pub mod pea;
 pub mod single_phase;
+pub mod staggered;
 pub mod state;
 pub mod stress;
 pub mod transport;

@@ -15,7 +15,8 @@ use runout_linsolve::{build, LinSolveError, LinearSolver, LinearSolverKind, Patt
 use runout_mesh::{Grid, Sides};
 use runout_walls::RobinFace;
 
-use crate::momentum::{assemble_u, assemble_v, fixed_row, neighbour_sum, Context, PhaseFields};
+use crate::momentum::{assemble, fixed_row, neighbour_sum, Context, PhaseFields};
+use crate::staggered::Component;
 use crate::transport::{FaceData, Scheme};
 
 /// Condition on one side of the domain.
@@ -427,9 +428,11 @@ impl SinglePhase {
             explicit_source: None,
             skip: None,
         };
-        assemble_u(
+        let [cu, _] = Component::of_grid(&self.grid);
+        assemble(
             &ctx,
             &phase,
+            cu,
             &self.u,
             &self.v,
             &self.u_old,
@@ -481,9 +484,11 @@ impl SinglePhase {
             explicit_source: None,
             skip: None,
         };
-        assemble_v(
+        let [_, cv] = Component::of_grid(&self.grid);
+        assemble(
             &ctx,
             &phase,
+            cv,
             &self.u,
             &self.v,
             &self.v_old,

@@ -14,9 +14,9 @@
 use runout_linsolve::Stencil5;
 use runout_walls::RobinFace;
 
-use super::component::Component;
 use super::DIL_EP_S;
 use crate::momentum::fixed_row;
+use crate::staggered::Component;
 use runout_mesh::Grid;
 
 /// Marks the dilute velocity nodes of a solids phase, component `c`: εs interpolated to

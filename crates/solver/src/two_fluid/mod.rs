@@ -23,7 +23,7 @@
 //! the wall face velocities in the strain rates of wall cells (§4.4, [`walls`]); the
 //! continuity face values of the convection scheme (§4.2); the DIL_EP_S treatment of dilute
 //! faces and cells (§2.7, §4.8, [`dilute`]); u and v written once through a staggered
-//! [`component`] view; time and residual locations in [`diagnostics`].
+//! component view ([`crate::staggered`]); time and residual locations in [`diagnostics`].
 //!
 //! What the solver holds: the fields ([`state`], keeping εg = 1 − Σεs), the closure values
 //! per cell and phase as a struct of arrays ([`coefficients`]), the wall closures between
@@ -45,7 +45,6 @@ use std::time::Instant;
 mod checkpoint;
 mod closures;
 mod coefficients;
-mod component;
 mod diagnostics;
 mod dilute;
 mod eps_correction;

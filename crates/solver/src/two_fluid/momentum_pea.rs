@@ -20,7 +20,6 @@ use std::time::Instant;
 use runout_linsolve::Stencil5;
 use runout_mesh::{Grid, Sides};
 
-use super::component::Component;
 use super::diagnostics::since;
 use super::dilute::{dilute_faces, dilute_row};
 use super::residuals::CoupledNode;
@@ -29,8 +28,9 @@ use super::{
     lin, PhaseCoefficients, PhaseState, PhaseWallClosures, PhaseWork, SolidsSpec, TwoFluid,
     TwoFluidError, MAX_SOLIDS_PHASES,
 };
-use crate::momentum::{assemble_u, assemble_v, fixed_row, neighbour_sum, Context, PhaseFields};
+use crate::momentum::{assemble, fixed_row, neighbour_sum, Context, PhaseFields};
 use crate::pea::eliminate_node;
+use crate::staggered::Component;
 use crate::transport::FaceData;
 
 impl TwoFluid {
@@ -38,9 +38,8 @@ impl TwoFluid {
     pub(super) fn momentum(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
         self.diagnostics.worst.momentum = (0.0, 0, 0, 0, 0);
         self.assemble_momentum(dt);
-        let (nx, ny) = (self.grid.nx(), self.grid.ny());
         let mut residual = 0.0;
-        for c in Component::both(nx, ny, self.grid.periodic_x()) {
+        for c in Component::of_grid(&self.grid) {
             let (a, d) = c.pick(
                 (&mut self.workspace.a_ug, &mut self.workspace.d_u),
                 (&mut self.workspace.a_vg, &mut self.workspace.d_v),
@@ -108,27 +107,12 @@ impl TwoFluid {
             explicit_source: None,
             skip: None,
         };
+        let [cu, cv] = Component::of_grid(grid);
         let (u_g, v_g) = (&g.u, &g.v);
-        assemble_u(
-            &ctx_gas,
-            &gas_fields,
-            u_g,
-            v_g,
-            &g.old().u,
-            &mut self.workspace.u_faces,
-            &mut self.workspace.a_ug,
-        );
-        assemble_v(
-            &ctx_gas,
-            &gas_fields,
-            u_g,
-            v_g,
-            &g.old().v,
-            &mut self.workspace.v_faces,
-            &mut self.workspace.a_vg,
-        );
-        let (nx, ny) = (grid.nx(), grid.ny());
-        let components = Component::both(nx, ny, self.grid.periodic_x());
+        let (faces, a) = (&mut self.workspace.u_faces, &mut self.workspace.a_ug);
+        assemble(&ctx_gas, &gas_fields, cu, u_g, v_g, &g.old().u, faces, a);
+        let (faces, a) = (&mut self.workspace.v_faces, &mut self.workspace.a_vg);
+        assemble(&ctx_gas, &gas_fields, cv, u_g, v_g, &g.old().v, faces, a);
         let fixed = [
             self.workspace.a_ug.pattern().fixed_mask(),
             self.workspace.a_vg.pattern().fixed_mask(),
@@ -136,7 +120,7 @@ impl TwoFluid {
         let faces = [&mut self.workspace.u_faces, &mut self.workspace.v_faces];
         assemble_solids(
             &ctx_gas,
-            components,
+            [cu, cv],
             fixed,
             faces,
             SolidsParts {
@@ -262,13 +246,31 @@ fn assemble_solids(
             explicit_source: Some(&coef.tau_u),
             skip: Some(&s.dilute_u),
         };
-        assemble_u(&ctx, &fields, &p.u, &p.v, &p.old().u, u_faces, &mut s.a_u);
+        assemble(
+            &ctx,
+            &fields,
+            cu,
+            &p.u,
+            &p.v,
+            &p.old().u,
+            u_faces,
+            &mut s.a_u,
+        );
         let fields_v = PhaseFields {
             explicit_source: Some(&coef.tau_v),
             skip: Some(&s.dilute_v),
             ..fields
         };
-        assemble_v(&ctx, &fields_v, &p.u, &p.v, &p.old().v, v_faces, &mut s.a_v);
+        assemble(
+            &ctx,
+            &fields_v,
+            cv,
+            &p.u,
+            &p.v,
+            &p.old().v,
+            v_faces,
+            &mut s.a_v,
+        );
     }
 }
 

@@ -22,8 +22,8 @@ use runout_closures::ClosureParams;
 use runout_mesh::Grid;
 use runout_walls::{MomentumWallState, SolidsWallModel, ThetaWallState};
 
-use super::component::Component;
 use super::{PhaseCoefficients, PhaseWork, SolidsSpec, State};
+use crate::staggered::Component;
 
 /// Largest K [Pa s m⁻¹]: Jenkins' COL = tan δ_w P_k/|u_s| overflows as |u_s| → 0; far below
 /// this bound a cell's velocity is already zero to rounding.

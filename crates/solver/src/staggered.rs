@@ -1,32 +1,43 @@
-//! One staggered velocity component of the two-fluid stages: u on the x-faces or v on the
-//! y-faces (docs/model.md §4.1). The momentum equation is the same in x and y
-//! (docs/model.md §4.4); what differs between u and v is only the node block, which cells lie
-//! beside a node, the area of its face and which wall a fixed node sits on. [`Component`]
-//! answers those questions, so the partial elimination, the dilute-face rules and the wall
-//! rows of the momentum stage are written once for both components.
+//! One staggered velocity component: u on the x-faces or v on the y-faces (docs/model.md
+//! §4.1). The momentum equation is the same in x and y (docs/model.md §4.4); what differs
+//! between u and v is only the node block, which cells lie beside a node, the area of its
+//! face and which wall a fixed node sits on. [`Component`] answers those questions, so the
+//! momentum assembly ([`crate::momentum::assemble`]), the partial elimination, the
+//! dilute-face rules and the wall rows of the two-fluid momentum stage are written once for
+//! both components.
 //!
 //! Node (i, j) of u lies on the x-face between cells (i − 1, j) and (i, j), node (i, j) of v
 //! on the y-face between cells (i, j − 1) and (i, j); a node on the domain boundary has one
 //! cell beside it. Cell indices are k = i + nx·j, node indices k = i + mx·j.
+//!
+//! The assembly reads the grid in the component's own coordinates (a, b): a along the
+//! component (x for u, y for v), b across it. Cell (a, b), node (a, b) (between cells
+//! (a − 1, b) and (a, b)) and the other component's node (a, b) (between cells (a, b − 1)
+//! and (a, b)) map to the arrays' indices through strides ([`Component::cell`],
+//! [`Component::node`], [`Component::cross_node`]); the sides at the two ends of a line of
+//! nodes are the "ends" (west/east for u), the sides parallel to it the "walls"
+//! (south/north for u).
 
-use runout_mesh::{Axis, Grid, Sides};
+use runout_mesh::{Axis, Grid, Side, Sides};
+
+use crate::transport::FaceData;
 
 /// A staggered velocity component as a view of the grid (module doc).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct Component {
+pub struct Component {
     /// 0: u on the x-faces, 1: v on the y-faces
-    pub dir: usize,
+    pub(crate) dir: usize,
     /// cells per row
-    pub nx: usize,
+    pub(crate) nx: usize,
     /// cells per column
-    pub ny: usize,
+    pub(crate) ny: usize,
     /// nodes per row of the component's block
-    pub mx: usize,
+    pub(crate) mx: usize,
     /// nodes per column of the component's block
-    pub my: usize,
+    pub(crate) my: usize,
     /// u of a periodic-x column (`Grid::periodic_x`): node 0 lies between cell
     /// nx − 1 and cell 0, and there is no x gradient of P'_g or of K_cp ε'
-    pub periodic: bool,
+    pub(crate) periodic: bool,
 }
 
 impl Component {
@@ -60,6 +71,7 @@ impl Component {
     }
 
     /// The member of a (u, v) pair that belongs to this component.
+    #[inline]
     pub fn pick<T>(self, u: T, v: T) -> T {
         if self.dir == 0 {
             u
@@ -69,6 +81,7 @@ impl Component {
     }
 
     /// The grid axis along the component (x for u, y for v).
+    #[inline]
     pub fn axis(self, grid: &Grid) -> &Axis {
         self.pick(&grid.x, &grid.y)
     }
@@ -135,6 +148,115 @@ impl Component {
                 _ => 0.0,
             }
         }
+    }
+}
+
+/// The component's own coordinates (a along, b across; module doc).
+impl Component {
+    /// u and v of `grid` (u periodic where the grid's x axis is).
+    pub fn of_grid(grid: &Grid) -> [Self; 2] {
+        Self::both(grid.nx(), grid.ny(), grid.periodic_x())
+    }
+
+    /// Cells along and across the component: (nx, ny) for u, (ny, nx) for v.
+    #[inline]
+    pub fn cells_along_across(self) -> (usize, usize) {
+        self.pick((self.nx, self.ny), (self.ny, self.nx))
+    }
+
+    /// The grid axis across the component (y for u, x for v).
+    #[inline]
+    pub fn across_axis(self, grid: &Grid) -> &Axis {
+        self.pick(&grid.y, &grid.x)
+    }
+
+    /// (i, j) of position (a, b).
+    #[inline]
+    pub fn xy(self, a: usize, b: usize) -> (usize, usize) {
+        self.pick((a, b), (b, a))
+    }
+
+    /// Index of cell (a, b).
+    #[inline]
+    pub fn cell(self, a: usize, b: usize) -> usize {
+        let (i, j) = self.xy(a, b);
+        i + self.nx * j
+    }
+
+    /// Index of the component's node (a, b), between cells (a − 1, b) and (a, b).
+    #[inline]
+    pub fn node(self, a: usize, b: usize) -> usize {
+        let (i, j) = self.xy(a, b);
+        i + self.mx * j
+    }
+
+    /// Index of the other component's node (a, b), between cells (a, b − 1) and (a, b): v
+    /// at (a, b) for u, u at (b, a) for v.
+    #[inline]
+    pub fn cross_node(self, a: usize, b: usize) -> usize {
+        let (i, j) = self.xy(a, b);
+        i + self.pick(self.nx, self.nx + 1) * j
+    }
+
+    /// The cells (along index) before and after node a of a line; a periodic column's node
+    /// 0 lies between cell nx − 1 and cell 0.
+    #[inline]
+    pub fn cells_beside(self, a: usize) -> (Option<usize>, Option<usize>) {
+        let (n, _) = self.cells_along_across();
+        if self.periodic && a == 0 {
+            (Some(n - 1), Some(0))
+        } else {
+            (a.checked_sub(1), (a < n).then_some(a))
+        }
+    }
+
+    /// Distance weight of cell `lo` at the face between cells `lo` and `hi` along the
+    /// component (½ across a periodic wrap).
+    #[inline]
+    pub fn along_weight(self, grid: &Grid, lo: usize, hi: usize) -> f64 {
+        if lo < hi {
+            self.axis(grid).interpolation_weight(lo)
+        } else {
+            0.5
+        }
+    }
+
+    /// Width along the component of node a's control volume: centre to centre inside,
+    /// half a cell at the ends, the whole cell for a periodic column's node 0
+    /// (docs/model.md §4.1).
+    #[inline]
+    pub fn control_width(self, grid: &Grid, a: usize) -> f64 {
+        let widths = self.axis(grid).widths();
+        if self.periodic && a == 0 {
+            0.5 * (widths[widths.len() - 1] + widths[0])
+        } else {
+            crate::momentum::cv_width(widths, a)
+        }
+    }
+
+    /// The sides at the low and high end of a line of nodes (west, east for u).
+    pub fn end_sides(self) -> (Side, Side) {
+        self.pick((Side::West, Side::East), (Side::South, Side::North))
+    }
+
+    /// The sides parallel to the component (south, north for u).
+    pub fn wall_sides(self) -> (Side, Side) {
+        self.pick((Side::South, Side::North), (Side::West, Side::East))
+    }
+
+    /// Index in `faces` of the face between nodes (a − 1, b) and (a, b), through cell
+    /// (a − 1, b)'s centre (an x-face of the node block for u, a y-face for v).
+    #[inline]
+    pub fn along_face(self, faces: &FaceData, a: usize, b: usize) -> usize {
+        let (i, j) = self.xy(a, b);
+        self.pick(faces.xf(i, j), faces.yf(i, j))
+    }
+
+    /// Index in `faces` of the face between nodes (a, b − 1) and (a, b).
+    #[inline]
+    pub fn across_face(self, faces: &FaceData, a: usize, b: usize) -> usize {
+        let (i, j) = self.xy(a, b);
+        self.pick(faces.yf(i, j), faces.xf(i, j))
     }
 }
 
