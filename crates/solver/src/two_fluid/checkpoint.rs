@@ -30,7 +30,7 @@ impl TwoFluid {
     /// The state the next step reads (module doc).
     pub fn save_state(&self) -> SolverState {
         let mut st = SolverState::default();
-        st.put("gravity", &[self.gravity.0, self.gravity.1]);
+        st.put("gravity", &[self.model.gravity.0, self.model.gravity.1]);
         let g = self.state.gas();
         st.put("eps_g", g.eps());
         st.put("p_g", &g.p);
@@ -106,7 +106,7 @@ impl TwoFluid {
     pub fn load_state(&mut self, st: &SolverState) -> Result<(), StateError> {
         let mut gravity = [0.0; 2];
         st.take("gravity", &mut gravity)?;
-        self.gravity = (gravity[0], gravity[1]);
+        self.model.gravity = (gravity[0], gravity[1]);
         // εg is checked, then follows the solids (εg = 1 − Σεs)
         st.take("eps_g", &mut vec![0.0; self.eps_g().len()])?;
         let g = self.state.gas_mut();

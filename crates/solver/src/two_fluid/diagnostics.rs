@@ -154,7 +154,7 @@ impl TwoFluid {
     /// component, node), gas and solids continuity (cell) and granular energy (cell), with
     /// grid indices and coordinates, for the diagnosis of a step that fails.
     pub fn residual_locations(&self) -> String {
-        let g = &self.grid;
+        let g = &self.model.grid;
         let nx = g.nx();
         let cell = |k: usize| {
             let (i, j) = (k % nx, k / nx);

@@ -3,124 +3,138 @@
 //! [`crate::volume_fraction`]), εs = εs* + ε' with the selective relaxation beyond εs,max, the
 //! solids velocities corrected with e_s K_cp ∇ε', Schaeffer's P* recomputed from the
 //! corrected εs (docs/model.md §2.4.1), then εg = 1 − Σεs. Also the optional exact solids
-//! continuity at the end of a converged step ([`TwoFluid::conservative_finish`], not MFIX).
+//! continuity at the end of a converged step ([`conservative_finish`], not MFIX).
 
 use std::time::Instant;
 
 use runout_linsolve::{LinSolveError, LinearSolver, Stencil5};
 
-use super::diagnostics::since;
-use super::{lin, solve_keeping_preconditioner, TwoFluid, TwoFluidError};
+use super::diagnostics::{since, Diagnostics};
+use super::model::Model;
+use super::{
+    lin, solve_keeping_preconditioner, PhaseCoefficients, State, TwoFluidError, Workspace,
+};
 use crate::volume_fraction::{
     apply_correction, assemble_correction, mass_imbalance, CorrectionInputs,
 };
 
-impl TwoFluid {
-    /// Step 3: ε correction of each solids phase; returns the mean |imbalance| summed.
-    pub(super) fn volume_fraction_correction(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
-        let n = self.eps_g().len() as f64;
-        let mut total = 0.0;
-        self.state.try_update_all_solids(|m, p| {
-            let (s, coef) = (&mut self.workspace.solids[m], &mut self.coefficients[m]);
-            let spec = &self.solids_specs[m];
-            let inputs = CorrectionInputs {
-                density: spec.params.particles.density,
-                eps: &*p.eps,
-                eps_old: &p.old.eps,
-                u: &*p.u,
-                v: &*p.v,
-                e_u: &s.e_u,
-                e_v: &s.e_v,
-                k_cp: &coef.k_cp,
-                dt,
-                scheme: self.settings.scheme,
-            };
-            assemble_correction(&self.grid, &inputs, &mut s.imbalance, &mut s.a_eps);
-            total += s.imbalance.iter().map(|x| x.abs()).sum::<f64>() / n;
-            let t = Instant::now();
-            let iterations = solve_eps_prime(
-                self.workspace.solvers.eps.as_mut(),
-                self.workspace.solvers.eps_fallback.as_mut(),
-                &s.a_eps,
-                &mut s.eps_prime,
-            )
-            .map_err(lin("solids volume fraction"))?;
-            self.diagnostics.profile.iterations.eps += iterations as u64;
-            let solve = since(t);
-            self.diagnostics.profile.eps_solve += solve;
-            self.diagnostics.profile.eps_assembly -= solve;
-            apply_correction(
-                &self.grid,
-                &mut s.eps_prime,
-                &mut *p.eps,
-                spec.eps_max,
-                self.settings.relax_eps,
-                &mut *p.u,
-                &mut *p.v,
-                &s.e_u,
-                &s.e_v,
-                &coef.k_cp,
-            );
-            // P* from the corrected εs (Schaeffer only, docs/model.md §4.9 step 5)
-            if let Some(star) = spec.params.friction_model.plastic_pressure() {
-                for (ps, &e) in coef.p_star.iter_mut().zip(p.eps.iter()) {
-                    *ps = star.p_star(e, &spec.params.friction);
-                }
-                self.diagnostics.counters.plastic_pressure_cells += coef.p_star.len() as u64;
+/// Step 3: ε correction of each solids phase; returns the mean |imbalance| summed.
+pub(super) fn volume_fraction_correction(
+    model: &Model,
+    state: &mut State,
+    coefficients: &mut [PhaseCoefficients],
+    work: &mut Workspace,
+    diagnostics: &mut Diagnostics,
+    dt: f64,
+) -> Result<f64, TwoFluidError> {
+    let n = state.gas().eps().len() as f64;
+    let mut total = 0.0;
+    state.try_update_all_solids(|m, p| {
+        let (s, coef) = (&mut work.solids[m], &mut coefficients[m]);
+        let spec = &model.solids_specs[m];
+        let inputs = CorrectionInputs {
+            density: spec.params.particles.density,
+            eps: &*p.eps,
+            eps_old: &p.old.eps,
+            u: &*p.u,
+            v: &*p.v,
+            e_u: &s.e_u,
+            e_v: &s.e_v,
+            k_cp: &coef.k_cp,
+            dt,
+            scheme: model.settings.scheme,
+        };
+        assemble_correction(&model.grid, &inputs, &mut s.imbalance, &mut s.a_eps);
+        total += s.imbalance.iter().map(|x| x.abs()).sum::<f64>() / n;
+        let t = Instant::now();
+        let iterations = solve_eps_prime(
+            work.solvers.eps.as_mut(),
+            work.solvers.eps_fallback.as_mut(),
+            &s.a_eps,
+            &mut s.eps_prime,
+        )
+        .map_err(lin("solids volume fraction"))?;
+        diagnostics.profile.iterations.eps += iterations as u64;
+        let solve = since(t);
+        diagnostics.profile.eps_solve += solve;
+        diagnostics.profile.eps_assembly -= solve;
+        apply_correction(
+            &model.grid,
+            &mut s.eps_prime,
+            &mut *p.eps,
+            spec.eps_max,
+            model.settings.relax_eps,
+            &mut *p.u,
+            &mut *p.v,
+            &s.e_u,
+            &s.e_v,
+            &coef.k_cp,
+        );
+        // P* from the corrected εs (Schaeffer only, docs/model.md §4.9 step 5)
+        if let Some(star) = spec.params.friction_model.plastic_pressure() {
+            for (ps, &e) in coef.p_star.iter_mut().zip(p.eps.iter()) {
+                *ps = star.p_star(e, &spec.params.friction);
             }
-            Ok(())
-        })?;
-        Ok(total)
-    }
+            diagnostics.counters.plastic_pressure_cells += coef.p_star.len() as u64;
+        }
+        Ok(())
+    })?;
+    Ok(total)
+}
 
-    /// Ends a converged step with exact discrete solids continuity (if
-    /// [`super::TwoFluidSettings::exact_solids_continuity`]): each cell's εs becomes
-    /// εs⁰ − Δt/V Σ (εs,face u·n A) with the step's final face fluxes, i.e. the imbalance
-    /// the outer iteration left within its tolerance is removed where it sits. Without it
-    /// that remainder accumulates where solids compact, because the selective relaxation of
-    /// positive ε' beyond εs,max (docs/model.md §4.7) leaves every step's imbalance with the
-    /// same sign (3e-7 of the solids over family M, 2e-5 over ST-schaeffer, 1e-7 over a
-    /// coarse column collapse). The change is of the size of the step tolerance (MFIX keeps
-    /// the remainder). Internal fluxes cancel in
-    /// pairs, so the solids mass changes by exactly the boundary flux, up to the mass of any
-    /// cell that would go below zero (clipped, reported by tracing).
-    pub(super) fn conservative_finish(&mut self, dt: f64) {
-        self.state.update_all_solids(|m, p| {
-            let (s, coef) = (&mut self.workspace.solids[m], &mut self.coefficients[m]);
-            let spec = &self.solids_specs[m];
-            let density = spec.params.particles.density;
-            let inputs = CorrectionInputs {
-                density,
-                eps: &*p.eps,
-                eps_old: &p.old.eps,
-                u: &*p.u,
-                v: &*p.v,
-                e_u: &s.e_u,
-                e_v: &s.e_v,
-                k_cp: &coef.k_cp,
-                dt,
-                scheme: self.settings.scheme,
-            };
-            mass_imbalance(&self.grid, &inputs, &mut s.imbalance);
-            let nx = self.grid.nx();
-            let (mut largest, mut clipped) = (0.0_f64, 0.0);
-            for (k, (e, r)) in p.eps.iter_mut().zip(&s.imbalance).enumerate() {
-                let volume = self.grid.cell_volume(k % nx, k / nx);
-                let change = -r * dt / (density * volume);
-                largest = largest.max(change.abs());
-                *e += change;
-                if *e < 0.0 {
-                    clipped -= *e * volume;
-                    *e = 0.0;
-                }
+/// Ends a converged step with exact discrete solids continuity (if
+/// [`super::TwoFluidSettings::exact_solids_continuity`]): each cell's εs becomes
+/// εs⁰ − Δt/V Σ (εs,face u·n A) with the step's final face fluxes, i.e. the imbalance
+/// the outer iteration left within its tolerance is removed where it sits. Without it
+/// that remainder accumulates where solids compact, because the selective relaxation of
+/// positive ε' beyond εs,max (docs/model.md §4.7) leaves every step's imbalance with the
+/// same sign (3e-7 of the solids over family M, 2e-5 over ST-schaeffer, 1e-7 over a
+/// coarse column collapse). The change is of the size of the step tolerance (MFIX keeps
+/// the remainder). Internal fluxes cancel in
+/// pairs, so the solids mass changes by exactly the boundary flux, up to the mass of any
+/// cell that would go below zero (clipped, reported by tracing).
+pub(super) fn conservative_finish(
+    model: &Model,
+    state: &mut State,
+    coefficients: &[PhaseCoefficients],
+    work: &mut Workspace,
+    dt: f64,
+) {
+    state.update_all_solids(|m, p| {
+        let (s, coef) = (&mut work.solids[m], &coefficients[m]);
+        let spec = &model.solids_specs[m];
+        let density = spec.params.particles.density;
+        let inputs = CorrectionInputs {
+            density,
+            eps: &*p.eps,
+            eps_old: &p.old.eps,
+            u: &*p.u,
+            v: &*p.v,
+            e_u: &s.e_u,
+            e_v: &s.e_v,
+            k_cp: &coef.k_cp,
+            dt,
+            scheme: model.settings.scheme,
+        };
+        mass_imbalance(&model.grid, &inputs, &mut s.imbalance);
+        let nx = model.grid.nx();
+        let (mut largest, mut clipped) = (0.0_f64, 0.0);
+        for (k, (e, r)) in p.eps.iter_mut().zip(&s.imbalance).enumerate() {
+            let volume = model.grid.cell_volume(k % nx, k / nx);
+            let change = -r * dt / (density * volume);
+            largest = largest.max(change.abs());
+            *e += change;
+            if *e < 0.0 {
+                clipped -= *e * volume;
+                *e = 0.0;
             }
-            tracing::trace!(
-                largest,
-                clipped,
-                "conservative finish of the solids continuity"
-            );
-        });
-    }
+        }
+        tracing::trace!(
+            largest,
+            clipped,
+            "conservative finish of the solids continuity"
+        );
+    });
 }
 
 /// Solves the ε' system `a` from ε' = 0 with a fresh multigrid preconditioner (ε' is rebuilt

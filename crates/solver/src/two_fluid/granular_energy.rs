@@ -15,95 +15,98 @@ use std::time::Instant;
 
 use runout_linsolve::Stencil5;
 
-use super::diagnostics::since;
+use super::diagnostics::{since, Diagnostics};
 use super::dilute::{dilute_cell_row, next_dilute_class};
+use super::model::Model;
 use super::sidewalls::add_theta_flux;
-use super::{lin, PhaseWork, TwoFluid, TwoFluidError, DIL_EP_S, THETA_SMALL};
+use super::{
+    lin, PhaseCoefficients, PhaseWallClosures, PhaseWork, State, TwoFluidError, Workspace,
+    DIL_EP_S, THETA_SMALL,
+};
 use crate::energy::{assemble_theta, EnergyInputs};
 use crate::momentum::{fixed_row, neighbour_sum};
 
-impl TwoFluid {
-    /// Step 5: granular energy of each solids phase (module doc); returns the θ residual
-    /// summed over phases.
-    pub(super) fn granular_energy(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
-        let mut worst_theta = (0.0, 0);
-        let relax = self.settings.relax_theta;
-        let nx = self.grid.nx();
-        let freeze =
-            self.settings.freeze_cycling_dilute_class && !self.workspace.flags.theta_class_fresh;
-        let mut residual = 0.0;
-        let (gas, phases) = self.state.gas_and_phases_mut();
-        let eps_g = gas.eps();
-        let solids = self
-            .workspace
-            .solids
-            .iter_mut()
-            .zip(phases)
-            .zip(&self.coefficients);
-        let solids = solids.zip(&self.wall_closures).zip(&self.solids_specs);
-        for ((((s, p), coef), w), spec) in solids {
-            let inputs = EnergyInputs {
-                bulk_density: p.bulk_density(),
-                bulk_density_old: &p.old().rho_eps,
-                conductivity: &coef.kappa,
-                p_kin_over_theta: &coef.p_kin_over_theta,
-                mu_kin: &coef.mu_kin,
-                lambda_kin: &coef.lambda_kin,
-                dissipation_over_theta: &coef.gamma_over_theta,
-                drag: &coef.f_gs,
-                slip_production: &coef.j_slip,
-                tr_d: &coef.tr_d,
-                tr_d2: &coef.tr_d2,
-            };
-            assemble_theta(
-                &self.grid,
-                &inputs,
-                &spec.theta_walls,
-                Some(&w.wall_theta),
-                &p.u,
-                &p.v,
-                &p.old().theta,
-                dt,
-                self.settings.scheme,
-                &p.theta,
-                &mut self.workspace.c_faces,
-                &mut s.a_theta,
-            );
-            if self.sidewalls.is_some() {
-                add_theta_flux(&self.grid, &coef.sidewall, &mut s.a_theta); // docs/model.md §8
-            }
-            classify_rows(p.eps(), s, freeze);
-            // θ = θ_small where εg < εg* if the friction model pins it (docs/model.md §1.3)
-            let eps_g_star = spec
-                .params
-                .friction_model
-                .pins_theta_below(&spec.params.friction);
-            let rows = ThetaRows {
-                theta: &p.theta,
-                dense: &s.theta_dense,
-                eps_g,
-                eps_g_star,
-                relax,
-                nx,
-            };
-            residual += rows.finish(&mut s.a_theta, &mut worst_theta);
-            let t = Instant::now();
-            self.diagnostics.profile.iterations.theta += self
-                .workspace
-                .solvers
-                .theta
-                .setup_and_solve(&s.a_theta, &mut p.theta)
-                .map_err(lin("granular energy"))?
-                .iterations as u64;
-            let solve = since(t);
-            self.diagnostics.profile.theta_solve += solve;
-            self.diagnostics.profile.theta_assembly -= solve;
-            p.theta.iter_mut().for_each(|t| *t = t.max(THETA_SMALL));
+/// Step 5: granular energy of each solids phase (module doc); returns the θ residual
+/// summed over phases.
+pub(super) fn granular_energy(
+    model: &Model,
+    state: &mut State,
+    coefficients: &[PhaseCoefficients],
+    wall_closures: &[PhaseWallClosures],
+    work: &mut Workspace,
+    diagnostics: &mut Diagnostics,
+    dt: f64,
+) -> Result<f64, TwoFluidError> {
+    let mut worst_theta = (0.0, 0);
+    let relax = model.settings.relax_theta;
+    let nx = model.grid.nx();
+    let freeze = model.settings.freeze_cycling_dilute_class && !work.flags.theta_class_fresh;
+    let mut residual = 0.0;
+    let (gas, phases) = state.gas_and_phases_mut();
+    let eps_g = gas.eps();
+    let solids = work.solids.iter_mut().zip(phases).zip(coefficients);
+    let solids = solids.zip(wall_closures).zip(&model.solids_specs);
+    for ((((s, p), coef), w), spec) in solids {
+        let inputs = EnergyInputs {
+            bulk_density: p.bulk_density(),
+            bulk_density_old: &p.old().rho_eps,
+            conductivity: &coef.kappa,
+            p_kin_over_theta: &coef.p_kin_over_theta,
+            mu_kin: &coef.mu_kin,
+            lambda_kin: &coef.lambda_kin,
+            dissipation_over_theta: &coef.gamma_over_theta,
+            drag: &coef.f_gs,
+            slip_production: &coef.j_slip,
+            tr_d: &coef.tr_d,
+            tr_d2: &coef.tr_d2,
+        };
+        assemble_theta(
+            &model.grid,
+            &inputs,
+            &spec.theta_walls,
+            Some(&w.wall_theta),
+            &p.u,
+            &p.v,
+            &p.old().theta,
+            dt,
+            model.settings.scheme,
+            &p.theta,
+            &mut work.c_faces,
+            &mut s.a_theta,
+        );
+        if model.sidewalls.is_some() {
+            add_theta_flux(&model.grid, &coef.sidewall, &mut s.a_theta); // docs/model.md §8
         }
-        self.workspace.flags.theta_class_fresh = false;
-        self.diagnostics.worst.theta = worst_theta;
-        Ok(residual)
+        classify_rows(p.eps(), s, freeze);
+        // θ = θ_small where εg < εg* if the friction model pins it (docs/model.md §1.3)
+        let eps_g_star = spec
+            .params
+            .friction_model
+            .pins_theta_below(&spec.params.friction);
+        let rows = ThetaRows {
+            theta: &p.theta,
+            dense: &s.theta_dense,
+            eps_g,
+            eps_g_star,
+            relax,
+            nx,
+        };
+        residual += rows.finish(&mut s.a_theta, &mut worst_theta);
+        let t = Instant::now();
+        diagnostics.profile.iterations.theta += work
+            .solvers
+            .theta
+            .setup_and_solve(&s.a_theta, &mut p.theta)
+            .map_err(lin("granular energy"))?
+            .iterations as u64;
+        let solve = since(t);
+        diagnostics.profile.theta_solve += solve;
+        diagnostics.profile.theta_assembly -= solve;
+        p.theta.iter_mut().for_each(|t| *t = t.max(THETA_SMALL));
     }
+    work.flags.theta_class_fresh = false;
+    diagnostics.worst.theta = worst_theta;
+    Ok(residual)
 }
 
 /// The class of each θ row: MFIX's εs > DIL_EP_S, unless `freeze` (a cycling cell keeps

@@ -25,9 +25,13 @@
 //! faces and cells (§2.7, §4.8, [`dilute`]); u and v written once through a staggered
 //! component view ([`crate::staggered`]); time and residual locations in [`diagnostics`].
 //!
-//! What the solver holds: the fields ([`state`], keeping εg = 1 − Σεs), the closure values
-//! per cell and phase as a struct of arrays ([`coefficients`]), the wall closures between
-//! outer iterations ([`wall_closures`]) and the per-phase work storage ([`workspace`]).
+//! What the solver holds: what it was built with ([`model`]: grid, gas, solids phases and
+//! their walls, gravity, settings, scene), the fields ([`state`], keeping εg = 1 − Σεs), the
+//! closure values per cell and phase as a struct of arrays ([`coefficients`]), the wall
+//! closures between outer iterations ([`wall_closures`]), the per-phase work storage
+//! ([`workspace`]) and the timers and counters ([`diagnostics`]). Each stage is a function
+//! over explicit borrows of these (`&Model`, `&mut State`, ...), so its signature says what
+//! it reads and what it changes.
 //!
 //! Schaeffer friction (docs/model.md §2.4.1): the plastic pressure P* = A (εg* − εg)^10 is kept
 //! per cell apart from P_s ([`TwoFluid::p_star`]) and enters only the solids momentum, as
@@ -49,6 +53,7 @@ mod diagnostics;
 mod dilute;
 mod eps_correction;
 mod granular_energy;
+mod model;
 mod momentum_pea;
 mod pressure;
 mod residuals;
@@ -72,10 +77,11 @@ use runout_linsolve::{LinSolveError, LinearSolver, Stencil5};
 use runout_mesh::{Grid, Side, Sides};
 use runout_walls::{RobinFace, SolidsWallModel};
 
-use crate::single_phase::{Fluid, SideBc};
+use crate::single_phase::SideBc;
 use crate::transport::Scheme;
 use coefficients::PhaseCoefficients;
 use diagnostics::{since, Diagnostics};
+use model::Model;
 use residuals::Convergence;
 use wall_closures::PhaseWallClosures;
 use walls::{GasNearWalls, WallRelaxation};
@@ -156,7 +162,7 @@ pub struct TwoFluidSettings {
     /// within a step, the converged step is MFIX's (docs/performance.md, session 7).
     pub freeze_cycling_dilute_class: bool,
     /// End each converged step with exact discrete solids continuity
-    /// ([`TwoFluid::conservative_finish`]; not MFIX): the solids mass then changes only by
+    /// ([`eps_correction::conservative_finish`]; not MFIX): the solids mass then changes only by
     /// the boundary flux, where MFIX lets the step tolerance's remainder accumulate where
     /// solids compact (1e-7 of the solids over family M). Off by default: on the paper's
     /// slide (S-PS base, coarse) the finish's changes in the dilute cells above the flow
@@ -224,16 +230,8 @@ pub enum TwoFluidError {
 
 /// The two-fluid solver with its work storage (allocated once).
 pub struct TwoFluid {
-    grid: Grid,
-    gas: Fluid,
-    gas_walls: Sides<SideBc>,
-    /// gas velocity into the domain through each wall side [m s⁻¹] (a distributor: gas
-    /// enters with εg = 1, solids see the wall; MFIX's mass inlet with BC_EP_G = 1), 0 on
-    /// impermeable walls
-    gas_inflow: Sides<f64>,
-    solids_specs: Vec<SolidsSpec>,
-    gravity: (f64, f64),
-    settings: TwoFluidSettings,
+    /// grid, gas, walls, phases, gravity, settings, scene and side walls
+    model: Model,
     /// the fields of the gas and every solids phase
     state: State,
     /// closure values, strain rates and explicit sources per solids phase, per cell
@@ -244,10 +242,6 @@ pub struct TwoFluid {
     workspace: Workspace,
     /// profile timers, counters and the worst residual locations
     diagnostics: Diagnostics,
-    /// what this solver computes (derived when built, and when the side walls are set)
-    scene: Scene,
-    /// the side walls of a quasi-2-D channel (docs/model.md §8), none in a plane flow
-    sidewalls: Option<Sidewalls>,
 }
 
 fn lin(equation: &str) -> impl Fn(LinSolveError) -> TwoFluidError + '_ {
@@ -260,18 +254,18 @@ fn lin(equation: &str) -> impl Fn(LinSolveError) -> TwoFluidError + '_ {
 impl TwoFluid {
     /// The grid.
     pub fn grid(&self) -> &Grid {
-        &self.grid
+        &self.model.grid
     }
 
     /// Sets the side walls of a quasi-2-D channel (docs/model.md §8); `None`: a plane flow.
     pub fn set_sidewalls(&mut self, sidewalls: Option<Sidewalls>) {
-        self.sidewalls = sidewalls;
-        self.scene = self.derive_scene();
+        self.model.sidewalls = sidewalls;
+        self.model.scene = self.derive_scene();
     }
 
     /// What this solver computes ([`Scene`]).
     pub fn scene(&self) -> &Scene {
-        &self.scene
+        &self.model.scene
     }
 
     /// How often each optional piece of the outer iteration ran ([`Counters`]).
@@ -282,10 +276,10 @@ impl TwoFluid {
     /// The scene of the current phases, settings and side walls.
     fn derive_scene(&self) -> Scene {
         Scene::of(
-            &self.grid,
-            &self.solids_specs,
-            &self.settings,
-            self.sidewalls.as_ref().map(|w| w.width),
+            &self.model.grid,
+            &self.model.solids_specs,
+            &self.model.settings,
+            self.model.sidewalls.as_ref().map(|w| w.width),
         )
     }
 
@@ -374,58 +368,89 @@ impl TwoFluid {
 
     /// Material density ρ_s of phase m [kg m⁻³].
     pub fn solids_density(&self, m: usize) -> f64 {
-        self.solids_specs[m].params.particles.density
+        self.model.solids_specs[m].params.particles.density
     }
 
     /// Total solids mass per unit depth of phase m [kg m⁻¹].
     pub fn solids_mass(&self, m: usize) -> f64 {
-        let (nx, ny) = (self.grid.nx(), self.grid.ny());
-        let rho = self.solids_specs[m].params.particles.density;
+        let (nx, ny) = (self.model.grid.nx(), self.model.grid.ny());
+        let rho = self.model.solids_specs[m].params.particles.density;
         (0..ny)
             .flat_map(|j| (0..nx).map(move |i| (i, j)))
-            .map(|(i, j)| rho * self.solids(m).eps()[i + nx * j] * self.grid.cell_volume(i, j))
+            .map(|(i, j)| {
+                rho * self.solids(m).eps()[i + nx * j] * self.model.grid.cell_volume(i, j)
+            })
             .sum()
     }
 
-    /// One outer iteration with time step `dt` (docs/model.md §4.9, the module doc's steps).
+    /// One outer iteration with time step `dt` (docs/model.md §4.9, the module doc's steps):
+    /// each stage a function over explicit borrows of the model, the state, the closures,
+    /// the workspace and the diagnostics.
     pub fn outer_iteration(&mut self, dt: f64) -> Result<TwoFluidResiduals, TwoFluidError> {
+        let TwoFluid {
+            model,
+            state,
+            coefficients,
+            wall_closures,
+            workspace: work,
+            diagnostics,
+        } = self;
+        let specs = &model.solids_specs;
         // 1. closures at the current iterate (already fresh at a step's first iteration),
-        //    then the closures of the state-dependent walls
-        if !std::mem::take(&mut self.workspace.flags.closures_fresh) {
+        //    then the closures of the state-dependent walls and of the side walls
+        if !std::mem::take(&mut work.flags.closures_fresh) {
             let t = Instant::now();
-            self.update_closures();
-            self.diagnostics.profile.closures += since(t);
+            diagnostics.counters.cell_closures +=
+                closures::update_closures(&model.grid, state, wall_closures, coefficients, specs);
+            diagnostics.profile.closures += since(t);
         }
         let t = Instant::now();
-        if self.scene.has_per_face_walls() {
-            self.update_walls();
+        if model.scene.has_per_face_walls() {
+            update_walls(model, state, wall_closures, diagnostics);
         }
-        if let Some(sidewalls) = &self.sidewalls {
-            sidewalls::update_sidewalls(
-                &self.grid,
-                sidewalls,
-                &self.state,
-                &mut self.coefficients,
-                &self.solids_specs,
-            );
+        if let Some(sidewalls) = &model.sidewalls {
+            sidewalls::update_sidewalls(&model.grid, sidewalls, state, coefficients, specs);
         }
-        self.diagnostics.profile.walls += since(t);
+        diagnostics.profile.walls += since(t);
         // 2. momentum of every phase, drag by partial elimination
         let t = Instant::now();
-        let momentum = self.momentum(dt)?;
-        self.diagnostics.profile.momentum_assembly += since(t);
+        let momentum = momentum_pea::momentum(
+            model,
+            state,
+            coefficients,
+            wall_closures,
+            work,
+            diagnostics,
+            dt,
+        )?;
+        diagnostics.profile.momentum_assembly += since(t);
         // 3. solids volume-fraction correction, εg = 1 − Σεs
         let t = Instant::now();
-        let solids_mass = self.volume_fraction_correction(dt)?;
-        self.diagnostics.profile.eps_assembly += since(t);
+        let solids_mass = eps_correction::volume_fraction_correction(
+            model,
+            state,
+            coefficients,
+            work,
+            diagnostics,
+            dt,
+        )?;
+        diagnostics.profile.eps_assembly += since(t);
         // 4. gas pressure correction
         let t = Instant::now();
-        let gas_mass = self.pressure_correction(dt)?;
-        self.diagnostics.profile.pressure_assembly += since(t);
+        let gas_mass = pressure::pressure_correction(model, state, work, diagnostics, dt)?;
+        diagnostics.profile.pressure_assembly += since(t);
         // 5. granular energy
         let t = Instant::now();
-        let theta = self.granular_energy(dt)?;
-        self.diagnostics.profile.theta_assembly += since(t);
+        let theta = granular_energy::granular_energy(
+            model,
+            state,
+            coefficients,
+            wall_closures,
+            work,
+            diagnostics,
+            dt,
+        )?;
+        diagnostics.profile.theta_assembly += since(t);
         // 6. residuals (each stage returned its own)
         Ok(TwoFluidResiduals {
             momentum,
@@ -435,40 +460,57 @@ impl TwoFluid {
         })
     }
 
-    /// Step 1: closures per cell and phase at the current iterate ([`closures`]).
-    fn update_closures(&mut self) {
+    /// The closures per cell and phase and the explicit stress sources at the start of a
+    /// step (docs/model.md §4.4: the stresses once per step).
+    fn begin_step_closures(&mut self) {
+        let t = Instant::now();
         self.diagnostics.counters.cell_closures += closures::update_closures(
-            &self.grid,
+            &self.model.grid,
             &self.state,
             &mut self.wall_closures,
             &mut self.coefficients,
-            &self.solids_specs,
+            &self.model.solids_specs,
         );
-    }
-
-    /// Step 1, walls: the per-face closures of the state-dependent walls from the current
-    /// iterate ([`walls::update_walls`]).
-    fn update_walls(&mut self) {
-        let gas = GasNearWalls {
-            walls: &self.gas_walls,
-            u: &self.state.gas().u,
-            v: &self.state.gas().v,
-        };
-        let relax = WallRelaxation {
-            weight: self.settings.relax_wall_closures,
-            oscillating_only: self.settings.relax_wall_closures_oscillating_only,
-        };
-        let faces = walls::update_walls(
-            &self.grid,
-            gas,
-            relax,
+        self.diagnostics.profile.closures += since(t);
+        let t = Instant::now();
+        momentum_pea::update_stress_sources(
+            &self.model.grid,
             &self.state,
-            &mut self.wall_closures,
-            &self.solids_specs,
+            &mut self.coefficients,
+            &self.workspace,
         );
-        for side in Side::ALL {
-            *self.diagnostics.counters.wall_closure_faces.get_mut(side) += faces.get(side);
-        }
+        self.diagnostics.profile.stress += since(t);
+        self.workspace.flags.closures_fresh = true;
+    }
+}
+
+/// Step 1, walls: the per-face closures of the state-dependent walls from the current
+/// iterate ([`walls::update_walls`]), counted per side.
+fn update_walls(
+    model: &Model,
+    state: &State,
+    wall_closures: &mut [PhaseWallClosures],
+    diagnostics: &mut Diagnostics,
+) {
+    let gas = GasNearWalls {
+        walls: &model.gas_walls,
+        u: &state.gas().u,
+        v: &state.gas().v,
+    };
+    let relax = WallRelaxation {
+        weight: model.settings.relax_wall_closures,
+        oscillating_only: model.settings.relax_wall_closures_oscillating_only,
+    };
+    let faces = walls::update_walls(
+        &model.grid,
+        gas,
+        relax,
+        state,
+        wall_closures,
+        &model.solids_specs,
+    );
+    for side in Side::ALL {
+        *diagnostics.counters.wall_closure_faces.get_mut(side) += faces.get(side);
     }
 }
 
@@ -503,14 +545,9 @@ impl TwoFluid {
         max_iterations: usize,
     ) -> Result<TwoFluidStep, TwoFluidError> {
         self.begin_step();
-        let mean_volume = self.grid.x.length() * self.grid.y.length() / self.eps_g().len() as f64;
-        let t = Instant::now();
-        self.update_closures();
-        self.diagnostics.profile.closures += since(t);
-        let t = Instant::now();
-        self.update_stress_sources();
-        self.diagnostics.profile.stress += since(t);
-        self.workspace.flags.closures_fresh = true;
+        let mean_volume =
+            self.model.grid.x.length() * self.model.grid.y.length() / self.eps_g().len() as f64;
+        self.begin_step_closures();
         let mut convergence = Convergence::new();
         let mut out = TwoFluidStep {
             iterations: 0,
@@ -531,7 +568,7 @@ impl TwoFluid {
             };
             // the gas residual's normaliser is at least GAS_RESIDUAL_FLOOR of the gas a mean
             // cell holds per step ([`Convergence::sum`], S-JJ-phi coarse, docs/status.md)
-            let gas_floor = GAS_RESIDUAL_FLOOR * self.gas.density * mean_volume / dt;
+            let gas_floor = GAS_RESIDUAL_FLOOR * self.model.gas.density * mean_volume / dt;
             let (sum, g, s) = convergence.sum(&r, gas_floor);
             out.residual = sum;
             out.last = r;
@@ -549,7 +586,7 @@ impl TwoFluid {
             }
             // stall detection before the convergence test, as MFIX's check_convergence.f
             // (docs/model.md §4.11): the step is then retried with a smaller Δt (§4.12)
-            if self.settings.detect_stall {
+            if self.model.settings.detect_stall {
                 if let Some(sum5) = convergence.stalled(nit, sum) {
                     out.failure = Some(format!(
                         "stalled: the momentum and continuity residual sum {sum:.3e} at outer \
@@ -562,8 +599,14 @@ impl TwoFluid {
             }
             if it >= 1 && sum <= tol && r.theta <= tol_theta {
                 out.converged = true;
-                if self.settings.exact_solids_continuity {
-                    self.conservative_finish(dt);
+                if self.model.settings.exact_solids_continuity {
+                    eps_correction::conservative_finish(
+                        &self.model,
+                        &mut self.state,
+                        &self.coefficients,
+                        &mut self.workspace,
+                        dt,
+                    );
                 }
                 return Ok(out);
             }
@@ -586,28 +629,28 @@ impl TwoFluid {
     /// BC_EP_G = 1; the solids still see the wall). Outlet sides must get 0.
     pub fn set_gas_inflow(&mut self, inflow: Sides<f64>) -> Result<(), TwoFluidError> {
         for (side, &v) in inflow.iter() {
-            if v != 0.0 && !matches!(self.gas_walls.get(side), SideBc::Wall(_)) {
+            if v != 0.0 && !matches!(self.model.gas_walls.get(side), SideBc::Wall(_)) {
                 return Err(TwoFluidError::InflowOnOutlet(format!("{side:?}")));
             }
         }
-        self.gas_inflow = inflow;
+        self.model.gas_inflow = inflow;
         Ok(())
     }
 
     /// Sets gravity (a schedule may tilt it during a run).
     pub fn set_gravity(&mut self, gravity: (f64, f64)) {
-        self.gravity = gravity;
+        self.model.gravity = gravity;
     }
 
     /// Whether solids phase `m` has a state-dependent model (JJ, revisited JJ, Jenkins) on
     /// the floor, i.e. whether `floor_h_u` is meaningful.
     pub fn has_floor_model(&self, m: usize) -> bool {
-        self.solids_specs[m].wall_models.south.is_some()
+        self.model.solids_specs[m].wall_models.south.is_some()
     }
 
     /// Gravity (g_x, g_y) [m s⁻²].
     pub fn gravity(&self) -> (f64, f64) {
-        self.gravity
+        self.model.gravity
     }
 }
 

@@ -21,185 +21,203 @@ use runout_linsolve::Stencil5;
 use runout_mesh::{Grid, Sides};
 
 use super::diagnostics::since;
+use super::diagnostics::Diagnostics;
 use super::dilute::{dilute_faces, dilute_row};
+use super::model::Model;
 use super::residuals::CoupledNode;
 use super::sidewalls::add_momentum_sinks;
 use super::{
-    lin, PhaseCoefficients, PhaseState, PhaseWallClosures, PhaseWork, SolidsSpec, TwoFluid,
-    TwoFluidError, MAX_SOLIDS_PHASES,
+    lin, PhaseCoefficients, PhaseState, PhaseWallClosures, PhaseWork, SolidsSpec, State,
+    TwoFluidError, Workspace, MAX_SOLIDS_PHASES,
 };
 use crate::momentum::{assemble, fixed_row, neighbour_sum, Context, PhaseFields};
 use crate::pea::eliminate_node;
 use crate::staggered::Component;
 use crate::transport::FaceData;
 
-impl TwoFluid {
-    /// Step 2 (module doc); returns the momentum residual summed over u and v.
-    pub(super) fn momentum(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
-        self.diagnostics.worst.momentum = (0.0, 0, 0, 0, 0);
-        self.assemble_momentum(dt);
-        let mut residual = 0.0;
-        for c in Component::of_grid(&self.grid) {
-            let (a, d) = c.pick(
-                (&mut self.workspace.a_ug, &mut self.workspace.d_u),
-                (&mut self.workspace.a_vg, &mut self.workspace.d_v),
-            );
-            let g = self.state.gas();
-            let mut gas = GasComponent {
-                a,
-                d,
-                u: &g.u,
-                v: &g.v,
-                eps: g.eps(),
-            };
-            if let Some(sidewalls) = &self.sidewalls {
-                // docs/model.md §8: the side walls' sinks join the rows before the elimination
-                let gas_drag = sidewalls.gas_drag(self.gas.viscosity);
-                let solids = (&self.coefficients[..], &mut self.workspace.solids[..]);
-                add_momentum_sinks(&self.grid, c, (&mut *gas.a, gas_drag), solids);
-            }
-            residual += eliminate_drag(
-                &self.grid,
-                c,
-                self.settings.relax_velocity,
-                &mut gas,
-                SolidsParts {
-                    phases: self.state.phases(),
-                    coefficients: &self.coefficients,
-                    work: &mut self.workspace.solids,
-                },
-                &mut self.diagnostics.worst.momentum,
-            );
-            fix_wall_rows(c, &self.gas_inflow, &mut gas, &mut self.workspace.solids);
-        }
-        let t = Instant::now();
-        self.diagnostics.profile.iterations.momentum += self.solve_momentum()? as u64;
-        // solves are reported apart from the assembly that encloses them
-        let solve = since(t);
-        self.diagnostics.profile.momentum_solve += solve;
-        self.diagnostics.profile.momentum_assembly -= solve;
-        Ok(residual)
-    }
-
-    /// The momentum equations of every phase without drag (docs/model.md §4.4); the solids
-    /// rows of dilute nodes are skipped (replaced by [`eliminate_drag`]).
-    fn assemble_momentum(&mut self, dt: f64) {
-        let grid = &self.grid;
-        let g = self.state.gas();
-        let ctx_gas = Context {
-            grid,
-            bcs: &self.gas_walls,
-            gravity: self.gravity,
-            dt,
-            scheme: self.settings.scheme,
-            gas_pressure: &g.p,
-            wall_faces: None,
-        };
-        let gas_fields = PhaseFields {
-            bulk_density: g.bulk_density(),
-            bulk_density_old: &g.old().rho_eps,
-            volume_fraction: g.eps(),
-            viscosity: &self.workspace.mu_g,
-            solids_pressure: None,
-            plastic_pressure: None,
-            // the gas's own cross terms are left out: with uniform μ_g they reduce to
-            // μ_g ∇(∇·u_g), negligible here (μ_g = 1.8e-5 Pa s)
-            explicit_source: None,
-            skip: None,
-        };
-        let [cu, cv] = Component::of_grid(grid);
-        let (u_g, v_g) = (&g.u, &g.v);
-        let (faces, a) = (&mut self.workspace.u_faces, &mut self.workspace.a_ug);
-        assemble(&ctx_gas, &gas_fields, cu, u_g, v_g, &g.old().u, faces, a);
-        let (faces, a) = (&mut self.workspace.v_faces, &mut self.workspace.a_vg);
-        assemble(&ctx_gas, &gas_fields, cv, u_g, v_g, &g.old().v, faces, a);
-        let fixed = [
-            self.workspace.a_ug.pattern().fixed_mask(),
-            self.workspace.a_vg.pattern().fixed_mask(),
-        ];
-        let faces = [&mut self.workspace.u_faces, &mut self.workspace.v_faces];
-        assemble_solids(
-            &ctx_gas,
-            [cu, cv],
-            fixed,
-            faces,
-            SolidsParts {
-                phases: self.state.phases(),
-                coefficients: &self.coefficients,
-                work: &mut self.workspace.solids,
-            },
-            &self.wall_closures,
-            &self.solids_specs,
+/// Step 2 (module doc); returns the momentum residual summed over u and v.
+#[allow(clippy::too_many_arguments)]
+pub(super) fn momentum(
+    model: &Model,
+    state: &mut State,
+    coefficients: &[PhaseCoefficients],
+    wall_closures: &[PhaseWallClosures],
+    work: &mut Workspace,
+    diagnostics: &mut Diagnostics,
+    dt: f64,
+) -> Result<f64, TwoFluidError> {
+    diagnostics.worst.momentum = (0.0, 0, 0, 0, 0);
+    assemble_momentum(model, state, coefficients, wall_closures, work, dt);
+    let mut residual = 0.0;
+    for c in Component::of_grid(&model.grid) {
+        let (a, d) = c.pick(
+            (&mut work.a_ug, &mut work.d_u),
+            (&mut work.a_vg, &mut work.d_v),
         );
+        let g = state.gas();
+        let mut gas = GasComponent {
+            a,
+            d,
+            u: &g.u,
+            v: &g.v,
+            eps: g.eps(),
+        };
+        if let Some(sidewalls) = &model.sidewalls {
+            // docs/model.md §8: the side walls' sinks join the rows before the elimination
+            let gas_drag = sidewalls.gas_drag(model.gas.viscosity);
+            let solids = (coefficients, &mut work.solids[..]);
+            add_momentum_sinks(&model.grid, c, (&mut *gas.a, gas_drag), solids);
+        }
+        residual += eliminate_drag(
+            &model.grid,
+            c,
+            model.settings.relax_velocity,
+            &mut gas,
+            SolidsParts {
+                phases: state.phases(),
+                coefficients,
+                work: &mut work.solids,
+            },
+            &mut diagnostics.worst.momentum,
+        );
+        fix_wall_rows(c, &model.gas_inflow, &mut gas, &mut work.solids);
     }
+    let t = Instant::now();
+    diagnostics.profile.iterations.momentum += solve_momentum(&model.grid, state, work)? as u64;
+    // solves are reported apart from the assembly that encloses them
+    let solve = since(t);
+    diagnostics.profile.momentum_solve += solve;
+    diagnostics.profile.momentum_assembly -= solve;
+    Ok(residual)
+}
 
-    /// The linear solves of every phase's u and v; returns their iterations.
-    fn solve_momentum(&mut self) -> Result<usize, TwoFluidError> {
-        let mut iterations = 0;
-        let gas = self.state.gas_mut();
-        iterations += self
-            .workspace
+/// The momentum equations of every phase without drag (docs/model.md §4.4); the solids
+/// rows of dilute nodes are skipped (replaced by [`eliminate_drag`]).
+fn assemble_momentum(
+    model: &Model,
+    state: &State,
+    coefficients: &[PhaseCoefficients],
+    wall_closures: &[PhaseWallClosures],
+    work: &mut Workspace,
+    dt: f64,
+) {
+    let grid = &model.grid;
+    let g = state.gas();
+    let ctx_gas = Context {
+        grid,
+        bcs: &model.gas_walls,
+        gravity: model.gravity,
+        dt,
+        scheme: model.settings.scheme,
+        gas_pressure: &g.p,
+        wall_faces: None,
+    };
+    let gas_fields = PhaseFields {
+        bulk_density: g.bulk_density(),
+        bulk_density_old: &g.old().rho_eps,
+        volume_fraction: g.eps(),
+        viscosity: &work.mu_g,
+        solids_pressure: None,
+        plastic_pressure: None,
+        // the gas's own cross terms are left out: with uniform μ_g they reduce to
+        // μ_g ∇(∇·u_g), negligible here (μ_g = 1.8e-5 Pa s)
+        explicit_source: None,
+        skip: None,
+    };
+    let [cu, cv] = Component::of_grid(grid);
+    let (u_g, v_g) = (&g.u, &g.v);
+    let (faces, a) = (&mut work.u_faces, &mut work.a_ug);
+    assemble(&ctx_gas, &gas_fields, cu, u_g, v_g, &g.old().u, faces, a);
+    let (faces, a) = (&mut work.v_faces, &mut work.a_vg);
+    assemble(&ctx_gas, &gas_fields, cv, u_g, v_g, &g.old().v, faces, a);
+    let fixed = [
+        work.a_ug.pattern().fixed_mask(),
+        work.a_vg.pattern().fixed_mask(),
+    ];
+    let faces = [&mut work.u_faces, &mut work.v_faces];
+    assemble_solids(
+        &ctx_gas,
+        [cu, cv],
+        fixed,
+        faces,
+        SolidsParts {
+            phases: state.phases(),
+            coefficients,
+            work: &mut work.solids,
+        },
+        wall_closures,
+        &model.solids_specs,
+    );
+}
+
+/// The linear solves of every phase's u and v; returns their iterations.
+fn solve_momentum(
+    grid: &Grid,
+    state: &mut State,
+    work: &mut Workspace,
+) -> Result<usize, TwoFluidError> {
+    let mut iterations = 0;
+    let gas = state.gas_mut();
+    iterations += work
+        .solvers
+        .u
+        .setup_and_solve(&work.a_ug, &mut gas.u)
+        .map_err(lin("gas u momentum"))?
+        .iterations;
+    iterations += work
+        .solvers
+        .v
+        .setup_and_solve(&work.a_vg, &mut gas.v)
+        .map_err(lin("gas v momentum"))?
+        .iterations;
+    for (s, p) in work.solids.iter().zip(state.phases_mut()) {
+        iterations += work
             .solvers
             .u
-            .setup_and_solve(&self.workspace.a_ug, &mut gas.u)
-            .map_err(lin("gas u momentum"))?
+            .setup_and_solve(&s.a_u, &mut p.u)
+            .map_err(lin("solids u momentum"))?
             .iterations;
-        iterations += self
-            .workspace
+        iterations += work
             .solvers
             .v
-            .setup_and_solve(&self.workspace.a_vg, &mut gas.v)
-            .map_err(lin("gas v momentum"))?
+            .setup_and_solve(&s.a_v, &mut p.v)
+            .map_err(lin("solids v momentum"))?
             .iterations;
-        for (s, p) in self.workspace.solids.iter().zip(self.state.phases_mut()) {
-            iterations += self
-                .workspace
-                .solvers
-                .u
-                .setup_and_solve(&s.a_u, &mut p.u)
-                .map_err(lin("solids u momentum"))?
-                .iterations;
-            iterations += self
-                .workspace
-                .solvers
-                .v
-                .setup_and_solve(&s.a_v, &mut p.v)
-                .map_err(lin("solids v momentum"))?
-                .iterations;
-        }
-        if self.grid.periodic_x() {
-            // node nx of a periodic column is node 0 (fixed in the solves)
-            let (nx, ny) = (self.grid.nx(), self.grid.ny());
-            let mx = nx + 1;
-            let copy = |u: &mut [f64]| (0..ny).for_each(|j| u[nx + mx * j] = u[mx * j]);
-            copy(&mut self.state.gas_mut().u);
-            self.state
-                .phases_mut()
-                .iter_mut()
-                .for_each(|p| copy(&mut p.u));
-        }
-        Ok(iterations)
     }
+    if grid.periodic_x() {
+        // node nx of a periodic column is node 0 (fixed in the solves)
+        let (nx, ny) = (grid.nx(), grid.ny());
+        let mx = nx + 1;
+        let copy = |u: &mut [f64]| (0..ny).for_each(|j| u[nx + mx * j] = u[mx * j]);
+        copy(&mut state.gas_mut().u);
+        state.phases_mut().iter_mut().for_each(|p| copy(&mut p.u));
+    }
+    Ok(iterations)
+}
 
-    /// The explicit stress sources of every solids phase from the current velocities and
-    /// closures (docs/model.md §4.4: once per step, at its start).
-    pub(super) fn update_stress_sources(&mut self) {
-        let fixed_u = self.workspace.a_ug.pattern().fixed_mask();
-        let fixed_v = self.workspace.a_vg.pattern().fixed_mask();
-        for (s, p) in self.coefficients.iter_mut().zip(self.state.phases()) {
-            crate::stress::explicit_stress(
-                &self.grid,
-                &p.u,
-                &p.v,
-                &s.mu,
-                &s.lambda,
-                &s.tr_d,
-                fixed_u,
-                fixed_v,
-                &mut s.tau_u,
-                &mut s.tau_v,
-            );
-        }
+/// The explicit stress sources of every solids phase from the current velocities and
+/// closures (docs/model.md §4.4: once per step, at its start).
+pub(super) fn update_stress_sources(
+    grid: &Grid,
+    state: &State,
+    coefficients: &mut [PhaseCoefficients],
+    work: &Workspace,
+) {
+    let fixed_u = work.a_ug.pattern().fixed_mask();
+    let fixed_v = work.a_vg.pattern().fixed_mask();
+    for (s, p) in coefficients.iter_mut().zip(state.phases()) {
+        crate::stress::explicit_stress(
+            grid,
+            &p.u,
+            &p.v,
+            &s.mu,
+            &s.lambda,
+            &s.tr_d,
+            fixed_u,
+            fixed_v,
+            &mut s.tau_u,
+            &mut s.tau_v,
+        );
     }
 }
 

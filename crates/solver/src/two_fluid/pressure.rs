@@ -13,65 +13,63 @@ use std::time::Instant;
 use runout_linsolve::Stencil5;
 use runout_mesh::{Grid, Sides};
 
-use super::diagnostics::since;
-use super::{lin, solve_keeping_preconditioner, TwoFluid, TwoFluidError};
+use super::diagnostics::{since, Diagnostics};
+use super::model::Model;
+use super::{lin, solve_keeping_preconditioner, State, TwoFluidError, Workspace};
 use crate::momentum::fixed_row;
 use crate::transport::{face_value, Scheme};
 
-impl TwoFluid {
-    /// Step 4: gas pressure correction (module doc); returns the mean |gas imbalance|.
-    pub(super) fn pressure_correction(&mut self, dt: f64) -> Result<f64, TwoFluidError> {
-        let (nx, ny) = (self.grid.nx(), self.grid.ny());
-        let g = self.state.gas();
-        let gas = GasContinuity {
-            density: self.gas.density,
-            eps: g.eps(),
-            eps_old: &g.old().eps,
-            u: &g.u,
-            v: &g.v,
-            d_u: &self.workspace.d_u,
-            d_v: &self.workspace.d_v,
-            inflow: &self.gas_inflow,
-            scheme: self.settings.scheme,
-            pinned: self.workspace.flags.pressure_pinned,
-        };
-        let total = assemble(
-            &self.grid,
-            &gas,
-            dt,
-            &mut self.workspace.imbalance,
-            &mut self.workspace.a_p,
-        );
-        self.workspace.p_corr.iter_mut().for_each(|x| *x = 0.0);
-        let t = Instant::now();
-        self.diagnostics.profile.iterations.pressure += solve_keeping_preconditioner(
-            self.workspace.solvers.p.as_mut(),
-            &self.workspace.a_p,
-            &mut self.workspace.p_corr,
-            self.workspace.flags.rebuild_preconditioners,
-        )
-        .map_err(lin("gas pressure correction"))?
-            as u64;
-        // both multigrid hierarchies of this step are built (ε' is solved first)
-        self.workspace.flags.rebuild_preconditioners = false;
-        let solve = since(t);
-        self.diagnostics.profile.pressure_solve += solve;
-        self.diagnostics.profile.pressure_assembly -= solve;
-        let g = self.state.gas_mut();
-        correct_velocities(
-            (nx, ny),
-            &self.workspace.p_corr,
-            &self.workspace.d_u,
-            &self.workspace.d_v,
-            &mut g.u,
-            &mut g.v,
-        );
-        let w = self.settings.relax_pressure;
-        g.p.iter_mut()
-            .zip(&self.workspace.p_corr)
-            .for_each(|(p, c)| *p += w * c);
-        Ok(total / (nx * ny) as f64)
-    }
+/// Step 4: gas pressure correction (module doc); returns the mean |gas imbalance|.
+pub(super) fn pressure_correction(
+    model: &Model,
+    state: &mut State,
+    work: &mut Workspace,
+    diagnostics: &mut Diagnostics,
+    dt: f64,
+) -> Result<f64, TwoFluidError> {
+    let (nx, ny) = (model.grid.nx(), model.grid.ny());
+    let g = state.gas();
+    let gas = GasContinuity {
+        density: model.gas.density,
+        eps: g.eps(),
+        eps_old: &g.old().eps,
+        u: &g.u,
+        v: &g.v,
+        d_u: &work.d_u,
+        d_v: &work.d_v,
+        inflow: &model.gas_inflow,
+        scheme: model.settings.scheme,
+        pinned: work.flags.pressure_pinned,
+    };
+    let total = assemble(&model.grid, &gas, dt, &mut work.imbalance, &mut work.a_p);
+    work.p_corr.iter_mut().for_each(|x| *x = 0.0);
+    let t = Instant::now();
+    diagnostics.profile.iterations.pressure += solve_keeping_preconditioner(
+        work.solvers.p.as_mut(),
+        &work.a_p,
+        &mut work.p_corr,
+        work.flags.rebuild_preconditioners,
+    )
+    .map_err(lin("gas pressure correction"))? as u64;
+    // both multigrid hierarchies of this step are built (ε' is solved first)
+    work.flags.rebuild_preconditioners = false;
+    let solve = since(t);
+    diagnostics.profile.pressure_solve += solve;
+    diagnostics.profile.pressure_assembly -= solve;
+    let g = state.gas_mut();
+    correct_velocities(
+        (nx, ny),
+        &work.p_corr,
+        &work.d_u,
+        &work.d_v,
+        &mut g.u,
+        &mut g.v,
+    );
+    let w = model.settings.relax_pressure;
+    g.p.iter_mut()
+        .zip(&work.p_corr)
+        .for_each(|(p, c)| *p += w * c);
+    Ok(total / (nx * ny) as f64)
 }
 
 /// What gas continuity is assembled from.

@@ -7,6 +7,7 @@ use runout_linsolve::{build, LinearSolver, LinearSolverKind, MultigridParams, Pa
 use runout_mesh::{Grid, Sides};
 
 use super::diagnostics::Diagnostics;
+use super::model::Model;
 use super::{
     lin, IterationFlags, PhaseCoefficients, PhaseWallClosures, PhaseWork, Scene, SolidsSpec,
     Solvers, State, TwoFluid, TwoFluidError, TwoFluidSettings, Workspace, MAX_SOLIDS_PHASES,
@@ -82,20 +83,17 @@ impl TwoFluid {
                 },
             },
             diagnostics: Diagnostics::default(),
-            scene,
-            sidewalls: None,
-            grid,
-            gas,
-            gas_walls,
-            gas_inflow: Sides {
-                west: 0.0,
-                east: 0.0,
-                south: 0.0,
-                north: 0.0,
+            model: Model {
+                grid,
+                gas,
+                gas_walls,
+                gas_inflow: Sides::all(0.0),
+                solids_specs,
+                gravity,
+                settings,
+                scene,
+                sidewalls: None,
             },
-            solids_specs,
-            gravity,
-            settings,
         })
     }
 }

@@ -1,0 +1,34 @@
+//! What a two-fluid solver is built with and keeps through its steps: the grid, the gas and
+//! its walls, the solids phases, gravity, the iteration settings, the scene derived from
+//! them and the side walls of a channel. The stages of the outer iteration read it (an
+//! explicit `&Model` beside the state they change); only the set-up and the run's schedules
+//! (gravity, inflow, side walls) write it, through [`super::TwoFluid`]'s setters.
+
+use runout_mesh::{Grid, Sides};
+
+use super::{Scene, Sidewalls, SolidsSpec, TwoFluidSettings};
+use crate::single_phase::{Fluid, SideBc};
+
+/// The fixed description of a two-fluid problem (module doc).
+pub(super) struct Model {
+    /// the grid (x may be periodic: a fully developed column)
+    pub grid: Grid,
+    /// gas density and viscosity
+    pub gas: Fluid,
+    /// the gas's condition on each side (wall closure of its tangential velocity or outlet)
+    pub gas_walls: Sides<SideBc>,
+    /// gas velocity into the domain through each wall side [m s⁻¹] (a distributor: gas
+    /// enters with εg = 1, solids see the wall; MFIX's mass inlet with BC_EP_G = 1), 0 on
+    /// impermeable walls
+    pub gas_inflow: Sides<f64>,
+    /// the solids phases: closure parameters, packing and walls
+    pub solids_specs: Vec<SolidsSpec>,
+    /// gravity (g_x, g_y) [m s⁻²]
+    pub gravity: (f64, f64),
+    /// iteration settings
+    pub settings: TwoFluidSettings,
+    /// what this solver computes (derived when built, and when the side walls are set)
+    pub scene: Scene,
+    /// the side walls of a quasi-2-D channel (docs/model.md §8), none in a plane flow
+    pub sidewalls: Option<Sidewalls>,
+}
