@@ -15,6 +15,9 @@ pub(super) struct Model {
     pub grid: Grid,
     /// gas density and viscosity
     pub gas: Fluid,
+    /// the gas viscosity per cell [Pa s] (uniform: μ_g of `gas`), the viscosity field of
+    /// the gas momentum assembly
+    pub gas_viscosity: Vec<f64>,
     /// the gas's condition on each side (wall closure of its tangential velocity or outlet)
     pub gas_walls: Sides<SideBc>,
     /// gas velocity into the domain through each wall side [m s⁻¹] (a distributor: gas

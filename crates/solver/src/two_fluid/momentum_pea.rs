@@ -116,7 +116,7 @@ fn assemble_momentum(
         bulk_density: g.bulk_density(),
         bulk_density_old: &g.old().rho_eps,
         volume_fraction: g.eps(),
-        viscosity: &work.mu_g,
+        viscosity: &model.gas_viscosity,
         solids_pressure: None,
         plastic_pressure: None,
         // the gas's own cross terms are left out: with uniform μ_g they reduce to

@@ -55,7 +55,6 @@ impl TwoFluid {
             coefficients,
             wall_closures,
             workspace: Workspace {
-                mu_g: vec![gas.viscosity; n],
                 d_u: vec![0.0; (nx + 1) * ny],
                 d_v: vec![0.0; nx * (ny + 1)],
                 p_corr: vec![0.0; n],
@@ -84,6 +83,7 @@ impl TwoFluid {
             },
             diagnostics: Diagnostics::default(),
             model: Model {
+                gas_viscosity: vec![gas.viscosity; n],
                 grid,
                 gas,
                 gas_walls,

@@ -10,8 +10,6 @@ use crate::transport::FaceData;
 
 /// The work storage of the solver (module doc).
 pub(crate) struct Workspace {
-    /// gas viscosity per cell [Pa s]
-    pub mu_g: Vec<f64>,
     /// d_g of the u and v nodes (docs/model.md §4.6)
     pub d_u: Vec<f64>,
     pub d_v: Vec<f64>,
