@@ -100,110 +100,105 @@ fn two_layer_couette_is_exact() {
     assert!(err < 1e-12, "max error {err}");
 }
 
-/// u and v are one equation (docs/model.md §4.4): the v system of the transposed problem
-/// (x ↔ y in the grid, the fields, gravity and the sides) is the u system with its
-/// neighbours renamed (east ↔ north, west ↔ south), up to the order of the products of
-/// widths (relative 1e-14). Stretched cells, Superbee, variable ρε, ε, μ, P_s, P*, an
-/// explicit source, a wall end, an outlet end with hydrostatic pressure, a no-slip and a
-/// partial-slip wall exercise every term of `assemble`.
-#[test]
-fn v_of_the_transposed_problem_is_u() {
-    let (nx, ny) = (5, 4);
-    let x = Axis::from_segments(
-        0.0,
-        &[Segment::Geometric {
-            length: 1.0,
-            cells: nx,
-            growth: 1.15,
-        }],
-    )
-    .unwrap();
-    let y = Axis::from_segments(
-        0.5,
-        &[Segment::Geometric {
-            length: 0.8,
-            cells: ny,
-            growth: 0.9,
-        }],
-    )
-    .unwrap();
-    let grid = Grid::new(x.clone(), y.clone());
-    let grid_t = Grid::new(y, x);
-    // a smooth, non-symmetric cell field and its transpose
-    let field = |scale: f64, shift: f64| -> (Vec<f64>, Vec<f64>) {
-        let f = |i: usize, j: usize| {
-            scale * (1.0 + 0.3 * (i as f64 + shift).sin() + 0.2 * (j as f64 * 1.7).cos())
+/// A momentum problem on a grid: the cell fields (ρε, ρε⁰, ε, μ, P_g, P_s, P*), the
+/// velocities, the old velocity and explicit source of the assembled component, the sides
+/// and gravity.
+struct Problem {
+    grid: Grid,
+    bcs: Sides<SideBc>,
+    gravity: (f64, f64),
+    cells: [Vec<f64>; 7],
+    u: Vec<f64>,
+    v: Vec<f64>,
+    old: Vec<f64>,
+    tau: Vec<f64>,
+}
+
+impl Problem {
+    /// Stretched cells, variable fields, a no-slip wall end (west), a hydrostatic outlet end
+    /// (east), a no-slip floor and a partial-slip lid.
+    fn new(nx: usize, ny: usize) -> Problem {
+        let geometric = |origin, length, cells, growth| {
+            Axis::from_segments(
+                origin,
+                &[Segment::Geometric {
+                    length,
+                    cells,
+                    growth,
+                }],
+            )
+            .unwrap()
         };
-        let a = (0..nx * ny).map(|k| f(k % nx, k / nx)).collect();
-        let t = (0..nx * ny).map(|k| f(k / ny, k % ny)).collect();
-        (a, t)
-    };
-    let (rho, rho_t) = field(900.0, 0.1);
-    let (rho_old, rho_old_t) = field(880.0, 0.4);
-    let (eps, eps_t) = field(0.4, 0.9);
-    let (mu, mu_t) = field(0.02, 1.3);
-    let (p_g, p_g_t) = field(1e3, 2.1);
-    let (p_s, p_s_t) = field(50.0, 0.7);
-    let (p_star, p_star_t) = field(5.0, 1.9);
-    // u nodes (nx+1) × ny and v nodes of the transposed grid ny × (nx+1), same values
-    let mu_nodes = (nx + 1) * ny;
-    let node_t = |k: usize| (k / (nx + 1)) + ny * (k % (nx + 1));
-    let u: Vec<f64> = (0..mu_nodes)
-        .map(|k| 0.3 * (k as f64 * 0.37).sin())
-        .collect();
-    let v: Vec<f64> = (0..nx * (ny + 1))
-        .map(|k| 0.2 * (k as f64 * 0.53).cos())
-        .collect();
-    let old: Vec<f64> = u.iter().map(|x| 0.9 * x + 0.01).collect();
-    let tau: Vec<f64> = (0..mu_nodes)
-        .map(|k| 1e-3 * (k as f64 * 0.11).sin())
-        .collect();
-    let transpose_nodes = |f: &[f64]| {
-        let mut t = vec![0.0; f.len()];
-        (0..f.len()).for_each(|k| t[node_t(k)] = f[k]);
-        t
-    };
-    // v of the original is u of the transposed: v node (i, j) → u node (j, i) on ny+1 × nx
-    let v_t: Vec<f64> = {
-        let mut t = vec![0.0; v.len()];
-        (0..v.len()).for_each(|k| t[k / nx + (ny + 1) * (k % nx)] = v[k]);
-        t
-    };
-    let (u_t, old_t, tau_t) = (
-        transpose_nodes(&u),
-        transpose_nodes(&old),
-        transpose_nodes(&tau),
-    );
-    let wall = |h: f64| SideBc::Wall(RobinFace::partial_slip(h, 0.1));
-    let outlet = SideBc::HydrostaticOutlet {
-        p0: 200.0,
-        density: 1.2,
-    };
-    let bcs = Sides {
-        west: wall(f64::INFINITY),
-        east: outlet,
-        south: SideBc::Wall(RobinFace::dirichlet(0.0)),
-        north: wall(30.0),
-    };
-    let bcs_t = Sides {
-        west: bcs.south,
-        east: bcs.north,
-        south: bcs.west,
-        north: bcs.east,
-    };
-    let assemble_one = |grid: &Grid,
-                        bcs: &Sides<SideBc>,
-                        gravity: (f64, f64),
-                        fields: [&[f64]; 7],
-                        tau: &[f64],
-                        (u, v, old): (&[f64], &[f64], &[f64]),
-                        c: Component|
-     -> Stencil5 {
-        let [rho, rho_old, eps, mu, p_g, p_s, p_star] = fields;
-        let ctx = Context {
+        let grid = Grid::new(geometric(0.0, 1.0, nx, 1.15), geometric(0.5, 0.8, ny, 0.9));
+        let cell_field = |scale: f64, shift: f64| -> Vec<f64> {
+            let f =
+                |i: f64, j: f64| scale * (1.0 + 0.3 * (i + shift).sin() + 0.2 * (1.7 * j).cos());
+            (0..nx * ny)
+                .map(|k| f((k % nx) as f64, (k / nx) as f64))
+                .collect()
+        };
+        let node_field = |n: usize, f: &dyn Fn(f64) -> f64| (0..n).map(|k| f(k as f64)).collect();
+        let n_u = (nx + 1) * ny;
+        Problem {
+            bcs: Sides {
+                west: SideBc::Wall(RobinFace::dirichlet(0.0)),
+                east: SideBc::HydrostaticOutlet {
+                    p0: 200.0,
+                    density: 1.2,
+                },
+                south: SideBc::Wall(RobinFace::dirichlet(0.0)),
+                north: SideBc::Wall(RobinFace::partial_slip(30.0, 0.1)),
+            },
+            gravity: (2.0, -9.0),
+            cells: [
+                cell_field(900.0, 0.1),
+                cell_field(880.0, 0.4),
+                cell_field(0.4, 0.9),
+                cell_field(0.02, 1.3),
+                cell_field(1e3, 2.1),
+                cell_field(50.0, 0.7),
+                cell_field(5.0, 1.9),
+            ],
+            u: node_field(n_u, &|k| 0.3 * (0.37 * k).sin()),
+            v: node_field(nx * (ny + 1), &|k| 0.2 * (0.53 * k).cos()),
+            old: node_field(n_u, &|k| 0.9 * 0.3 * (0.37 * k).sin() + 0.01),
+            tau: node_field(n_u, &|k| 1e-3 * (0.11 * k).sin()),
             grid,
-            bcs,
-            gravity,
+        }
+    }
+
+    /// The same problem with x and y exchanged (u becomes v; `old` and `tau` belong to
+    /// the component along the new y).
+    fn transposed(&self) -> Problem {
+        let (nx, ny) = (self.grid.nx(), self.grid.ny());
+        // a block of n0 × n1 values, index i + n0 j, read as n1 × n0
+        let swap = |f: &[f64], n0: usize, n1: usize| -> Vec<f64> {
+            (0..f.len()).map(|k| f[k / n1 + n0 * (k % n1)]).collect()
+        };
+        Problem {
+            grid: Grid::new(self.grid.y.clone(), self.grid.x.clone()),
+            bcs: Sides {
+                west: self.bcs.south,
+                east: self.bcs.north,
+                south: self.bcs.west,
+                north: self.bcs.east,
+            },
+            gravity: (self.gravity.1, self.gravity.0),
+            cells: self.cells.clone().map(|f| swap(&f, nx, ny)),
+            u: swap(&self.v, nx, ny + 1),
+            v: swap(&self.u, nx + 1, ny),
+            old: swap(&self.old, nx + 1, ny),
+            tau: swap(&self.tau, nx + 1, ny),
+        }
+    }
+
+    /// The system of component `c`, the low end of its lines fixed (a wall end).
+    fn assemble(&self, c: Component) -> Stencil5 {
+        let [rho, rho_old, eps, mu, p_g, p_s, p_star] = &self.cells;
+        let ctx = Context {
+            grid: &self.grid,
+            bcs: &self.bcs,
+            gravity: self.gravity,
             dt: 1e-3,
             scheme: Scheme::Superbee,
             gas_pressure: p_g,
@@ -216,50 +211,43 @@ fn v_of_the_transposed_problem_is_u() {
             viscosity: mu,
             solids_pressure: Some(p_s),
             plastic_pressure: Some(p_star),
-            explicit_source: Some(tau),
+            explicit_source: Some(&self.tau),
             skip: None,
         };
-        let (mx, my) = (c.cells_along_across().0 + 1, c.cells_along_across().1);
-        let (mx, my) = if c == Component::of_grid(grid)[0] {
-            (mx, my)
-        } else {
-            (my, mx)
-        };
+        let (n_along, n_across) = c.cells_along_across();
+        let (mx, my) = c.xy(n_along + 1, n_across);
         let mut pattern = Pattern::new(mx, my).unwrap();
-        // the wall end of the line (west for u, south for v) is fixed
-        for b in 0..c.cells_along_across().1 {
+        for b in 0..n_across {
             let (i, j) = c.xy(0, b);
             pattern.fix(i, j).unwrap();
         }
         let mut a = Stencil5::new(pattern);
         let mut faces = FaceData::zeros(mx, my);
-        assemble(&ctx, &phase, c, u, v, old, &mut faces, &mut a);
+        assemble(
+            &ctx, &phase, c, &self.u, &self.v, &self.old, &mut faces, &mut a,
+        );
         a
-    };
-    let [cu, _] = Component::of_grid(&grid);
-    let [_, cv_t] = Component::of_grid(&grid_t);
-    let a_u = assemble_one(
-        &grid,
-        &bcs,
-        (2.0, -9.0),
-        [&rho, &rho_old, &eps, &mu, &p_g, &p_s, &p_star],
-        &tau,
-        (&u, &v, &old),
-        cu,
-    );
-    let a_v = assemble_one(
-        &grid_t,
-        &bcs_t,
-        (-9.0, 2.0),
-        [&rho_t, &rho_old_t, &eps_t, &mu_t, &p_g_t, &p_s_t, &p_star_t],
-        &tau_t,
-        (&v_t, &u_t, &old_t),
-        cv_t,
-    );
+    }
+}
+
+/// u and v are one equation (docs/model.md §4.4): the v system of the transposed problem
+/// (x ↔ y in the grid, the fields, gravity and the sides) is the u system with its
+/// neighbours renamed (east ↔ north, west ↔ south), up to the order of the products of
+/// widths (relative 1e-14). Stretched cells, Superbee, variable ρε, ε, μ, P_s, P*, an
+/// explicit source, a wall end, an outlet end with hydrostatic pressure, a no-slip floor and
+/// a partial-slip lid exercise every term of `assemble`.
+#[test]
+fn v_of_the_transposed_problem_is_u() {
+    let (nx, ny) = (5, 4);
+    let problem = Problem::new(nx, ny);
+    let transposed = problem.transposed();
+    let a_u = problem.assemble(Component::of_grid(&problem.grid)[0]);
+    let a_v = transposed.assemble(Component::of_grid(&transposed.grid)[1]);
     let close = |x: f64, y: f64| (x - y).abs() <= 1e-14 * x.abs().max(y.abs()).max(1e-300);
     let mut nonzero = [0; 6];
-    for k in 0..mu_nodes {
-        let kt = node_t(k);
+    for k in 0..(nx + 1) * ny {
+        // u node (i, j) is v node (j, i) of the transposed grid
+        let kt = k / (nx + 1) + ny * (k % (nx + 1));
         let pairs = [
             (a_u.a_p[k], a_v.a_p[kt]),
             (a_u.a_e[k], a_v.a_n[kt]),
