@@ -58,7 +58,7 @@ impl TwoFluid {
             assemble_theta(
                 &self.grid,
                 &inputs,
-                &spec.theta_walls,
+                &spec.theta_faces(),
                 Some(&w.wall_theta),
                 &p.u,
                 &p.v,
