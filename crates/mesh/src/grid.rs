@@ -78,6 +78,16 @@ impl<T: Clone> Sides<T> {
 }
 
 impl<T> Sides<T> {
+    /// The value `f(side)` on each side.
+    pub fn from_fn(mut f: impl FnMut(Side) -> T) -> Self {
+        Sides {
+            west: f(Side::West),
+            east: f(Side::East),
+            south: f(Side::South),
+            north: f(Side::North),
+        }
+    }
+
     /// The value on `side`.
     pub fn get(&self, side: Side) -> &T {
         match side {

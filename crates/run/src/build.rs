@@ -204,13 +204,13 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
     })?;
     let b = &case.boundaries;
     let gas_walls = gas_sides(case, gas);
-    let (w, e, s_, n) = (
-        solids_side(case, gas, &b.west)?,
-        solids_side(case, gas, &b.east)?,
-        solids_side(case, gas, &b.south)?,
-        solids_side(case, gas, &b.north)?,
-    );
-    let specs = solids_specs(case, gas, [w, e, s_, n]);
+    let walls = Sides {
+        west: solids_side(case, &b.west)?,
+        east: solids_side(case, &b.east)?,
+        south: solids_side(case, &b.south)?,
+        north: solids_side(case, &b.north)?,
+    };
+    let specs = solids_specs(case, gas, &walls);
     let gravity = match case.gravity {
         Gravity::Constant { magnitude, slope } => gravity_vector(magnitude, slope),
         Gravity::TiltOnImpact { magnitude, .. } => gravity_vector(magnitude, 0.0),
@@ -232,38 +232,25 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
     Ok(tf)
 }
 
-/// (tangential closure, θ closure, state-dependent model) of one side for the solids.
-type SolidsSide = (SideBc, Option<RobinFace>, Option<SolidsWallModel>);
-
-/// The solids closures of boundary `b` of a two-fluid case with gas `gas`.
-fn solids_side(case: &Case, gas: &runout_case::Gas, b: &Boundary) -> Result<SolidsSide, RunError> {
-    let unsupported = |reason: String| RunError::Unsupported {
-        case: case.name.clone(),
-        reason,
-    };
-    Ok(match b {
-        Boundary::PressureOutlet { .. } => (outlet_bc(b, gas), None, None),
+/// The solids wall model of boundary `b`, `None` on an outlet (the solids then see the gas's
+/// outlet, [`SolidsSpec::walls`]).
+fn solids_side(case: &Case, b: &Boundary) -> Result<Option<SolidsWallModel>, RunError> {
+    match b {
+        Boundary::PressureOutlet { .. } => Ok(None),
         Boundary::Wall { solids, .. } => {
-            let model = solids.model().map_err(|e| unsupported(format!("{e}")))?;
-            match model.fixed_faces() {
-                Some((momentum, theta)) => (SideBc::Wall(momentum), Some(theta), None),
-                // placeholders that the per-face closures of a state-dependent model replace
-                None => (
-                    SideBc::Wall(RobinFace::ZERO_GRADIENT),
-                    Some(RobinFace::ZERO_GRADIENT),
-                    Some(model),
-                ),
-            }
+            solids.model().map(Some).map_err(|e| RunError::Unsupported {
+                case: case.name.clone(),
+                reason: format!("{e}"),
+            })
         }
-    })
+    }
 }
 
-/// The solids phases of a two-fluid case with the solids closures of its (west, east, south,
-/// north) sides.
+/// The solids phases of a two-fluid case with the solids wall models `walls` of its sides.
 fn solids_specs(
     case: &Case,
     gas: &runout_case::Gas,
-    [w, e, s_, n]: [SolidsSide; 4],
+    walls: &Sides<Option<SolidsWallModel>>,
 ) -> Vec<SolidsSpec> {
     case.solids
         .iter()
@@ -288,24 +275,7 @@ fn solids_specs(
                 drag: case.models.drag,
             },
             eps_max: m.max_packing,
-            walls: Sides {
-                west: w.0,
-                east: e.0,
-                south: s_.0,
-                north: n.0,
-            },
-            theta_walls: Sides {
-                west: w.1,
-                east: e.1,
-                south: s_.1,
-                north: n.1,
-            },
-            wall_models: Sides {
-                west: w.2,
-                east: e.2,
-                south: s_.2,
-                north: n.2,
-            },
+            walls: walls.clone(),
         })
         .collect()
 }

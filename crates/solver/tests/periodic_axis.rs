@@ -6,27 +6,25 @@ use runout_closures::FrictionModel;
 use runout_mesh::{Axis, Grid, Sides};
 use runout_solver::two_fluid::{SolidsSpec, TwoFluid, TwoFluidError, TwoFluidSettings};
 use runout_solver::{Fluid, SideBc};
-use runout_walls::RobinFace;
+use runout_walls::{RobinFace, SolidsWallModel};
 
 mod common;
 use common::paper_particles_in_air;
 
 /// A closed box with free-slip sides on `grid`.
 fn solver(grid: Grid) -> Result<TwoFluid, TwoFluidError> {
-    let walls = Sides::all(SideBc::Wall(RobinFace::ZERO_GRADIENT));
+    let gas_walls = Sides::all(SideBc::Wall(RobinFace::ZERO_GRADIENT));
     let spec = SolidsSpec {
         params: paper_particles_in_air(FrictionModel::princeton(), 0.65),
         eps_max: 0.65,
-        walls: walls.clone(),
-        theta_walls: Sides::all(Some(RobinFace::ZERO_GRADIENT)),
-        wall_models: Sides::all(None),
+        walls: Sides::all(Some(SolidsWallModel::FreeSlip)),
     };
     let gas = Fluid {
         density: 1.2,
         viscosity: 1.8e-5,
     };
     let settings = TwoFluidSettings::default();
-    TwoFluid::new(grid, gas, walls, vec![spec], (0.0, -9.81), settings)
+    TwoFluid::new(grid, gas, gas_walls, vec![spec], (0.0, -9.81), settings)
 }
 
 fn axis(cells: usize) -> Axis {

@@ -7,7 +7,7 @@ use runout_closures::FrictionModel;
 use runout_mesh::{Axis, Grid, Sides};
 use runout_solver::two_fluid::{SolidsSpec, TwoFluid, TwoFluidSettings};
 use runout_solver::{Fluid, SideBc};
-use runout_walls::RobinFace;
+use runout_walls::{RobinFace, SolidsWallModel};
 
 mod common;
 use common::paper_particles_in_air;
@@ -19,13 +19,11 @@ fn suspension(detect_stall: bool) -> TwoFluid {
         Axis::uniform(0.0, 0.03, nx).unwrap(),
         Axis::uniform(0.0, 0.2, ny).unwrap(),
     );
-    let walls = Sides::all(SideBc::Wall(RobinFace::dirichlet(0.0)));
+    let gas_walls = Sides::all(SideBc::Wall(RobinFace::dirichlet(0.0)));
     let spec = SolidsSpec {
         params: paper_particles_in_air(FrictionModel::princeton(), 0.65),
         eps_max: 0.65,
-        walls: walls.clone(),
-        theta_walls: Sides::all(Some(RobinFace::ZERO_GRADIENT)),
-        wall_models: Sides::all(None),
+        walls: Sides::all(Some(SolidsWallModel::NoSlip)),
     };
     let gas = Fluid {
         density: 1.2,
@@ -35,8 +33,15 @@ fn suspension(detect_stall: bool) -> TwoFluid {
         detect_stall,
         ..TwoFluidSettings::default()
     };
-    let mut tf =
-        TwoFluid::new(grid.clone(), gas, walls, vec![spec], (0.0, -9.81), settings).unwrap();
+    let mut tf = TwoFluid::new(
+        grid.clone(),
+        gas,
+        gas_walls,
+        vec![spec],
+        (0.0, -9.81),
+        settings,
+    )
+    .unwrap();
     tf.state_mut().update_solids(0, |s| {
         for (k, (e, t)) in s.eps.iter_mut().zip(s.theta.iter_mut()).enumerate() {
             if grid.y.centres()[k / nx] < 0.13 {

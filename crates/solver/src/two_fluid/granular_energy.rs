@@ -63,7 +63,7 @@ pub(super) fn granular_energy(
         assemble_theta(
             &model.grid,
             &inputs,
-            &spec.theta_walls,
+            &spec.theta_faces(),
             Some(&w.wall_theta),
             &p.u,
             &p.v,

@@ -112,14 +112,57 @@ pub struct SolidsSpec {
     pub params: ClosureParams,
     /// maximum packing εs,max (selective relaxation of the ε correction)
     pub eps_max: f64,
-    /// tangential-velocity closure on each side
-    pub walls: Sides<SideBc>,
-    /// θ closure on each wall side (`None` on an outlet)
-    pub theta_walls: Sides<Option<RobinFace>>,
-    /// state-dependent wall models (Johnson–Jackson, revisited JJ, Jenkins) per side; where
-    /// given they replace `walls` and `theta_walls` with per-face closures each outer
-    /// iteration (docs/model.md §3.5, §3.6, §3.8)
-    pub wall_models: Sides<Option<SolidsWallModel>>,
+    /// The solids condition on each side (docs/model.md §3): the wall model, `None` where the
+    /// side is an outlet (the solids then see the gas's outlet: zero gradient, the gas
+    /// outlet's pressure). A side must be a wall for the solids exactly where it is one for
+    /// the gas ([`TwoFluid::new`]).
+    pub walls: Sides<Option<SolidsWallModel>>,
+}
+
+impl SolidsSpec {
+    /// The wall model on `side`, `None` on an outlet.
+    pub fn wall(&self, side: Side) -> Option<&SolidsWallModel> {
+        self.walls.get(side).as_ref()
+    }
+
+    /// The state-dependent wall model on `side` (Johnson–Jackson, revisited JJ, Jenkins),
+    /// whose closures are evaluated per face each outer iteration (docs/model.md §3.5–3.8);
+    /// `None` on an outlet and on a wall with fixed faces.
+    pub fn per_face_model(&self, side: Side) -> Option<&SolidsWallModel> {
+        self.wall(side)
+            .filter(|model| model.fixed_faces().is_none())
+    }
+
+    /// The (momentum, θ) faces of the wall on `side`: the fixed faces of a state-independent
+    /// model (docs/model.md §3.2–3.3), zero-gradient placeholders under a per-face model
+    /// (its per-face closures replace them once evaluated); `None` on an outlet.
+    fn side_faces(&self, side: Side) -> Option<(RobinFace, RobinFace)> {
+        self.wall(side).map(|model| {
+            model
+                .fixed_faces()
+                .unwrap_or((RobinFace::ZERO_GRADIENT, RobinFace::ZERO_GRADIENT))
+        })
+    }
+
+    /// The side's face of the tangential solids velocity ([`SolidsSpec::side_faces`]),
+    /// `None` on an outlet.
+    pub(crate) fn momentum_face(&self, side: Side) -> Option<RobinFace> {
+        self.side_faces(side).map(|(momentum, _)| momentum)
+    }
+
+    /// The condition of the solids momentum on each side: the wall's momentum face
+    /// ([`SolidsSpec::momentum_face`]), the gas's condition `gas_walls` on an outlet.
+    pub(crate) fn momentum_bcs(&self, gas_walls: &Sides<SideBc>) -> Sides<SideBc> {
+        Sides::from_fn(|side| match self.momentum_face(side) {
+            Some(face) => SideBc::Wall(face),
+            None => *gas_walls.get(side),
+        })
+    }
+
+    /// The θ face of each side ([`SolidsSpec::side_faces`]), `None` on an outlet.
+    pub(crate) fn theta_faces(&self) -> Sides<Option<RobinFace>> {
+        Sides::from_fn(|side| self.side_faces(side).map(|(_, theta)| theta))
+    }
 }
 
 /// Iteration settings (MFIX defaults, docs/model.md §4.10).
@@ -206,6 +249,22 @@ pub enum TwoFluidError {
     /// Gas inflow asked for on a side that is not a wall.
     #[error("gas inflow on the {0} side, which is an outlet")]
     InflowOnOutlet(String),
+    /// A solids phase whose side is a wall where the gas's is an outlet, or an outlet where
+    /// the gas's is a wall ([`SolidsSpec::walls`]).
+    #[error(
+        "solids phase {phase}: the {side} side is {solids} for the solids but {gas} for the \
+         gas; a side is a wall or an outlet for every phase"
+    )]
+    SolidsSideMismatch {
+        /// the phase, counted from 1
+        phase: usize,
+        /// the side's name
+        side: &'static str,
+        /// "a wall" or "an outlet"
+        solids: &'static str,
+        /// "a wall" or "an outlet"
+        gas: &'static str,
+    },
     /// A periodic-x grid ([`runout_mesh::Grid::periodic_x`]) with more than one cell across
     /// or with an outlet on its x sides. Periodic x is a fully developed column, MFIX's
     /// `CYCLIC_X` on one cell: every ∂/∂x vanishes, the x-face fluxes of a cell cancel, u has
@@ -645,7 +704,9 @@ impl TwoFluid {
     /// Whether solids phase `m` has a state-dependent model (JJ, revisited JJ, Jenkins) on
     /// the floor, i.e. whether `floor_h_u` is meaningful.
     pub fn has_floor_model(&self, m: usize) -> bool {
-        self.model.solids_specs[m].wall_models.south.is_some()
+        self.model.solids_specs[m]
+            .per_face_model(Side::South)
+            .is_some()
     }
 
     /// Gravity (g_x, g_y) [m s⁻²].

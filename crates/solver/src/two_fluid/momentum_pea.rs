@@ -243,8 +243,9 @@ fn assemble_solids(
         // replaced later, so the assembly skips them (most of a slide's domain)
         dilute_faces(ctx_gas.grid, cu, p.eps(), fixed[0], &mut s.dilute_u);
         dilute_faces(ctx_gas.grid, cv, p.eps(), fixed[1], &mut s.dilute_v);
+        let bcs = spec.momentum_bcs(ctx_gas.bcs);
         let ctx = Context {
-            bcs: &spec.walls,
+            bcs: &bcs,
             wall_faces: Some(&w.wall_velocity),
             ..*ctx_gas
         };

@@ -20,7 +20,6 @@ use std::fmt;
 use runout_mesh::{Grid, Side, Sides};
 
 use super::{SolidsSpec, TwoFluidSettings};
-use crate::single_phase::SideBc;
 
 /// How one side's solids wall closure is computed.
 #[derive(Clone, Debug, PartialEq)]
@@ -65,19 +64,10 @@ pub struct Scene {
 
 /// The closure of one side of one phase.
 fn side_closure(spec: &SolidsSpec, side: Side) -> WallClosure {
-    if let Some(model) = spec.wall_models.get(side) {
-        return WallClosure::PerFace(model.describe());
-    }
-    match spec.walls.get(side) {
-        SideBc::Wall(face) if face.g == 0.0 => WallClosure::Fixed("no-slip".into()),
-        SideBc::Wall(face) if face.h == 0.0 && face.c == 0.0 => {
-            WallClosure::Fixed("free-slip".into())
-        }
-        SideBc::Wall(face) => WallClosure::Fixed(format!(
-            "fixed Robin face (g = {}, h = {}, c = {})",
-            face.g, face.h, face.c
-        )),
-        _ => WallClosure::Outlet,
+    match spec.wall(side) {
+        None => WallClosure::Outlet,
+        Some(model) if model.fixed_faces().is_some() => WallClosure::Fixed(model.describe()),
+        Some(model) => WallClosure::PerFace(model.describe()),
     }
 }
 
@@ -92,12 +82,7 @@ impl PhaseScene {
             ),
             plastic_pressure: p.friction_model.has_plastic_pressure(),
             theta_pinned_below: p.friction_model.pins_theta_below(&p.friction),
-            walls: Sides {
-                west: side_closure(spec, Side::West),
-                east: side_closure(spec, Side::East),
-                south: side_closure(spec, Side::South),
-                north: side_closure(spec, Side::North),
-            },
+            walls: Sides::from_fn(|side| side_closure(spec, side)),
         }
     }
 }

@@ -18,7 +18,8 @@ use crate::transport::FaceData;
 
 impl TwoFluid {
     /// Sets up the solver: gas at rest, εs = 0, θ = θ_small, zero pressure; the caller fills
-    /// the initial fields.
+    /// the initial fields. Refuses a phase whose sides are not walls exactly where the gas's
+    /// are ([`TwoFluidError::SolidsSideMismatch`]).
     pub fn new(
         grid: Grid,
         gas: Fluid,
@@ -30,6 +31,7 @@ impl TwoFluid {
         if solids_specs.len() > MAX_SOLIDS_PHASES {
             return Err(TwoFluidError::TooManyPhases(solids_specs.len()));
         }
+        check_solids_sides(&gas_walls, &solids_specs)?;
         let (nx, ny) = (grid.nx(), grid.ny());
         let scene = Scene::of(&grid, &solids_specs, &settings, None);
         let n = nx * ny;
@@ -96,6 +98,29 @@ impl TwoFluid {
             },
         })
     }
+}
+
+/// Each phase's solids side is a wall exactly where the gas's is ([`SolidsSpec::walls`]).
+fn check_solids_sides(
+    gas_walls: &Sides<SideBc>,
+    solids_specs: &[SolidsSpec],
+) -> Result<(), TwoFluidError> {
+    let kind = |wall: bool| if wall { "a wall" } else { "an outlet" };
+    for (m, spec) in solids_specs.iter().enumerate() {
+        for (side, gas) in gas_walls.iter() {
+            let (solids_wall, gas_wall) =
+                (spec.wall(side).is_some(), matches!(gas, SideBc::Wall(_)));
+            if solids_wall != gas_wall {
+                return Err(TwoFluidError::SolidsSideMismatch {
+                    phase: m + 1,
+                    side: side.name(),
+                    solids: kind(solids_wall),
+                    gas: kind(gas_wall),
+                });
+            }
+        }
+    }
+    Ok(())
 }
 
 /// The gas's u, v and P' patterns (walls fixed; a periodic column's node 0 is the row's

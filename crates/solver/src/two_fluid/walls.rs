@@ -48,10 +48,7 @@ pub(super) fn wall_face_velocities(
             Side::South => s.wall_velocity.south.as_ref(),
             Side::North => s.wall_velocity.north.as_ref(),
         };
-        let fixed = match spec.walls.get(side) {
-            SideBc::Wall(face) => Some(*face),
-            _ => None,
-        };
+        let fixed = spec.momentum_face(side);
         if per_node.is_none() && fixed.is_none() {
             continue;
         }
@@ -140,7 +137,7 @@ pub(super) fn update_walls(
     let mut evaluated = Sides::<u64>::default();
     for ((s, phase), spec) in solids.iter_mut().zip(state.phases()).zip(specs) {
         for side in [Side::West, Side::East, Side::South, Side::North] {
-            let Some(model) = spec.wall_models.get(side) else {
+            let Some(model) = spec.per_face_model(side) else {
                 continue;
             };
             let wall = WallSide::new(grid, side);

@@ -280,28 +280,15 @@ fn column(
         ..dry
     };
     let free_slip = SideBc::Wall(RobinFace::ZERO_GRADIENT);
-    let zero_flux = Some(RobinFace::ZERO_GRADIENT);
     let spec = SolidsSpec {
         eps_max: params.friction.eps_s_max,
         params,
         // x sides: free slip (periodic column); floor: the wall model; lid: MFIX's FSW
         walls: Sides {
-            west: free_slip,
-            east: free_slip,
-            south: free_slip,
-            north: free_slip,
-        },
-        theta_walls: Sides {
-            west: zero_flux,
-            east: zero_flux,
-            south: zero_flux,
-            north: zero_flux,
-        },
-        wall_models: Sides {
-            west: None,
-            east: None,
+            west: Some(SolidsWallModel::FreeSlip),
+            east: Some(SolidsWallModel::FreeSlip),
             south: Some(setup.floor),
-            north: None,
+            north: Some(SolidsWallModel::FreeSlip),
         },
     };
     let gas_walls = Sides {

@@ -13,7 +13,7 @@ use runout_closures::{kinetic, CellState, ClosureParams, FrictionModel};
 use runout_mesh::{Axis, Grid, Segment, Sides};
 use runout_solver::two_fluid::{CellClosures, SolidsSpec, TwoFluid, TwoFluidSettings};
 use runout_solver::{Fluid, SideBc};
-use runout_walls::RobinFace;
+use runout_walls::{RobinFace, SolidsWallModel};
 
 use super::paper_material::paper_particles_in_air;
 use crate::references::damped_cooling_theta;
@@ -64,30 +64,11 @@ pub fn cool(t_end: f64, steps: usize) -> anyhow::Result<TwoFluid> {
         }],
     )?;
     let grid = Grid::new(x, y);
-    let free_slip = SideBc::Wall(RobinFace::ZERO_GRADIENT);
-    let walls = Sides {
-        west: free_slip,
-        east: free_slip,
-        south: free_slip,
-        north: free_slip,
-    };
-    let zero_flux = Some(RobinFace::ZERO_GRADIENT);
+    let gas_walls = Sides::all(SideBc::Wall(RobinFace::ZERO_GRADIENT));
     let spec = SolidsSpec {
         params: params(),
         eps_max: 0.65,
-        walls: walls.clone(),
-        theta_walls: Sides {
-            west: zero_flux,
-            east: zero_flux,
-            south: zero_flux,
-            north: zero_flux,
-        },
-        wall_models: Sides {
-            west: None,
-            east: None,
-            south: None,
-            north: None,
-        },
+        walls: Sides::all(Some(SolidsWallModel::FreeSlip)),
     };
     let gas = Fluid {
         density: 1.2,
@@ -96,7 +77,7 @@ pub fn cool(t_end: f64, steps: usize) -> anyhow::Result<TwoFluid> {
     let mut tf = TwoFluid::new(
         grid,
         gas,
-        walls,
+        gas_walls,
         vec![spec],
         (0.0, 0.0),
         TwoFluidSettings::default(),

@@ -16,7 +16,7 @@ use runout_closures::{
 use runout_mesh::{Axis, Grid, Sides};
 use runout_solver::two_fluid::{SolidsSpec, TwoFluid, TwoFluidSettings};
 use runout_solver::{Fluid, SideBc};
-use runout_walls::RobinFace;
+use runout_walls::{RobinFace, SolidsWallModel};
 
 /// Solids density [kg m⁻³].
 pub const RHO_S: f64 = 2000.0;
@@ -72,7 +72,6 @@ fn bed_solver() -> anyhow::Result<TwoFluid> {
     let free_slip = SideBc::Wall(RobinFace::ZERO_GRADIENT);
     let no_slip = SideBc::Wall(RobinFace::dirichlet(0.0));
     let outlet = SideBc::Outlet(0.0);
-    let zero_flux = Some(RobinFace::ZERO_GRADIENT);
     let params = ClosureParams {
         particles: Particles {
             diameter: 5e-4,
@@ -92,21 +91,9 @@ fn bed_solver() -> anyhow::Result<TwoFluid> {
         params,
         eps_max: 0.65,
         walls: Sides {
-            west: free_slip,
-            east: free_slip,
-            south: no_slip,
-            north: outlet,
-        },
-        theta_walls: Sides {
-            west: zero_flux,
-            east: zero_flux,
-            south: zero_flux,
-            north: None,
-        },
-        wall_models: Sides {
-            west: None,
-            east: None,
-            south: None,
+            west: Some(SolidsWallModel::FreeSlip),
+            east: Some(SolidsWallModel::FreeSlip),
+            south: Some(SolidsWallModel::NoSlip),
             north: None,
         },
     };

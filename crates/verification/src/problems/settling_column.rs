@@ -9,7 +9,7 @@ use runout_closures::FrictionModel;
 use runout_mesh::{Axis, Grid, Sides};
 use runout_solver::two_fluid::{SolidsSpec, TwoFluid, TwoFluidSettings};
 use runout_solver::{Fluid, SideBc};
-use runout_walls::RobinFace;
+use runout_walls::{RobinFace, SolidsWallModel};
 
 use super::paper_material::paper_particles_in_air;
 
@@ -28,28 +28,15 @@ pub fn column(steps: usize, dt: f64, verbose: bool) -> anyhow::Result<(TwoFluid,
     };
     let no_slip = SideBc::Wall(RobinFace::dirichlet(0.0));
     let free_slip = SideBc::Wall(RobinFace::ZERO_GRADIENT);
-    let zero_flux = Some(RobinFace::ZERO_GRADIENT);
     let params = paper_particles_in_air(FrictionModel::princeton(), 0.65);
     let spec = SolidsSpec {
         params,
         eps_max: 0.65,
         walls: Sides {
-            west: free_slip,
-            east: free_slip,
-            south: no_slip,
-            north: no_slip,
-        },
-        theta_walls: Sides {
-            west: zero_flux,
-            east: zero_flux,
-            south: zero_flux,
-            north: zero_flux,
-        },
-        wall_models: Sides {
-            west: None,
-            east: None,
-            south: None,
-            north: None,
+            west: Some(SolidsWallModel::FreeSlip),
+            east: Some(SolidsWallModel::FreeSlip),
+            south: Some(SolidsWallModel::NoSlip),
+            north: Some(SolidsWallModel::NoSlip),
         },
     };
     let gas_walls = Sides {
