@@ -23,7 +23,7 @@
 //! added by the partial elimination of the two-fluid model.
 
 use runout_linsolve::Stencil5;
-use runout_mesh::{Grid, Side, Sides};
+use runout_mesh::{Grid, Sides};
 use runout_walls::RobinFace;
 
 use crate::single_phase::SideBc;
@@ -71,18 +71,6 @@ pub struct WallFaces {
     pub north: Option<Vec<RobinFace>>,
 }
 
-impl WallFaces {
-    /// The per-node closures of `side`, if given.
-    pub fn side(&self, side: Side) -> Option<&Vec<RobinFace>> {
-        match side {
-            Side::West => self.west.as_ref(),
-            Side::East => self.east.as_ref(),
-            Side::South => self.south.as_ref(),
-            Side::North => self.north.as_ref(),
-        }
-    }
-}
-
 /// The closure at position `k` along `side`: the per-node one if given, else the side's.
 fn side_closure(bc: &SideBc, faces: Option<&Vec<RobinFace>>, k: usize) -> SideBc {
     match faces {
@@ -126,6 +114,20 @@ pub fn cv_width(widths: &[f64], i: usize) -> f64 {
 /// Harmonic mean with MFIX's guard against a zero denominator (docs/model.md §4.1, AVG_X_H).
 pub(crate) fn harmonic(a: f64, b: f64, weight_a: f64) -> f64 {
     a * b / (weight_a * a + (1.0 - weight_a) * b).max(1e-15)
+}
+
+/// Distance-weighted interpolation of a cell field to x-face i (1 ≤ i < nx; AVG_X).
+fn interp_x(grid: &Grid, field: &[f64], i: usize, j: usize) -> f64 {
+    let nx = grid.nx();
+    let w = grid.x.interpolation_weight(i - 1);
+    w * field[i - 1 + nx * j] + (1.0 - w) * field[i + nx * j]
+}
+
+/// Distance-weighted interpolation of a cell field to y-face j (1 ≤ j < ny; AVG_Y).
+fn interp_y(grid: &Grid, field: &[f64], i: usize, j: usize) -> f64 {
+    let nx = grid.nx();
+    let w = grid.y.interpolation_weight(j - 1);
+    w * field[i + nx * (j - 1)] + (1.0 - w) * field[i + nx * j]
 }
 
 /// Σ a_nb φ_nb + b of row k: the right-hand side with the current neighbour values (used
@@ -183,9 +185,14 @@ fn both_skipped(skip: Option<&[bool]>, k0: usize, k1: usize) -> bool {
 }
 
 /// Assembles the momentum system of component `c` (u or v) of one phase on its node block,
-/// without relaxation (module doc): u on the (nx+1) × ny x-faces, v on the nx × (ny+1)
-/// y-faces. `old` is the component's velocity at the old time level. Rows of fixed nodes
-/// (wall normal velocities) read 0.
+/// without relaxation (module doc); `old` is the component's velocity at the old time level.
+/// Rows of fixed nodes (wall normal velocities) read 0.
+///
+/// u and v are one equation, written twice as mirror images ([`assemble_u`],
+/// [`assemble_v`]; the test `v_of_the_transposed_problem_is_u` holds them to it): one
+/// assembly over the staggered [`Component`] view gave the same results bit for bit but
+/// cost 6–7 % more CPU on family M (docs/performance.md, session 14), where the issue's
+/// constraint allows 3 %.
 #[allow(clippy::too_many_arguments)]
 pub fn assemble(
     ctx: &Context<'_>,
@@ -197,168 +204,201 @@ pub fn assemble(
     faces: &mut FaceData,
     a: &mut Stencil5,
 ) {
-    // one compiled copy per direction, so that the index arithmetic of the component view
-    // folds to that of u or v (as fast as the hand-written u and v assemblies were)
     if c.dir == 0 {
-        control_volume_faces::<0>(ctx, phase, c, u, v, faces);
+        assemble_u(ctx, phase, u, v, old, faces, a);
     } else {
-        control_volume_faces::<1>(ctx, phase, c, u, v, faces);
-    }
-    assemble_masked(faces, c.pick(u, v), ctx.scheme, phase.skip, a);
-    if c.dir == 0 {
-        sources::<0>(ctx, phase, c, old, a);
-    } else {
-        sources::<1>(ctx, phase, c, old, a);
+        assemble_v(ctx, phase, u, v, old, faces, a);
     }
 }
 
-/// The face fluxes and conductances of component `c`'s control volumes (module doc), in
-/// the component's coordinates (a along, b across; [`Component`]); `DIR` is `c.dir`.
-fn control_volume_faces<const DIR: usize>(
+/// Assembles the u-momentum system of one phase on the (nx+1) × ny block of x-faces,
+/// without relaxation. Rows of fixed nodes (wall normal velocities) read u = 0.
+fn assemble_u(
     ctx: &Context<'_>,
     phase: &PhaseFields<'_>,
-    c: Component,
     u: &[f64],
     v: &[f64],
+    u_old: &[f64],
     faces: &mut FaceData,
+    a: &mut Stencil5,
 ) {
-    let c = Component { dir: DIR, ..c };
-    let grid = ctx.grid;
-    let (n_a, n_b) = c.cells_along_across();
-    let (along, across) = (c.axis(grid), c.across_axis(grid));
-    let (d_a, d_b) = (along.widths(), across.widths());
-    let across_spacing = across.face_spacing();
-    let (rho_eps, mu) = (phase.bulk_density, phase.viscosity);
-    let (own, other) = c.pick((u, v), (v, u));
-    // scalar-cell face mass flux at the component's node (a, b), ρε from the scheme (at a
-    // domain end, where only an outlet has a flux, the inside cell supplies ρε)
-    let along_face_flux = |a: usize, b: usize| -> f64 {
-        let vel = own[c.node(a, b)];
-        let re = if a == 0 {
-            rho_eps[c.cell(0, b)]
-        } else if a == n_a {
-            rho_eps[c.cell(n_a - 1, b)]
+    u_faces(ctx, phase, u, v, faces);
+    assemble_masked(faces, u, ctx.scheme, phase.skip, a);
+    u_sources(ctx, phase, u_old, a);
+}
+
+/// The u-nodes of a grid: the cells beside each node, the distance weights between them and
+/// the widths of the control volumes (a periodic column's node 0 lies between cell nx − 1 and
+/// cell 0 and spans a whole cell).
+#[derive(Clone, Copy)]
+struct UNodes<'a> {
+    grid: &'a Grid,
+    periodic: bool,
+}
+
+impl UNodes<'_> {
+    /// The cells west and east of u-node i: one at an end, unless the column is periodic,
+    /// where node 0 lies between cell nx − 1 (= 0) and cell 0.
+    fn cells_beside(self, i: usize) -> (Option<usize>, Option<usize>) {
+        let nx = self.grid.nx();
+        if self.periodic && i == 0 {
+            (Some(nx - 1), Some(0))
         } else {
+            (i.checked_sub(1), (i < nx).then_some(i))
+        }
+    }
+
+    /// Distance weight of cell w at the face between cells w and e (½ across the wrap).
+    fn x_weight(self, w: usize, e: usize) -> f64 {
+        if w < e {
+            self.grid.x.interpolation_weight(w)
+        } else {
+            0.5
+        }
+    }
+
+    /// Width of the u control volume: the whole cell for a periodic column's node 0.
+    fn width(self, i: usize) -> f64 {
+        let (nx, dx) = (self.grid.nx(), self.grid.x.widths());
+        if self.periodic && i == 0 {
+            0.5 * (dx[nx - 1] + dx[0])
+        } else {
+            cv_width(dx, i)
+        }
+    }
+}
+
+/// The face fluxes and conductances of the u control volumes (module doc).
+fn u_faces(ctx: &Context<'_>, phase: &PhaseFields<'_>, u: &[f64], v: &[f64], faces: &mut FaceData) {
+    let grid = ctx.grid;
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let (dx, dy) = (grid.x.widths(), grid.y.widths());
+    let dyc = grid.y.face_spacing();
+    let mx = nx + 1;
+    let rho_eps = phase.bulk_density;
+    let mu = phase.viscosity;
+    // scalar-cell x-face mass flux at u-node (i, j), ρε upwind (zero on the domain ends
+    // unless the node is an outlet, where the inside cell supplies ρε)
+    let x_face_flux = |i: usize, j: usize| -> f64 {
+        let vel = u[i + mx * j];
+        let re = if i == 0 {
+            rho_eps[nx * j]
+        } else if i == nx {
+            rho_eps[nx - 1 + nx * j]
+        } else {
+            let row = nx * j;
             face_value(
                 ctx.scheme,
                 rho_eps,
-                (a >= 2).then(|| c.cell(a - 2, b)),
-                c.cell(a - 1, b),
-                c.cell(a, b),
-                (a + 1 < n_a).then(|| c.cell(a + 1, b)),
+                (i >= 2).then(|| i - 2 + row),
+                i - 1 + row,
+                i + row,
+                (i + 1 < nx).then(|| i + 1 + row),
                 vel,
             )
         };
-        re * vel * d_b[b]
+        re * vel * dy[j]
     };
-    // scalar-cell face mass flux at the other component's node (a, b), 1 ≤ b < n_b
-    let across_face_flux = |a: usize, b: usize| -> f64 {
-        let vel = other[c.cross_node(a, b)];
+    let nodes = UNodes {
+        grid,
+        periodic: ctx.grid.periodic_x(),
+    };
+    let cells_beside = |i: usize| nodes.cells_beside(i);
+    let x_weight = |w: usize, e: usize| nodes.x_weight(w, e);
+    let width = |i: usize| nodes.width(i);
+    // scalar-cell y-face mass flux at v-node (i, j), 1 ≤ j < ny
+    let y_face_flux = |i: usize, j: usize| -> f64 {
+        let vel = v[i + nx * j];
         face_value(
             ctx.scheme,
             rho_eps,
-            (b >= 2).then(|| c.cell(a, b - 2)),
-            c.cell(a, b - 1),
-            c.cell(a, b),
-            (b + 1 < n_b).then(|| c.cell(a, b + 1)),
+            (j >= 2).then(|| i + nx * (j - 2)),
+            i + nx * (j - 1),
+            i + nx * j,
+            (j + 1 < ny).then(|| i + nx * (j + 1)),
             vel,
         ) * vel
-            * d_a[a]
+            * dx[i]
     };
-    for b in 0..n_b {
-        for a in 1..=n_a {
-            // the face through cell centre a − 1, between nodes a − 1 and a
-            let k = c.along_face(faces, a, b);
-            let (flux, cond) = c.pick(
-                (&mut faces.flux_x, &mut faces.cond_x),
-                (&mut faces.flux_y, &mut faces.cond_y),
-            );
+    for j in 0..ny {
+        for i in 1..=nx {
+            // u-CV x-face at cell centre i−1, between u-nodes i−1 and i
+            let k = faces.xf(i, j);
             // periodic column: the face couples node 0 to its own copy, and its flux and
             // diffusion cancel those of the wrapped face on the other side
-            if c.periodic || both_skipped(phase.skip, c.node(a - 1, b), c.node(a, b)) {
-                (flux[k], cond[k]) = (0.0, 0.0);
+            if ctx.grid.periodic_x() || both_skipped(phase.skip, i - 1 + mx * j, i + mx * j) {
+                (faces.flux_x[k], faces.cond_x[k]) = (0.0, 0.0);
                 continue;
             }
-            flux[k] = 0.5 * (along_face_flux(a - 1, b) + along_face_flux(a, b));
-            cond[k] = mu[c.cell(a - 1, b)] * d_b[b] / d_a[a - 1];
+            faces.flux_x[k] = 0.5 * (x_face_flux(i - 1, j) + x_face_flux(i, j));
+            faces.cond_x[k] = mu[i - 1 + nx * j] * dy[j] / dx[i - 1];
         }
     }
-    for b in 1..n_b {
-        for a in 0..=n_a {
-            // the face between nodes (a, b − 1) and (a, b): halves of the fluxes of the
-            // cells beside the node
-            let k = c.across_face(faces, a, b);
-            let (flux, cond) = c.pick(
-                (&mut faces.flux_y, &mut faces.cond_y),
-                (&mut faces.flux_x, &mut faces.cond_x),
-            );
-            if both_skipped(phase.skip, c.node(a, b - 1), c.node(a, b)) {
-                (flux[k], cond[k]) = (0.0, 0.0);
+    for j in 1..ny {
+        for i in 0..mx {
+            // u-CV y-face at y-face j: halves of the two adjacent cells' v-face fluxes
+            if both_skipped(phase.skip, i + mx * (j - 1), i + mx * j) {
+                let k = faces.yf(i, j);
+                (faces.flux_y[k], faces.cond_y[k]) = (0.0, 0.0);
                 continue;
             }
-            let (lo, hi) = c.cells_beside(a);
-            flux[k] = [lo, hi]
+            let (west, east) = cells_beside(i);
+            let flux: f64 = [west, east]
                 .into_iter()
                 .flatten()
-                .map(|ca| 0.5 * across_face_flux(ca, b))
+                .map(|c| 0.5 * y_face_flux(c, j))
                 .sum();
-            // viscosity at the corner: harmonic across, then along (MFIX AVG_X_H of AVG_Y_H
-            // for u, AVG_Y_H of AVG_X_H for v; docs/model.md §4.1)
-            let line = |ca: usize| {
+            // viscosity at the corner: harmonic in y per column, then in x (AVG_X_H of AVG_Y_H)
+            let column = |c: usize| {
                 harmonic(
-                    mu[c.cell(ca, b - 1)],
-                    mu[c.cell(ca, b)],
-                    across.interpolation_weight(b - 1),
+                    mu[c + nx * (j - 1)],
+                    mu[c + nx * j],
+                    grid.y.interpolation_weight(j - 1),
                 )
             };
-            let mu_corner = match (lo, hi) {
-                (Some(l), Some(h)) => harmonic(line(l), line(h), c.along_weight(grid, l, h)),
-                (Some(x), None) | (None, Some(x)) => line(x),
+            let mu_corner = match (west, east) {
+                (Some(w), Some(e)) => harmonic(column(w), column(e), x_weight(w, e)),
+                (Some(c), None) | (None, Some(c)) => column(c),
                 (None, None) => 0.0,
             };
-            cond[k] = mu_corner * c.control_width(grid, a) / across_spacing[b];
+            let k = faces.yf(i, j);
+            faces.flux_y[k] = flux;
+            faces.cond_y[k] = mu_corner * width(i) / dyc[j];
         }
     }
 }
 
-/// The sources of component `c`'s equations (walls, transient, gravity, pressure
-/// gradients, the explicit stress) and the rows of fixed nodes; `DIR` is `c.dir`.
-fn sources<const DIR: usize>(
-    ctx: &Context<'_>,
-    phase: &PhaseFields<'_>,
-    c: Component,
-    old: &[f64],
-    a: &mut Stencil5,
-) {
-    let c = Component { dir: DIR, ..c };
+/// The sources of the u equations (walls, transient, gravity, pressure gradients, the
+/// explicit stress) and the rows of fixed nodes.
+fn u_sources(ctx: &Context<'_>, phase: &PhaseFields<'_>, u_old: &[f64], a: &mut Stencil5) {
     let grid = ctx.grid;
-    let (n_a, n_b) = c.cells_along_across();
+    let (nx, ny) = (grid.nx(), grid.ny());
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
-    let (along, across) = (c.axis(grid), c.across_axis(grid));
-    let d_b = across.widths();
-    let (rho_eps, mu, eps) = (phase.bulk_density, phase.viscosity, phase.volume_fraction);
-    let (g_along, g_across) = c.pick(ctx.gravity, (ctx.gravity.1, ctx.gravity.0));
-    let (low_end, high_end) = c.end_sides();
-    let (low_wall, high_wall) = c.wall_sides();
-    let wall_closure = |side: Side, a: usize| {
-        side_closure(
-            ctx.bcs.get(side),
-            ctx.wall_faces.and_then(|w| w.side(side)),
-            a,
-        )
+    let mx = nx + 1;
+    let rho_eps = phase.bulk_density;
+    let mu = phase.viscosity;
+    let nodes = UNodes {
+        grid,
+        periodic: ctx.grid.periodic_x(),
     };
-    for b in 0..n_b {
-        // the pressure an outlet end holds at this line's height
-        let end_pressure = |side: Side| {
-            let position = across.centres()[b] - across.start();
-            ctx.bcs
-                .get(side)
-                .pressure(position, g_across)
-                .unwrap_or(0.0)
-        };
-        let (p_low_end, p_high_end) = (end_pressure(low_end), end_pressure(high_end));
-        for a_node in 0..=n_a {
-            let k = c.node(a_node, b);
+    let cells_beside = |i: usize| nodes.cells_beside(i);
+    let x_weight = |w: usize, e: usize| nodes.x_weight(w, e);
+    let width = |i: usize| nodes.width(i);
+    let y0 = grid.y.start();
+    let yc = grid.y.centres();
+    for j in 0..ny {
+        let p_west = ctx
+            .bcs
+            .west
+            .pressure(yc[j] - y0, ctx.gravity.1)
+            .unwrap_or(0.0);
+        let p_east = ctx
+            .bcs
+            .east
+            .pressure(yc[j] - y0, ctx.gravity.1)
+            .unwrap_or(0.0);
+        for i in 0..mx {
+            let k = i + mx * j;
             if a.pattern().fixed_mask()[k] {
                 fixed_row(a, k, 0.0);
                 continue;
@@ -366,64 +406,244 @@ fn sources<const DIR: usize>(
             if phase.skip.is_some_and(|s| s[k]) {
                 continue;
             }
-            let width = c.control_width(grid, a_node);
-            // cells on either side along the component (one at an outlet end)
-            let (lo, hi) = c.cells_beside(a_node);
-            let half_volume = |ca: Option<usize>, field: &[f64]| {
-                ca.map_or(0.0, |ca| {
-                    let (i, j) = c.xy(ca, b);
-                    0.5 * dx[i] * dy[j] * field[c.cell(ca, b)]
-                })
+            let width = width(i);
+            // cells on either side (the inside cell only at an outlet end)
+            let (west, east) = cells_beside(i);
+            let half_volume = |c: Option<usize>, field: &[f64]| {
+                c.map_or(0.0, |c| 0.5 * dx[c] * dy[j] * field[c + nx * j])
             };
-            // walls across the line: the fluid cells' viscosity (docs/model.md §3.1)
+            // walls below and above: the fluid cells' viscosity (docs/model.md §3.1)
             let mu_wall = |row: usize| -> f64 {
-                match (lo, hi) {
-                    (Some(l), Some(h)) => harmonic(
-                        mu[c.cell(l, row)],
-                        mu[c.cell(h, row)],
-                        c.along_weight(grid, l, h),
-                    ),
-                    (Some(x), None) | (None, Some(x)) => mu[c.cell(x, row)],
+                match (west, east) {
+                    (Some(w), Some(e)) => {
+                        harmonic(mu[w + nx * row], mu[e + nx * row], x_weight(w, e))
+                    }
+                    (Some(c), None) | (None, Some(c)) => mu[c + nx * row],
                     (None, None) => 0.0,
                 }
             };
-            if b == 0 {
-                let bc = wall_closure(low_wall, a_node);
-                add_wall_face(a, k, &bc, mu_wall(0), d_b[0], width);
+            let over = ctx.wall_faces;
+            if j == 0 {
+                let bc = side_closure(&ctx.bcs.south, over.and_then(|w| w.south.as_ref()), i);
+                add_wall_face(a, k, &bc, mu_wall(0), dy[0], width);
             }
-            if b == n_b - 1 {
-                let bc = wall_closure(high_wall, a_node);
-                add_wall_face(a, k, &bc, mu_wall(n_b - 1), d_b[n_b - 1], width);
+            if j == ny - 1 {
+                let bc = side_closure(&ctx.bcs.north, over.and_then(|w| w.north.as_ref()), i);
+                add_wall_face(a, k, &bc, mu_wall(ny - 1), dy[ny - 1], width);
             }
             // transient (implicit Euler, docs/model.md §4.3–4.4)
-            let a0 = (half_volume(lo, phase.bulk_density_old)
-                + half_volume(hi, phase.bulk_density_old))
+            let a0 = (half_volume(west, phase.bulk_density_old)
+                + half_volume(east, phase.bulk_density_old))
                 / ctx.dt;
             a.a_p[k] += a0;
-            a.b[k] += a0 * old[k];
+            a.b[k] += a0 * u_old[k];
             // body force with the current bulk density
-            a.b[k] += (half_volume(lo, rho_eps) + half_volume(hi, rho_eps)) * g_along;
-            // gas pressure, −ε̄ ΔP A (ε̄ distance-interpolated, AVG_X / AVG_Y)
-            let eps_face = match (lo, hi) {
-                // across a periodic wrap
-                (Some(l), Some(h)) if l >= h => 0.5 * (eps[c.cell(l, b)] + eps[c.cell(h, b)]),
-                (Some(l), Some(h)) => {
-                    let w = along.interpolation_weight(l);
-                    w * eps[c.cell(l, b)] + (1.0 - w) * eps[c.cell(h, b)]
+            a.b[k] += (half_volume(west, rho_eps) + half_volume(east, rho_eps)) * ctx.gravity.0;
+            // gas pressure, −ε̄ ΔP A; solids pressure, −ΔP_s A
+            let eps_face = match (west, east) {
+                (Some(w), Some(e)) if w >= e => {
+                    let f = phase.volume_fraction;
+                    0.5 * (f[w + nx * j] + f[e + nx * j])
                 }
-                (Some(x), None) | (None, Some(x)) => eps[c.cell(x, b)],
+                (Some(_), Some(_)) => interp_x(grid, phase.volume_fraction, i, j),
+                (Some(c), None) | (None, Some(c)) => phase.volume_fraction[c + nx * j],
                 (None, None) => 0.0,
             };
-            let p_lo = lo.map_or(p_low_end, |x| ctx.gas_pressure[c.cell(x, b)]);
-            let p_hi = hi.map_or(p_high_end, |x| ctx.gas_pressure[c.cell(x, b)]);
-            a.b[k] += eps_face * (p_lo - p_hi) * d_b[b];
-            // solids pressure, −ΔP_s A
-            if let (Some(ps), Some(l), Some(h)) = (phase.solids_pressure, lo, hi) {
-                a.b[k] += (ps[c.cell(l, b)] - ps[c.cell(h, b)]) * d_b[b];
+            let p_w = west.map_or(p_west, |c| ctx.gas_pressure[c + nx * j]);
+            let p_e = east.map_or(p_east, |c| ctx.gas_pressure[c + nx * j]);
+            a.b[k] += eps_face * (p_w - p_e) * dy[j];
+            if let (Some(ps), Some(w), Some(e)) = (phase.solids_pressure, west, east) {
+                a.b[k] += (ps[w + nx * j] - ps[e + nx * j]) * dy[j];
             }
-            // −ΔP* A, MFIX's SDPS (docs/model.md §4.4, §2.4.1)
-            if let (Some(pp), Some(l), Some(h)) = (phase.plastic_pressure, lo, hi) {
-                a.b[k] += (pp[c.cell(l, b)] - pp[c.cell(h, b)]) * d_b[b];
+            // −(P*_E − P*_W) A, MFIX's SDPS (docs/model.md §4.4, §2.4.1)
+            if let (Some(pp), Some(w), Some(e)) = (phase.plastic_pressure, west, east) {
+                a.b[k] += (pp[w + nx * j] - pp[e + nx * j]) * dy[j];
+            }
+            if let Some(tau) = phase.explicit_source {
+                a.b[k] += tau[k];
+            }
+        }
+    }
+}
+
+/// Assembles the v-momentum system of one phase on the nx × (ny+1) block of y-faces,
+/// without relaxation (the mirror of [`assemble_u`]).
+fn assemble_v(
+    ctx: &Context<'_>,
+    phase: &PhaseFields<'_>,
+    u: &[f64],
+    v: &[f64],
+    v_old: &[f64],
+    faces: &mut FaceData,
+    a: &mut Stencil5,
+) {
+    v_faces(ctx, phase, u, v, faces);
+    assemble_masked(faces, v, ctx.scheme, phase.skip, a);
+    v_sources(ctx, phase, v_old, a);
+}
+
+/// The face fluxes and conductances of the v control volumes (module doc).
+fn v_faces(ctx: &Context<'_>, phase: &PhaseFields<'_>, u: &[f64], v: &[f64], faces: &mut FaceData) {
+    let grid = ctx.grid;
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let (dx, dy) = (grid.x.widths(), grid.y.widths());
+    let dxc = grid.x.face_spacing();
+    let my = ny + 1;
+    let rho_eps = phase.bulk_density;
+    let mu = phase.viscosity;
+    let y_face_flux = |i: usize, j: usize| -> f64 {
+        let vel = v[i + nx * j];
+        let re = if j == 0 {
+            rho_eps[i]
+        } else if j == ny {
+            rho_eps[i + nx * (ny - 1)]
+        } else {
+            face_value(
+                ctx.scheme,
+                rho_eps,
+                (j >= 2).then(|| i + nx * (j - 2)),
+                i + nx * (j - 1),
+                i + nx * j,
+                (j + 1 < ny).then(|| i + nx * (j + 1)),
+                vel,
+            )
+        };
+        re * vel * dx[i]
+    };
+    let x_face_flux = |i: usize, j: usize| -> f64 {
+        let vel = u[i + (nx + 1) * j];
+        let row = nx * j;
+        face_value(
+            ctx.scheme,
+            rho_eps,
+            (i >= 2).then(|| i - 2 + row),
+            i - 1 + row,
+            i + row,
+            (i + 1 < nx).then(|| i + 1 + row),
+            vel,
+        ) * vel
+            * dy[j]
+    };
+    for j in 0..my {
+        for i in 1..nx {
+            // v-CV x-face at x-face i: halves of the two adjacent rows' u-face fluxes
+            if both_skipped(phase.skip, i - 1 + nx * j, i + nx * j) {
+                let k = faces.xf(i, j);
+                (faces.flux_x[k], faces.cond_x[k]) = (0.0, 0.0);
+                continue;
+            }
+            let (south, north) = (j.checked_sub(1), (j < ny).then_some(j));
+            let flux: f64 = [south, north]
+                .into_iter()
+                .flatten()
+                .map(|r| 0.5 * x_face_flux(i, r))
+                .sum();
+            let row = |r: usize| {
+                harmonic(
+                    mu[i - 1 + nx * r],
+                    mu[i + nx * r],
+                    grid.x.interpolation_weight(i - 1),
+                )
+            };
+            let mu_corner = match (south, north) {
+                (Some(s), Some(n)) => harmonic(row(s), row(n), grid.y.interpolation_weight(s)),
+                (Some(r), None) | (None, Some(r)) => row(r),
+                (None, None) => 0.0,
+            };
+            let k = faces.xf(i, j);
+            faces.flux_x[k] = flux;
+            faces.cond_x[k] = mu_corner * cv_width(dy, j) / dxc[i];
+        }
+    }
+    for j in 1..my {
+        for i in 0..nx {
+            let k = faces.yf(i, j);
+            if both_skipped(phase.skip, i + nx * (j - 1), i + nx * j) {
+                (faces.flux_y[k], faces.cond_y[k]) = (0.0, 0.0);
+                continue;
+            }
+            faces.flux_y[k] = 0.5 * (y_face_flux(i, j - 1) + y_face_flux(i, j));
+            faces.cond_y[k] = mu[i + nx * (j - 1)] * dx[i] / dy[j - 1];
+        }
+    }
+}
+
+/// The sources of the v equations (walls, transient, gravity, pressure gradients, the
+/// explicit stress) and the rows of fixed nodes.
+fn v_sources(ctx: &Context<'_>, phase: &PhaseFields<'_>, v_old: &[f64], a: &mut Stencil5) {
+    let grid = ctx.grid;
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let (dx, dy) = (grid.x.widths(), grid.y.widths());
+    let my = ny + 1;
+    let rho_eps = phase.bulk_density;
+    let mu = phase.viscosity;
+    let x0 = grid.x.start();
+    let xc = grid.x.centres();
+    for j in 0..my {
+        for i in 0..nx {
+            let k = i + nx * j;
+            if a.pattern().fixed_mask()[k] {
+                fixed_row(a, k, 0.0);
+                continue;
+            }
+            if phase.skip.is_some_and(|s| s[k]) {
+                continue;
+            }
+            let height = cv_width(dy, j);
+            let (south, north) = (j.checked_sub(1), (j < ny).then_some(j));
+            let half_volume = |r: Option<usize>, field: &[f64]| {
+                r.map_or(0.0, |r| 0.5 * dx[i] * dy[r] * field[i + nx * r])
+            };
+            let mu_wall = |col: usize| -> f64 {
+                match (south, north) {
+                    (Some(s), Some(n)) => harmonic(
+                        mu[col + nx * s],
+                        mu[col + nx * n],
+                        grid.y.interpolation_weight(s),
+                    ),
+                    (Some(r), None) | (None, Some(r)) => mu[col + nx * r],
+                    (None, None) => 0.0,
+                }
+            };
+            let over = ctx.wall_faces;
+            if i == 0 {
+                let bc = side_closure(&ctx.bcs.west, over.and_then(|w| w.west.as_ref()), j);
+                add_wall_face(a, k, &bc, mu_wall(0), dx[0], height);
+            }
+            if i == nx - 1 {
+                let bc = side_closure(&ctx.bcs.east, over.and_then(|w| w.east.as_ref()), j);
+                add_wall_face(a, k, &bc, mu_wall(nx - 1), dx[nx - 1], height);
+            }
+            let a0 = (half_volume(south, phase.bulk_density_old)
+                + half_volume(north, phase.bulk_density_old))
+                / ctx.dt;
+            a.a_p[k] += a0;
+            a.b[k] += a0 * v_old[k];
+            a.b[k] += (half_volume(south, rho_eps) + half_volume(north, rho_eps)) * ctx.gravity.1;
+            let eps_face = match (south, north) {
+                (Some(_), Some(_)) => interp_y(grid, phase.volume_fraction, i, j),
+                (Some(r), None) | (None, Some(r)) => phase.volume_fraction[i + nx * r],
+                (None, None) => 0.0,
+            };
+            let p_south = ctx
+                .bcs
+                .south
+                .pressure(xc[i] - x0, ctx.gravity.0)
+                .unwrap_or(0.0);
+            let p_north = ctx
+                .bcs
+                .north
+                .pressure(xc[i] - x0, ctx.gravity.0)
+                .unwrap_or(0.0);
+            let p_s = south.map_or(p_south, |r| ctx.gas_pressure[i + nx * r]);
+            let p_n = north.map_or(p_north, |r| ctx.gas_pressure[i + nx * r]);
+            a.b[k] += eps_face * (p_s - p_n) * dx[i];
+            if let (Some(ps), Some(s), Some(n)) = (phase.solids_pressure, south, north) {
+                a.b[k] += (ps[i + nx * s] - ps[i + nx * n]) * dx[i];
+            }
+            // −(P*_N − P*_S) A, MFIX's SDPS (docs/model.md §4.4, §2.4.1)
+            if let (Some(pp), Some(s), Some(n)) = (phase.plastic_pressure, south, north) {
+                a.b[k] += (pp[i + nx * s] - pp[i + nx * n]) * dx[i];
             }
             if let Some(tau) = phase.explicit_source {
                 a.b[k] += tau[k];

@@ -2,25 +2,18 @@
 //! §4.1). The momentum equation is the same in x and y (docs/model.md §4.4); what differs
 //! between u and v is only the node block, which cells lie beside a node, the area of its
 //! face and which wall a fixed node sits on. [`Component`] answers those questions, so the
-//! momentum assembly ([`crate::momentum::assemble`]), the partial elimination, the
-//! dilute-face rules and the wall rows of the two-fluid momentum stage are written once for
-//! both components.
+//! partial elimination, the dilute-face rules and the wall rows of the two-fluid momentum
+//! stage are written once for both components, and every caller of the momentum assembly
+//! ([`crate::momentum::assemble`]) names the component instead of choosing a function.
 //!
 //! Node (i, j) of u lies on the x-face between cells (i − 1, j) and (i, j), node (i, j) of v
 //! on the y-face between cells (i, j − 1) and (i, j); a node on the domain boundary has one
 //! cell beside it. Cell indices are k = i + nx·j, node indices k = i + mx·j.
 //!
-//! The assembly reads the grid in the component's own coordinates (a, b): a along the
-//! component (x for u, y for v), b across it. Cell (a, b), node (a, b) (between cells
-//! (a − 1, b) and (a, b)) and the other component's node (a, b) (between cells (a, b − 1)
-//! and (a, b)) map to the arrays' indices through strides ([`Component::cell`],
-//! [`Component::node`], [`Component::cross_node`]); the sides at the two ends of a line of
-//! nodes are the "ends" (west/east for u), the sides parallel to it the "walls"
-//! (south/north for u).
+//! A position can also be named in the component's own coordinates (a, b): a along the
+//! component (x for u, y for v), b across it ([`Component::xy`]).
 
-use runout_mesh::{Axis, Grid, Side, Sides};
-
-use crate::transport::FaceData;
+use runout_mesh::{Axis, Grid, Sides};
 
 /// A staggered velocity component as a view of the grid (module doc).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -159,104 +152,13 @@ impl Component {
     }
 
     /// Cells along and across the component: (nx, ny) for u, (ny, nx) for v.
-    #[inline]
     pub fn cells_along_across(self) -> (usize, usize) {
         self.pick((self.nx, self.ny), (self.ny, self.nx))
     }
 
-    /// The grid axis across the component (y for u, x for v).
-    #[inline]
-    pub fn across_axis(self, grid: &Grid) -> &Axis {
-        self.pick(&grid.y, &grid.x)
-    }
-
     /// (i, j) of position (a, b).
-    #[inline]
     pub fn xy(self, a: usize, b: usize) -> (usize, usize) {
         self.pick((a, b), (b, a))
-    }
-
-    /// Index of cell (a, b).
-    #[inline]
-    pub fn cell(self, a: usize, b: usize) -> usize {
-        let (i, j) = self.xy(a, b);
-        i + self.nx * j
-    }
-
-    /// Index of the component's node (a, b), between cells (a − 1, b) and (a, b).
-    #[inline]
-    pub fn node(self, a: usize, b: usize) -> usize {
-        let (i, j) = self.xy(a, b);
-        i + self.mx * j
-    }
-
-    /// Index of the other component's node (a, b), between cells (a, b − 1) and (a, b): v
-    /// at (a, b) for u, u at (b, a) for v.
-    #[inline]
-    pub fn cross_node(self, a: usize, b: usize) -> usize {
-        let (i, j) = self.xy(a, b);
-        i + self.pick(self.nx, self.nx + 1) * j
-    }
-
-    /// The cells (along index) before and after node a of a line; a periodic column's node
-    /// 0 lies between cell nx − 1 and cell 0.
-    #[inline]
-    pub fn cells_beside(self, a: usize) -> (Option<usize>, Option<usize>) {
-        let (n, _) = self.cells_along_across();
-        if self.periodic && a == 0 {
-            (Some(n - 1), Some(0))
-        } else {
-            (a.checked_sub(1), (a < n).then_some(a))
-        }
-    }
-
-    /// Distance weight of cell `lo` at the face between cells `lo` and `hi` along the
-    /// component (½ across a periodic wrap).
-    #[inline]
-    pub fn along_weight(self, grid: &Grid, lo: usize, hi: usize) -> f64 {
-        if lo < hi {
-            self.axis(grid).interpolation_weight(lo)
-        } else {
-            0.5
-        }
-    }
-
-    /// Width along the component of node a's control volume: centre to centre inside,
-    /// half a cell at the ends, the whole cell for a periodic column's node 0
-    /// (docs/model.md §4.1).
-    #[inline]
-    pub fn control_width(self, grid: &Grid, a: usize) -> f64 {
-        let widths = self.axis(grid).widths();
-        if self.periodic && a == 0 {
-            0.5 * (widths[widths.len() - 1] + widths[0])
-        } else {
-            crate::momentum::cv_width(widths, a)
-        }
-    }
-
-    /// The sides at the low and high end of a line of nodes (west, east for u).
-    pub fn end_sides(self) -> (Side, Side) {
-        self.pick((Side::West, Side::East), (Side::South, Side::North))
-    }
-
-    /// The sides parallel to the component (south, north for u).
-    pub fn wall_sides(self) -> (Side, Side) {
-        self.pick((Side::South, Side::North), (Side::West, Side::East))
-    }
-
-    /// Index in `faces` of the face between nodes (a − 1, b) and (a, b), through cell
-    /// (a − 1, b)'s centre (an x-face of the node block for u, a y-face for v).
-    #[inline]
-    pub fn along_face(self, faces: &FaceData, a: usize, b: usize) -> usize {
-        let (i, j) = self.xy(a, b);
-        self.pick(faces.xf(i, j), faces.yf(i, j))
-    }
-
-    /// Index in `faces` of the face between nodes (a, b − 1) and (a, b).
-    #[inline]
-    pub fn across_face(self, faces: &FaceData, a: usize, b: usize) -> usize {
-        let (i, j) = self.xy(a, b);
-        self.pick(faces.yf(i, j), faces.xf(i, j))
     }
 }
 
