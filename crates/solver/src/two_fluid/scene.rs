@@ -77,8 +77,10 @@ impl PhaseScene {
         let p = &spec.params;
         PhaseScene {
             closures: format!(
-                "kinetic theory, {:?} g₀, {:?} drag, {:?} friction",
-                p.radial, p.drag, p.friction_model
+                "kinetic theory, {:?} g₀, {:?} drag, {} friction",
+                p.radial,
+                p.drag,
+                p.friction_model.name()
             ),
             plastic_pressure: p.friction_model.has_plastic_pressure(),
             theta_pinned_below: p.friction_model.pins_theta_below(&p.friction),
