@@ -33,7 +33,6 @@ use super::{
 use crate::momentum::{assemble, fixed_row, neighbour_sum, Context, PhaseFields};
 use crate::pea::eliminate_node;
 use crate::staggered::Component;
-use crate::transport::FaceData;
 
 /// Step 2 (module doc); returns the momentum residual summed over u and v.
 #[allow(clippy::too_many_arguments)]
@@ -126,28 +125,26 @@ fn assemble_momentum(
     };
     let [cu, cv] = Component::of_grid(grid);
     let (u_g, v_g) = (&g.u, &g.v);
-    let (faces, a) = (&mut work.u_faces, &mut work.a_ug);
-    assemble(&ctx_gas, &gas_fields, cu, u_g, v_g, &g.old().u, faces, a);
-    let (faces, a) = (&mut work.v_faces, &mut work.a_vg);
-    assemble(&ctx_gas, &gas_fields, cv, u_g, v_g, &g.old().v, faces, a);
-    let fixed = [
-        work.a_ug.pattern().fixed_mask(),
-        work.a_vg.pattern().fixed_mask(),
-    ];
-    let faces = [&mut work.u_faces, &mut work.v_faces];
-    assemble_solids(
-        &ctx_gas,
-        [cu, cv],
-        fixed,
-        faces,
-        SolidsParts {
-            phases: state.phases(),
-            coefficients,
-            work: &mut work.solids,
-        },
-        wall_closures,
-        &model.solids_specs,
-    );
+    let (u_faces, a_u) = (&mut work.u_faces, &mut work.a_ug);
+    let (v_faces, a_v) = (&mut work.v_faces, &mut work.a_vg);
+    let (ctx_gas, gas_fields) = (&ctx_gas, &gas_fields);
+    // every system has its own face data and rows: the gas's u and v and each phase's run
+    // in parallel, each as it would alone (the same results on any number of threads)
+    let solids = work.solids.iter_mut().zip(state.phases()).zip(coefficients);
+    let solids = solids.zip(wall_closures).zip(&model.solids_specs);
+    rayon::scope(|scope| {
+        scope.spawn(move |_| assemble(ctx_gas, gas_fields, cu, u_g, v_g, &g.old().u, u_faces, a_u));
+        scope.spawn(move |_| assemble(ctx_gas, gas_fields, cv, u_g, v_g, &g.old().v, v_faces, a_v));
+        for ((((s, p), coef), w), spec) in solids {
+            let phase = SolidsPhase {
+                phase: p,
+                coefficients: coef,
+                walls: w,
+                spec,
+            };
+            scope.spawn(move |_| assemble_phase(ctx_gas, [cu, cv], phase, s));
+        }
+    });
 }
 
 /// The linear solves of every phase's u and v; returns their iterations.
@@ -221,76 +218,78 @@ pub(super) fn update_stress_sources(
     }
 }
 
-/// The momentum equations of every solids phase without drag (docs/model.md §4.4), with the
-/// gas's context `ctx_gas`; the rows of dilute nodes are skipped.
-fn assemble_solids(
+/// What one solids phase's momentum assembly reads.
+struct SolidsPhase<'a> {
+    phase: &'a PhaseState,
+    coefficients: &'a PhaseCoefficients,
+    walls: &'a PhaseWallClosures,
+    spec: &'a SolidsSpec,
+}
+
+/// The momentum equations of one solids phase without drag (docs/model.md §4.4), with the
+/// gas's context `ctx_gas`, u and v in parallel; the rows of dilute nodes are skipped.
+fn assemble_phase(
     ctx_gas: &Context<'_>,
     [cu, cv]: [Component; 2],
-    fixed: [&[bool]; 2],
-    [u_faces, v_faces]: [&mut FaceData; 2],
-    parts: SolidsParts<'_>,
-    walls: &[PhaseWallClosures],
-    specs: &[SolidsSpec],
+    solids: SolidsPhase<'_>,
+    s: &mut PhaseWork,
 ) {
-    let SolidsParts {
-        phases,
-        coefficients,
-        work,
-    } = parts;
-    let solids = work.iter_mut().zip(phases).zip(coefficients).zip(walls);
-    for ((((s, p), coef), w), spec) in solids.zip(specs) {
-        // dilute faces (interpolated εs ≤ DIL_EP_S, docs/model.md §2.7): their rows are
-        // replaced later, so the assembly skips them (most of a slide's domain)
-        dilute_faces(ctx_gas.grid, cu, p.eps(), fixed[0], &mut s.dilute_u);
-        dilute_faces(ctx_gas.grid, cv, p.eps(), fixed[1], &mut s.dilute_v);
-        let bcs = spec.momentum_bcs(ctx_gas.bcs);
-        let ctx = Context {
-            bcs: &bcs,
-            wall_faces: Some(&w.wall_velocity),
-            ..*ctx_gas
-        };
-        let fields = PhaseFields {
-            bulk_density: p.bulk_density(),
-            bulk_density_old: &p.old().rho_eps,
-            volume_fraction: p.eps(),
-            viscosity: &coef.mu,
-            solids_pressure: Some(&coef.p_s),
-            // −∇P* only with Schaeffer (docs/model.md §4.4); none with Princeton, where
-            // MFIX never computes P* (§2.4.2)
-            plastic_pressure: spec
-                .params
-                .friction_model
-                .has_plastic_pressure()
-                .then_some(&coef.p_star[..]),
-            explicit_source: Some(&coef.tau_u),
-            skip: Some(&s.dilute_u),
-        };
-        assemble(
-            &ctx,
-            &fields,
-            cu,
-            &p.u,
-            &p.v,
-            &p.old().u,
-            u_faces,
-            &mut s.a_u,
-        );
-        let fields_v = PhaseFields {
-            explicit_source: Some(&coef.tau_v),
-            skip: Some(&s.dilute_v),
-            ..fields
-        };
-        assemble(
-            &ctx,
-            &fields_v,
-            cv,
-            &p.u,
-            &p.v,
-            &p.old().v,
-            v_faces,
-            &mut s.a_v,
-        );
-    }
+    let SolidsPhase {
+        phase: p,
+        coefficients: coef,
+        walls: w,
+        spec,
+    } = solids;
+    // dilute faces (interpolated εs ≤ DIL_EP_S, docs/model.md §2.7): their rows are
+    // replaced later, so the assembly skips them (most of a slide's domain)
+    // (the phase's u and v patterns are the gas's: the same fixed wall nodes)
+    dilute_faces(
+        ctx_gas.grid,
+        cu,
+        p.eps(),
+        s.a_u.pattern().fixed_mask(),
+        &mut s.dilute_u,
+    );
+    dilute_faces(
+        ctx_gas.grid,
+        cv,
+        p.eps(),
+        s.a_v.pattern().fixed_mask(),
+        &mut s.dilute_v,
+    );
+    let bcs = spec.momentum_bcs(ctx_gas.bcs);
+    let ctx = Context {
+        bcs: &bcs,
+        wall_faces: Some(&w.wall_velocity),
+        ..*ctx_gas
+    };
+    let fields_u = PhaseFields {
+        bulk_density: p.bulk_density(),
+        bulk_density_old: &p.old().rho_eps,
+        volume_fraction: p.eps(),
+        viscosity: &coef.mu,
+        solids_pressure: Some(&coef.p_s),
+        // −∇P* only with Schaeffer (docs/model.md §4.4); none with Princeton, where
+        // MFIX never computes P* (§2.4.2)
+        plastic_pressure: spec
+            .params
+            .friction_model
+            .has_plastic_pressure()
+            .then_some(&coef.p_star[..]),
+        explicit_source: Some(&coef.tau_u),
+        skip: Some(&s.dilute_u),
+    };
+    let fields_v = PhaseFields {
+        explicit_source: Some(&coef.tau_v),
+        skip: Some(&s.dilute_v),
+        ..fields_u
+    };
+    let (u_faces, a_u, v_faces, a_v) = (&mut s.u_faces, &mut s.a_u, &mut s.v_faces, &mut s.a_v);
+    let (u, v) = (&p.u, &p.v);
+    rayon::join(
+        || assemble(&ctx, &fields_u, cu, u, v, &p.old().u, u_faces, a_u),
+        || assemble(&ctx, &fields_v, cv, u, v, &p.old().v, v_faces, a_v),
+    );
 }
 
 /// The gas's part of one component at the coupled nodes.

@@ -17,7 +17,8 @@ pub(crate) struct Workspace {
     pub p_corr: Vec<f64>,
     /// gas mass imbalance per cell before the pressure correction
     pub imbalance: Vec<f64>,
-    /// face data of the u, v and cell equations' convection (docs/model.md §4.2)
+    /// face data of the gas u and v equations' convection and of the cell equations'
+    /// (docs/model.md §4.2)
     pub u_faces: FaceData,
     pub v_faces: FaceData,
     pub c_faces: FaceData,
@@ -67,6 +68,10 @@ pub(crate) struct IterationFlags {
 /// Work storage of one solids phase (module doc).
 #[derive(Clone, Debug)]
 pub(crate) struct PhaseWork {
+    /// face data of the phase's u and v equations' convection (its own, so that the
+    /// phases' momentum equations are assembled in parallel)
+    pub u_faces: FaceData,
+    pub v_faces: FaceData,
     /// dilute u and v faces of the current momentum assembly (docs/model.md §2.7)
     pub dilute_u: Vec<bool>,
     pub dilute_v: Vec<bool>,
@@ -94,6 +99,8 @@ impl PhaseWork {
     pub fn new((nx, ny): (usize, usize), pu: &Pattern, pv: &Pattern, pc: &Pattern) -> Self {
         let n = nx * ny;
         PhaseWork {
+            u_faces: FaceData::zeros(nx + 1, ny),
+            v_faces: FaceData::zeros(nx, ny + 1),
             dilute_u: vec![false; (nx + 1) * ny],
             dilute_v: vec![false; nx * (ny + 1)],
             e_u: vec![0.0; (nx + 1) * ny],
