@@ -84,13 +84,23 @@ pub(crate) fn axpy(alpha: f64, x: &[f64], y: &mut [f64]) {
     for_each_indexed(y, |i, v| *v += alpha * x[i]);
 }
 
+/// The exponent bits of an f64: all set exactly for ±∞ and NaN.
+const EXPONENT_BITS: u64 = 0x7ff0_0000_0000_0000;
+
+/// Whether every entry of a serial block is finite: an OR over the block, which the compiler
+/// vectorises (a short-circuiting `all` tests one entry at a time).
+fn block_is_finite(x: &[f64]) -> bool {
+    let non_finite = |v: &f64| u8::from(v.to_bits() & EXPONENT_BITS == EXPONENT_BITS);
+    x.chunks(256)
+        .all(|block| block.iter().fold(0u8, |acc, v| acc | non_finite(v)) == 0)
+}
+
 /// Returns true when every entry is finite.
 pub(crate) fn all_finite(x: &[f64]) -> bool {
     if x.len() < PAR_MIN_LEN {
-        x.iter().all(|v| v.is_finite())
+        block_is_finite(x)
     } else {
-        x.par_chunks(chunk_len(x.len()))
-            .all(|c| c.iter().all(|v| v.is_finite()))
+        x.par_chunks(chunk_len(x.len())).all(block_is_finite)
     }
 }
 
@@ -111,3 +121,26 @@ pub(crate) struct SharedMut(pub(crate) *mut f64);
 // SAFETY: only used for the disjoint writes documented at the call sites.
 unsafe impl Send for SharedMut {}
 unsafe impl Sync for SharedMut {}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The first non-finite entry is found wherever it is, for NaN and both infinities,
+    /// serial and parallel lengths, and subnormal or huge finite values are finite.
+    #[test]
+    fn first_non_finite_finds_nan_and_infinities_anywhere() {
+        for n in [1, 7, 255, 256, 257, 1000, PAR_MIN_LEN + 3] {
+            let mut x: Vec<f64> = (0..n).map(|i| (i as f64 - 3.5) * 1e300).collect();
+            x[0] = f64::MIN_POSITIVE / 4.0;
+            assert_eq!(first_non_finite(&x), None, "n = {n}");
+            for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+                for at in [0, n / 2, n - 1] {
+                    let mut y = x.clone();
+                    y[at] = bad;
+                    assert_eq!(first_non_finite(&y), Some(at), "n = {n}, {bad} at {at}");
+                }
+            }
+        }
+    }
+}

@@ -45,42 +45,44 @@ pub(super) fn momentum(
     diagnostics: &mut Diagnostics,
     dt: f64,
 ) -> Result<f64, TwoFluidError> {
-    diagnostics.worst.momentum = (0.0, 0, 0, 0, 0);
     assemble_momentum(model, state, coefficients, wall_closures, work, dt);
-    let mut residual = 0.0;
-    for c in Component::of_grid(&model.grid) {
-        let (a, d) = c.pick(
-            (&mut work.a_ug, &mut work.d_u),
-            (&mut work.a_vg, &mut work.d_v),
-        );
-        let g = state.gas();
-        let mut gas = GasComponent {
-            a,
-            d,
-            u: &g.u,
-            v: &g.v,
-            eps: g.eps(),
-        };
-        if let Some(sidewalls) = &model.sidewalls {
-            // docs/model.md §8: the side walls' sinks join the rows before the elimination
-            let gas_drag = sidewalls.gas_drag(model.gas.viscosity);
-            let solids = (coefficients, &mut work.solids[..]);
-            add_momentum_sinks(&model.grid, c, (&mut *gas.a, gas_drag), solids);
-        }
-        residual += eliminate_drag(
-            &model.grid,
-            c,
-            model.settings.relax_velocity,
-            &mut gas,
-            SolidsParts {
-                phases: state.phases(),
-                coefficients,
-                work: &mut work.solids,
-            },
-            &mut diagnostics.worst.momentum,
-        );
-        fix_wall_rows(c, &model.gas_inflow, &mut gas, &mut work.solids);
+    // the u and v components are decoupled from each other here: their eliminations run
+    // in parallel, each over its own arrays (the same results on any number of threads)
+    let [cu, cv] = Component::of_grid(&model.grid);
+    let g = state.gas();
+    let gas_u = GasComponent {
+        a: &mut work.a_ug,
+        d: &mut work.d_u,
+        u: &g.u,
+        v: &g.v,
+        eps: g.eps(),
+    };
+    let gas_v = GasComponent {
+        a: &mut work.a_vg,
+        d: &mut work.d_v,
+        u: &g.u,
+        v: &g.v,
+        eps: g.eps(),
+    };
+    let (mut solids_u, mut solids_v) = (Vec::new(), Vec::new());
+    for ((s, p), coef) in work.solids.iter_mut().zip(state.phases()).zip(coefficients) {
+        let [su, sv] = s.components(p, coef);
+        solids_u.push(su);
+        solids_v.push(sv);
     }
+    let ((residual_u, worst_u), (residual_v, worst_v)) = rayon::join(
+        || decouple_component(model, cu, gas_u, &mut solids_u),
+        || decouple_component(model, cv, gas_v, &mut solids_v),
+    );
+    // u before v, as one sequential pass over both would keep them
+    diagnostics.worst.momentum = if worst_v.0 > worst_u.0 {
+        worst_v
+    } else {
+        worst_u
+    };
+    let mut residual = 0.0;
+    residual += residual_u;
+    residual += residual_v;
     let t = Instant::now();
     diagnostics.profile.iterations.momentum += solve_momentum(&model.grid, state, work)? as u64;
     // solves are reported apart from the assembly that encloses them
@@ -306,40 +308,63 @@ struct GasComponent<'a> {
 }
 
 /// One solids phase's part of one component.
-struct SolidsComponent<'a> {
-    a: &'a mut Stencil5,
-    /// the component's velocity
-    phi: &'a [f64],
+pub(super) struct SolidsComponent<'a> {
+    /// the component's equations
+    pub a: &'a mut Stencil5,
     /// e_s of the component's nodes (docs/model.md §4.7)
-    e: &'a mut [f64],
-    /// εs per cell
-    eps: &'a [f64],
-}
-
-/// The solids phases as the momentum stage reads and writes them.
-struct SolidsParts<'a> {
-    /// the fields of every phase
-    phases: &'a [PhaseState],
-    /// the closure values of every phase
-    coefficients: &'a [PhaseCoefficients],
-    /// the work storage of every phase
-    work: &'a mut [PhaseWork],
+    pub e: &'a mut [f64],
+    /// the component's dilute nodes (docs/model.md §2.7)
+    pub dilute: &'a [bool],
+    /// the phase's fields (u, v, εs)
+    pub phase: &'a PhaseState,
+    /// the phase's closure values (drag, side-wall terms)
+    pub coefficients: &'a PhaseCoefficients,
 }
 
 impl PhaseWork {
-    /// The arrays of component `c` of the phase with fields `p`.
-    fn component<'a>(&'a mut self, p: &'a PhaseState, c: Component) -> SolidsComponent<'a> {
-        let (a, phi, e) = c.pick(
-            (&mut self.a_u, &p.u, &mut self.e_u),
-            (&mut self.a_v, &p.v, &mut self.e_v),
-        );
-        SolidsComponent {
-            a,
-            phi,
-            e,
-            eps: p.eps(),
-        }
+    /// The phase's u and v parts, with fields `p` and closure values `coef`.
+    fn components<'a>(
+        &'a mut self,
+        p: &'a PhaseState,
+        coef: &'a PhaseCoefficients,
+    ) -> [SolidsComponent<'a>; 2] {
+        [
+            SolidsComponent {
+                a: &mut self.a_u,
+                e: &mut self.e_u,
+                dilute: &self.dilute_u,
+                phase: p,
+                coefficients: coef,
+            },
+            SolidsComponent {
+                a: &mut self.a_v,
+                e: &mut self.e_v,
+                dilute: &self.dilute_v,
+                phase: p,
+                coefficients: coef,
+            },
+        ]
     }
+}
+
+/// Component `c`'s side-wall sinks, partial elimination and wall rows (module doc); returns
+/// its momentum residual and its largest node residual.
+fn decouple_component(
+    model: &Model,
+    c: Component,
+    mut gas: GasComponent<'_>,
+    solids: &mut [SolidsComponent<'_>],
+) -> (f64, (f64, usize, usize, usize, usize)) {
+    if let Some(sidewalls) = &model.sidewalls {
+        // docs/model.md §8: the side walls' sinks join the rows before the elimination
+        let gas_drag = sidewalls.gas_drag(model.gas.viscosity);
+        add_momentum_sinks(&model.grid, c, (&mut *gas.a, gas_drag), solids);
+    }
+    let mut worst = (0.0, 0, 0, 0, 0);
+    let relax = model.settings.relax_velocity;
+    let residual = eliminate_drag(&model.grid, c, relax, &mut gas, solids, &mut worst);
+    fix_wall_rows(c, &model.gas_inflow, &mut gas, solids);
+    (residual, worst)
 }
 
 /// The partial elimination of the drag at every coupled (not fixed) node of component `c`,
@@ -350,11 +375,11 @@ fn eliminate_drag(
     c: Component,
     relax: f64,
     gas: &mut GasComponent<'_>,
-    mut parts: SolidsParts<'_>,
+    solids: &mut [SolidsComponent<'_>],
     worst: &mut (f64, usize, usize, usize, usize),
 ) -> f64 {
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
-    let m = parts.work.len();
+    let m = solids.len();
     let (mut num, mut den) = (0.0, 0.0);
     for j in 0..c.my {
         for i in 0..c.mx {
@@ -362,7 +387,7 @@ fn eliminate_drag(
             if gas.a.pattern().fixed_mask()[k] {
                 continue;
             }
-            let node = gather(c, (i, j), dx, dy, gas, &parts);
+            let node = gather(c, (i, j), dx, dy, gas, solids);
             // momentum residuals of the coupled node (before relaxation, §4.11)
             for p in 0..=m {
                 if p > 0 && node.dilute[p - 1] {
@@ -378,7 +403,7 @@ fn eliminate_drag(
                 }
             }
             let area = c.face_area(i, j, dx, dy);
-            decouple(c, k, area, relax, &node, gas, &mut parts);
+            decouple(c, k, area, relax, &node, gas, solids);
         }
     }
     if den > 0.0 {
@@ -396,7 +421,7 @@ fn gather(
     dx: &[f64],
     dy: &[f64],
     gas: &GasComponent<'_>,
-    parts: &SolidsParts<'_>,
+    solids: &[SolidsComponent<'_>],
 ) -> CoupledNode {
     let k = i + c.mx * j;
     // the cells beside the node and their half volumes
@@ -413,18 +438,18 @@ fn gather(
     node.r_in[0] = neighbour_sum(gas.a, gas_phi, k);
     node.phi[0] = gas_phi[k];
     node.cross[0] = c.cross_velocity(gas.u, gas.v, c0);
-    let solids = parts.work.iter().zip(parts.phases).zip(parts.coefficients);
-    for (p, ((s, ph), coef)) in solids.enumerate() {
-        let (a, phi, dilute) = c.pick((&s.a_u, &ph.u, &s.dilute_u), (&s.a_v, &ph.v, &s.dilute_v));
+    for (p, s) in solids.iter().enumerate() {
+        let (ph, coef) = (s.phase, s.coefficients);
+        let phi = c.pick(&ph.u, &ph.v);
         // a face whose interpolated εs ≤ DIL_EP_S carries no solids momentum
         // (MFIX `source_u_s.f`, docs/model.md §2.7): its velocity is set by its row
-        let dilute = dilute[k];
+        let dilute = s.dilute[k];
         node.dilute[p] = dilute;
-        node.a_in[p + 1] = if dilute { 1.0 } else { a.a_p[k] };
+        node.a_in[p + 1] = if dilute { 1.0 } else { s.a.a_p[k] };
         node.r_in[p + 1] = if dilute {
             phi[k]
         } else {
-            neighbour_sum(a, phi, k)
+            neighbour_sum(s.a, phi, k)
         };
         node.phi[p + 1] = phi[k];
         node.cross[p + 1] = c.cross_velocity(&ph.u, &ph.v, c0);
@@ -446,9 +471,8 @@ fn decouple(
     relax: f64,
     node: &CoupledNode,
     gas: &mut GasComponent<'_>,
-    parts: &mut SolidsParts<'_>,
+    solids: &mut [SolidsComponent<'_>],
 ) {
-    let (phases, solids) = (parts.phases, &mut *parts.work);
     let m = solids.len();
     let (a_in, r_in, drag) = (&node.a_in, &node.r_in, &node.drag);
     let (c0, c1) = node.cells;
@@ -466,21 +490,21 @@ fn decouple(
     let eps_face_g = face_mean(gas.eps, c0, c1);
     let mut numerator = eps_face_g;
     let mut denominator = a_in[0] / relax;
-    for (p, (s, ph)) in solids.iter_mut().zip(phases).enumerate() {
+    for (p, sc) in solids.iter_mut().enumerate() {
         let a_s = a_in[p + 1] / relax;
         let f = drag[p];
-        let sc = s.component(ph, c);
-        let eps_face_s = face_mean(sc.eps, c0, c1);
+        let (eps, phi) = (sc.phase.eps(), c.pick(&sc.phase.u, &sc.phase.v));
+        let eps_face_s = face_mean(eps, c0, c1);
         numerator += eps_face_s * f / (a_s + f);
         denominator += f * a_s / (a_s + f);
         if node.dilute[p] {
-            dilute_row(sc.a, k, sc.phi[k], c0.or(c1), sc.eps, (c.mx, c.my), c.nx);
+            dilute_row(sc.a, k, phi[k], c0.or(c1), eps, (c.mx, c.my), c.nx);
             sc.e[k] = 0.0;
             continue;
         }
         sc.e[k] = area / a_s;
         let ap = a_out[p + 1] / relax;
-        sc.a.b[k] += (r_out[p + 1] - r_in[p + 1]) + (1.0 - relax) * ap * sc.phi[k];
+        sc.a.b[k] += (r_out[p + 1] - r_in[p + 1]) + (1.0 - relax) * ap * phi[k];
         sc.a.a_p[k] = ap;
     }
     let gas_phi = c.pick(gas.u, gas.v);
@@ -490,9 +514,7 @@ fn decouple(
     if c.periodic {
         // a periodic column has no x gradient of P'_g or of K_cp ε'
         gas.d[k] = 0.0;
-        solids
-            .iter_mut()
-            .for_each(|s| c.pick(&mut s.e_u, &mut s.e_v)[k] = 0.0);
+        solids.iter_mut().for_each(|s| s.e[k] = 0.0);
     }
 }
 
@@ -502,16 +524,15 @@ fn fix_wall_rows(
     c: Component,
     inflow: &Sides<f64>,
     gas: &mut GasComponent<'_>,
-    solids: &mut [PhaseWork],
+    solids: &mut [SolidsComponent<'_>],
 ) {
     for k in 0..gas.d.len() {
         if gas.a.pattern().fixed_mask()[k] {
             fixed_row(gas.a, k, c.wall_inflow(inflow, k));
             gas.d[k] = 0.0;
             for s in solids.iter_mut() {
-                let (a, e) = c.pick((&mut s.a_u, &mut s.e_u), (&mut s.a_v, &mut s.e_v));
-                fixed_row(a, k, 0.0);
-                e[k] = 0.0;
+                fixed_row(s.a, k, 0.0);
+                s.e[k] = 0.0;
             }
         }
     }
@@ -539,7 +560,7 @@ mod tests {
         let pu = Pattern::new(nx + 1, ny).unwrap();
         let pv = Pattern::new(nx, ny + 1).unwrap();
         let pc = Pattern::new(nx, ny).unwrap();
-        let mut solids = vec![PhaseWork::new((nx, ny), &pu, &pv, &pc)];
+        let mut solids = PhaseWork::new((nx, ny), &pu, &pv, &pc);
         let mut state = super::super::State::new((nx, ny), 1.0, [1.0], 0.0);
         state.update_solids(0, |p| {
             p.eps.copy_from_slice(&[0.4, 0.6]);
@@ -564,23 +585,13 @@ mod tests {
         node.phi[..2].copy_from_slice(&[1.0, 0.2]);
         node.drag[0] = f;
         let c = Component::u(nx, ny, false);
-        decouple(
-            c,
-            1,
-            area,
-            relax,
-            &node,
-            &mut gas,
-            &mut SolidsParts {
-                phases: state.phases(),
-                coefficients: &[PhaseCoefficients::new((nx, ny))],
-                work: &mut solids,
-            },
-        );
+        let coef = PhaseCoefficients::new((nx, ny));
+        let [su, _] = solids.components(&state.phases()[0], &coef);
+        decouple(c, 1, area, relax, &node, &mut gas, &mut [su]);
         let (ag, as_) = (a_gas / relax, a_s / relax);
         let d_expected = area * (0.5 + 0.5 * f / (as_ + f)) / (ag + f * as_ / (as_ + f));
         assert!((d[1] - d_expected).abs() < 1e-15 * d_expected);
-        assert_eq!(solids[0].e_u[1], area / as_);
+        assert_eq!(solids.e_u[1], area / as_);
         // the gas row: a_g + F a_s/(a_s + F), relaxed (docs/model.md §4.5)
         let a_g_out = (a_gas + f * a_s / (a_s + f)) / relax;
         assert!((a_g.a_p[1] - a_g_out).abs() < 1e-14 * a_g_out);

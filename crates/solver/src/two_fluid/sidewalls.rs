@@ -22,7 +22,8 @@ use runout_closures::ClosureParams;
 use runout_mesh::Grid;
 use runout_walls::{MomentumWallState, SolidsWallModel, ThetaWallState};
 
-use super::{PhaseCoefficients, PhaseWork, SolidsSpec, State};
+use super::momentum_pea::SolidsComponent;
+use super::{PhaseCoefficients, SolidsSpec, State};
 use crate::staggered::Component;
 
 /// Largest K [Pa s m⁻¹]: Jenkins' COL = tan δ_w P_k/|u_s| overflows as |u_s| → 0; far below
@@ -173,7 +174,7 @@ pub(super) fn add_momentum_sinks(
     grid: &Grid,
     c: Component,
     (gas_rows, gas_drag): (&mut runout_linsolve::Stencil5, f64),
-    (coefficients, work): (&[PhaseCoefficients], &mut [PhaseWork]),
+    solids: &mut [SolidsComponent<'_>],
 ) {
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
     for j in 0..c.my {
@@ -189,14 +190,14 @@ pub(super) fn add_momentum_sinks(
             let (lo, hi) = (half(lo), half(hi));
             let volume = lo.map_or(0.0, |x| x.1) + hi.map_or(0.0, |x| x.1);
             gas_rows.a_p[k] += gas_drag * volume;
-            for (s, coef) in work.iter_mut().zip(coefficients) {
-                let (dilute, terms) = (c.pick(&s.dilute_u, &s.dilute_v)[k], &coef.sidewall);
-                if dilute {
+            for s in solids.iter_mut() {
+                if s.dilute[k] {
                     continue;
                 }
+                let terms = &s.coefficients.sidewall;
                 let sink = lo.map_or(0.0, |(cell, v)| terms[cell].drag * v)
                     + hi.map_or(0.0, |(cell, v)| terms[cell].drag * v);
-                c.pick(&mut s.a_u, &mut s.a_v).a_p[k] += sink;
+                s.a.a_p[k] += sink;
             }
         }
     }
