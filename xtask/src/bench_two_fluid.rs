@@ -7,6 +7,8 @@
 //!   411 CPU s measured beside runout on this kind of machine (issue 22);
 //! - family M refined k = 1, 2, 4 in x and y (10k, 40k, 160k cells) to 0.15 s on one
 //!   thread: the cost per cell per outer iteration, which should not grow with the grid;
+//!   from k = `--two-threads-from` (default 2: 40k cells) on two threads as well, with the
+//!   two-thread speed-up (one thread's wall time over two threads') printed per size;
 //! - S-JJ-phi φ = 0.1 at the paper grid (1000 × 90) over a window after impact, restarted
 //!   from a checkpoint at `--after` s that the first call makes and later calls reuse
 //!   (runs/bench/), on 2 threads.
@@ -45,6 +47,12 @@ pub struct Options {
     /// the refinements of family M for the cost per cell (k: grid × k in x and y)
     #[arg(long, value_delimiter = ',', default_values_t = [1usize, 2, 4])]
     refine: Vec<usize>,
+    /// the refinements from which the refined runs are also timed on two threads
+    #[arg(long, default_value_t = 2)]
+    two_threads_from: usize,
+    /// the refined runs' simulated window [s]
+    #[arg(long, default_value_t = 0.15)]
+    refine_window: f64,
     /// S-JJ-phi paper grid: the window starts at this time [s] (after impact)
     #[arg(long, default_value_t = 0.3)]
     after: f64,
@@ -190,23 +198,44 @@ fn family_m(root: &Path, opts: &Options, rows: &mut Vec<Row>) -> Result<()> {
             window,
         )?);
     }
-    let window = if opts.smoke { 0.01 } else { 0.15 };
+    let window = if opts.smoke { 0.01 } else { opts.refine_window };
     for &k in &opts.refine {
         let mut case = base.at_fidelity(fidelity);
         case.domain.x = refined_axis(&case.domain.x, k)?;
         case.domain.y = refined_axis(&case.domain.y, k)?;
         case.run.end_time = window;
-        let what = format!("family M × {k} to {window} s");
-        rows.push(timed(
-            what,
-            &case,
-            1,
-            &dir.join(format!("k{k}")),
-            false,
-            window,
-        )?);
+        let threads: &[usize] = if k >= opts.two_threads_from {
+            &[1, 2]
+        } else {
+            &[1]
+        };
+        for &t in threads {
+            let what = format!("family M × {k} to {window} s");
+            let out = dir.join(format!("k{k}-t{t}"));
+            rows.push(timed(what, &case, t, &out, false, window)?);
+        }
     }
     Ok(())
+}
+
+/// One thread's wall time over two threads' for every run timed on both.
+fn speedups(rows: &[Row]) -> Vec<String> {
+    let on =
+        |what: &str, threads: usize| rows.iter().find(|r| r.what == what && r.threads == threads);
+    let mut lines = Vec::new();
+    for r in rows.iter().filter(|r| r.threads == 1) {
+        if let Some(two) = on(&r.what, 2) {
+            lines.push(format!(
+                "{} ({} cells): two threads {:.2}× faster than one (wall {:.1} s → {:.1} s)",
+                r.what,
+                r.cells,
+                r.wall / two.wall,
+                r.wall,
+                two.wall
+            ));
+        }
+    }
+    lines
 }
 
 /// S-JJ-phi φ = 0.1 at the paper grid over [after, after + span] from a kept checkpoint.
@@ -360,7 +389,14 @@ pub fn run(root: &Path, args: &[String]) -> Result<()> {
         .map_or("unknown".into(), |o| {
             String::from_utf8_lossy(&o.stdout).trim().to_string()
         });
-    let table = table(&rows, &measured, &date);
+    let mut table = table(&rows, &measured, &date);
+    let speedups = speedups(&rows);
+    if !speedups.is_empty() {
+        table.push('\n');
+        speedups
+            .iter()
+            .for_each(|l| table.push_str(&format!("- {l}\n")));
+    }
     println!("{table}");
     if let Some(m) = rows
         .iter()

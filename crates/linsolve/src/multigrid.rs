@@ -60,6 +60,13 @@ impl Default for MultigridParams {
     }
 }
 
+/// Levels with fewer cells smooth their lines serially. A line solve costs several times a
+/// vector update per cell, so its half-sweeps pay for rayon's fork/join (a few µs) on
+/// smaller levels than [`PAR_MIN_LEN`] (the coarse levels of a 40k-cell grid).
+const LINES_PAR_MIN_CELLS: usize = 1 << 12;
+/// Cells of one half-sweep below which its lines are not split further between tasks.
+const LINES_PER_TASK_CELLS: usize = 1 << 10;
+
 /// One grid level with its operator, line factorisations and work vectors.
 struct Level {
     op: Op5,
@@ -146,12 +153,12 @@ impl Level {
         // SAFETY: line j writes only row j (colour c) and reads rows j ± 1 (the other
         // colour), which no task writes during this half-sweep; all indices are < nx·ny.
         let line = |m: usize| unsafe { this.x_line(colour + 2 * m, x) };
-        if nx * ny < PAR_MIN_LEN {
+        if nx * ny < LINES_PAR_MIN_CELLS {
             (0..n_lines).for_each(line);
         } else {
             (0..n_lines)
                 .into_par_iter()
-                .with_min_len(rows_per_task(nx))
+                .with_min_len((LINES_PER_TASK_CELLS / nx).max(1))
                 .for_each(line);
         }
     }
