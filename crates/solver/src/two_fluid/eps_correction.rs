@@ -11,6 +11,7 @@ use runout_linsolve::{LinSolveError, LinearSolver, Stencil5};
 
 use super::diagnostics::{since, Diagnostics};
 use super::model::Model;
+use super::state::PhaseMut;
 use super::{
     lin, solve_keeping_preconditioner, PhaseCoefficients, State, TwoFluidError, Workspace,
 };
@@ -32,18 +33,7 @@ pub(super) fn volume_fraction_correction(
     state.try_update_all_solids(|m, p| {
         let (s, coef) = (&mut work.solids[m], &mut coefficients[m]);
         let spec = &model.solids_specs[m];
-        let inputs = CorrectionInputs {
-            density: spec.params.particles.density,
-            eps: &*p.eps,
-            eps_old: &p.old.eps,
-            u: &*p.u,
-            v: &*p.v,
-            e_u: &s.e_u,
-            e_v: &s.e_v,
-            k_cp: &coef.k_cp,
-            dt,
-            scheme: model.settings.scheme,
-        };
+        let inputs = correction_inputs(model, m, &p, [&s.e_u, &s.e_v], coef, dt);
         assemble_correction(&model.grid, &inputs, &mut s.imbalance, &mut s.a_eps);
         total += s.imbalance.iter().map(|x| x.abs()).sum::<f64>() / n;
         let t = Instant::now();
@@ -82,6 +72,30 @@ pub(super) fn volume_fraction_correction(
     Ok(total)
 }
 
+/// What the ε' system and the mass imbalance of solids phase `m` read: its fields `p`, the
+/// e_s of its u and v nodes from the last momentum stage and its K_cp (in `coef`).
+fn correction_inputs<'a>(
+    model: &Model,
+    m: usize,
+    p: &'a PhaseMut<'_>,
+    [e_u, e_v]: [&'a [f64]; 2],
+    coef: &'a PhaseCoefficients,
+    dt: f64,
+) -> CorrectionInputs<'a> {
+    CorrectionInputs {
+        density: model.solids_specs[m].params.particles.density,
+        eps: p.eps,
+        eps_old: &p.old.eps,
+        u: p.u,
+        v: p.v,
+        e_u,
+        e_v,
+        k_cp: &coef.k_cp,
+        dt,
+        scheme: model.settings.scheme,
+    }
+}
+
 /// Ends a converged step with exact discrete solids continuity (if
 /// [`super::TwoFluidSettings::exact_solids_continuity`]): each cell's εs becomes
 /// εs⁰ − Δt/V Σ (εs,face u·n A) with the step's final face fluxes, i.e. the imbalance
@@ -104,18 +118,7 @@ pub(super) fn conservative_finish(
         let (s, coef) = (&mut work.solids[m], &coefficients[m]);
         let spec = &model.solids_specs[m];
         let density = spec.params.particles.density;
-        let inputs = CorrectionInputs {
-            density,
-            eps: &*p.eps,
-            eps_old: &p.old.eps,
-            u: &*p.u,
-            v: &*p.v,
-            e_u: &s.e_u,
-            e_v: &s.e_v,
-            k_cp: &coef.k_cp,
-            dt,
-            scheme: model.settings.scheme,
-        };
+        let inputs = correction_inputs(model, m, &p, [&s.e_u, &s.e_v], coef, dt);
         mass_imbalance(&model.grid, &inputs, &mut s.imbalance);
         let nx = model.grid.nx();
         let (mut largest, mut clipped) = (0.0_f64, 0.0);
