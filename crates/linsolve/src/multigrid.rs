@@ -60,9 +60,11 @@ impl Default for MultigridParams {
     }
 }
 
-/// Levels with fewer cells smooth their lines serially. A line solve costs several times a
+/// Levels with fewer cells smooth their x lines serially. A line solve costs several times a
 /// vector update per cell, so its half-sweeps pay for rayon's fork/join (a few µs) on
-/// smaller levels than [`PAR_MIN_LEN`] (the coarse levels of a 40k-cell grid).
+/// smaller levels than [`PAR_MIN_LEN`] (the coarse levels of a 40k-cell grid); the y-line
+/// blocks keep [`PAR_MIN_LEN`] (narrower blocks cost more than they saved,
+/// docs/performance.md, session 15).
 const LINES_PAR_MIN_CELLS: usize = 1 << 12;
 /// Cells of one half-sweep below which its lines are not split further between tasks.
 const LINES_PER_TASK_CELLS: usize = 1 << 10;
