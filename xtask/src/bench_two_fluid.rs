@@ -5,8 +5,8 @@
 //! - family M (`cases/mfix-slope/jj.ron`, MFIX's 200 × 50 grid) to `--window` s (default
 //!   1 s, MFIX's whole run) on 1 and 2 threads: CPU s per simulated s, against MFIX's
 //!   411 CPU s measured beside runout on this kind of machine (issue 22);
-//! - family M refined k = 1, 2, 4 in x and y (10k, 40k, 160k cells) to 0.15 s on one
-//!   thread: the cost per cell per outer iteration, which should not grow with the grid;
+//! - family M refined k = 1, 2, 4 in x and y (10k, 40k, 160k cells) to `--refine-window` s
+//!   (default 0.15 s) on one thread: the cost per cell per outer iteration, which should not grow with the grid;
 //!   from k = `--two-threads-from` (default 2: 40k cells) on two threads as well, with the
 //!   two-thread speed-up (one thread's wall time over two threads') printed per size;
 //! - S-JJ-phi φ = 0.1 at the paper grid (1000 × 90) over a window after impact, restarted

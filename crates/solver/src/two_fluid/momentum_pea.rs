@@ -26,6 +26,7 @@ use super::dilute::{dilute_faces, dilute_row};
 use super::model::Model;
 use super::residuals::CoupledNode;
 use super::sidewalls::add_momentum_sinks;
+use super::state::GasState;
 use super::{
     lin, PhaseCoefficients, PhaseState, PhaseWallClosures, PhaseWork, SolidsSpec, State,
     TwoFluidError, Workspace, MAX_SOLIDS_PHASES,
@@ -50,20 +51,8 @@ pub(super) fn momentum(
     // in parallel, each over its own arrays (the same results on any number of threads)
     let [cu, cv] = Component::of_grid(&model.grid);
     let g = state.gas();
-    let gas_u = GasComponent {
-        a: &mut work.a_ug,
-        d: &mut work.d_u,
-        u: &g.u,
-        v: &g.v,
-        eps: g.eps(),
-    };
-    let gas_v = GasComponent {
-        a: &mut work.a_vg,
-        d: &mut work.d_v,
-        u: &g.u,
-        v: &g.v,
-        eps: g.eps(),
-    };
+    let gas_u = GasComponent::of(g, &mut work.a_ug, &mut work.d_u);
+    let gas_v = GasComponent::of(g, &mut work.a_vg, &mut work.d_v);
     let (mut solids_u, mut solids_v) = (Vec::new(), Vec::new());
     for ((s, p), coef) in work.solids.iter_mut().zip(state.phases()).zip(coefficients) {
         let [su, sv] = s.components(p, coef);
@@ -305,6 +294,19 @@ struct GasComponent<'a> {
     v: &'a [f64],
     /// εg per cell
     eps: &'a [f64],
+}
+
+impl<'a> GasComponent<'a> {
+    /// The gas fields `g` with one component's equations `a` and its d_g.
+    fn of(g: &'a GasState, a: &'a mut Stencil5, d: &'a mut [f64]) -> Self {
+        Self {
+            a,
+            d,
+            u: &g.u,
+            v: &g.v,
+            eps: g.eps(),
+        }
+    }
 }
 
 /// One solids phase's part of one component.
