@@ -15,6 +15,7 @@ use runout_mesh::{Grid, Sides};
 use runout_walls::RobinFace;
 
 use crate::momentum::WallFaces;
+use crate::rows::for_each_row;
 use crate::transport::{assemble, FaceData, Scheme};
 
 /// Per-cell inputs of the granular-energy equation, evaluated by the caller from the
@@ -69,30 +70,44 @@ pub fn assemble_theta(
     let rho_eps = inputs.bulk_density;
     let kappa = inputs.conductivity;
     let harmonic = |a: f64, b: f64, w: f64| a * b / (w * a + (1.0 - w) * b).max(1e-15);
-    for j in 0..ny {
+    // face by face, rows in parallel (each face's value is its own); interior faces only
+    let upwind =
+        |vel: f64, lo: usize, hi: usize| if vel >= 0.0 { rho_eps[lo] } else { rho_eps[hi] };
+    for_each_row(&mut faces.flux_x, nx + 1, |j, row| {
+        for i in 1..nx {
+            let vel = u[i + (nx + 1) * j];
+            row[i] = 1.5 * upwind(vel, i - 1 + nx * j, i + nx * j) * vel * dy[j];
+        }
+    });
+    for_each_row(&mut faces.cond_x, nx + 1, |j, row| {
         for i in 1..nx {
             let (w, e) = (i - 1 + nx * j, i + nx * j);
-            let vel = u[i + (nx + 1) * j];
-            let re = if vel >= 0.0 { rho_eps[w] } else { rho_eps[e] };
-            let k = faces.xf(i, j);
-            faces.flux_x[k] = 1.5 * re * vel * dy[j];
-            faces.cond_x[k] =
+            row[i] =
                 harmonic(kappa[w], kappa[e], grid.x.interpolation_weight(i - 1)) * dy[j] / dxc[i];
         }
-    }
-    for j in 1..ny {
-        for i in 0..nx {
-            let (s, n) = (i + nx * (j - 1), i + nx * j);
+    });
+    for_each_row(&mut faces.flux_y, nx, |j, row| {
+        if j == 0 || j == ny {
+            return;
+        }
+        for (i, flux) in row.iter_mut().enumerate() {
             let vel = v[i + nx * j];
-            let re = if vel >= 0.0 { rho_eps[s] } else { rho_eps[n] };
-            let k = faces.yf(i, j);
-            faces.flux_y[k] = 1.5 * re * vel * dx[i];
-            faces.cond_y[k] =
+            *flux = 1.5 * upwind(vel, i + nx * (j - 1), i + nx * j) * vel * dx[i];
+        }
+    });
+    for_each_row(&mut faces.cond_y, nx, |j, row| {
+        if j == 0 || j == ny {
+            return;
+        }
+        for (i, cond) in row.iter_mut().enumerate() {
+            let (s, n) = (i + nx * (j - 1), i + nx * j);
+            *cond =
                 harmonic(kappa[s], kappa[n], grid.y.interpolation_weight(j - 1)) * dx[i] / dyc[j];
         }
-    }
+    });
     assemble(faces, theta, scheme, a);
-    for j in 0..ny {
+    // the sources of each cell's own row, rows in parallel
+    a.par_fill_rows(|j, row| {
         for i in 0..nx {
             let k = i + nx * j;
             let volume = dx[i] * dy[j];
@@ -130,32 +145,32 @@ pub fn assemble_theta(
             ] {
                 if let (true, Some(face)) = (present, face) {
                     let (ap, b) = face.implicit_parts(kappa[k], delta);
-                    a.a_p[k] += ap * area;
-                    a.b[k] += b * area;
+                    row.a_p[i] += ap * area;
+                    row.b[i] += b * area;
                 }
             }
             // transient with the old bulk density (docs/model.md §1.3, §4.3)
             let a0 = 1.5 * inputs.bulk_density_old[k] * volume / dt;
-            a.a_p[k] += a0;
-            a.b[k] += a0 * theta_old[k];
+            row.a_p[i] += a0;
+            row.b[i] += a0 * theta_old[k];
             // dissipation and viscous damping, implicit
-            a.a_p[k] += (inputs.dissipation_over_theta[k] + 3.0 * inputs.drag[k]) * volume;
+            row.a_p[i] += (inputs.dissipation_over_theta[k] + 3.0 * inputs.drag[k]) * volume;
             // production split by sign (docs/model.md §4.8)
             let tr_d = inputs.tr_d[k];
             let compression = -inputs.p_kin_over_theta[k] * tr_d; // coefficient of θ in −P_kin tr D
             if compression >= 0.0 {
-                a.b[k] += compression * theta[k] * volume;
+                row.b[i] += compression * theta[k] * volume;
             } else {
-                a.a_p[k] += -compression * volume;
+                row.a_p[i] += -compression * volume;
             }
             let bulk = inputs.lambda_kin[k] * tr_d * tr_d;
             if bulk >= 0.0 {
-                a.b[k] += bulk * volume;
+                row.b[i] += bulk * volume;
             } else {
-                a.a_p[k] += -bulk / theta[k].max(runout_closures::guards::THETA_SMALL) * volume;
+                row.a_p[i] += -bulk / theta[k].max(runout_closures::guards::THETA_SMALL) * volume;
             }
-            a.b[k] +=
+            row.b[i] +=
                 (2.0 * inputs.mu_kin[k] * inputs.tr_d2[k] + inputs.slip_production[k]) * volume;
         }
-    }
+    });
 }

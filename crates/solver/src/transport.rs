@@ -144,7 +144,8 @@ pub fn assemble_masked(
     a: &mut Stencil5,
 ) {
     let (mx, my) = (faces.mx, faces.my);
-    for j in 0..my {
+    // each node's row from its own faces, rows in parallel
+    a.par_fill_rows(|j, row| {
         for i in 0..mx {
             let k = i + mx * j;
             if skip.is_some_and(|s| s[k]) {
@@ -159,14 +160,14 @@ pub fn assemble_masked(
             let an = faces.cond_y[faces.yf(i, j + 1)] + (-fn_).max(0.0);
             let as_ = faces.cond_y[faces.yf(i, j)] + fs.max(0.0);
             // outer faces have no neighbour in the block
-            a.a_e[k] = if i + 1 < mx { ae } else { 0.0 };
-            a.a_w[k] = if i > 0 { aw } else { 0.0 };
-            a.a_n[k] = if j + 1 < my { an } else { 0.0 };
-            a.a_s[k] = if j > 0 { as_ } else { 0.0 };
-            a.a_p[k] = a.a_e[k] + a.a_w[k] + a.a_n[k] + a.a_s[k];
-            a.b[k] = 0.0;
+            row.a_e[i] = if i + 1 < mx { ae } else { 0.0 };
+            row.a_w[i] = if i > 0 { aw } else { 0.0 };
+            row.a_n[i] = if j + 1 < my { an } else { 0.0 };
+            row.a_s[i] = if j > 0 { as_ } else { 0.0 };
+            row.a_p[i] = row.a_e[i] + row.a_w[i] + row.a_n[i] + row.a_s[i];
+            row.b[i] = 0.0;
         }
-    }
+    });
     if scheme == Scheme::Upwind {
         return;
     }

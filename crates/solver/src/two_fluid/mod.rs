@@ -639,6 +639,10 @@ impl TwoFluid {
                 theta = r.theta,
                 "outer iteration"
             );
+            // where each iteration's largest residuals sit (why a step needs many iterations)
+            if tracing::enabled!(tracing::Level::TRACE) {
+                tracing::trace!(locations = %self.residual_locations(), "largest residuals");
+            }
             if !self.state.all_finite() {
                 out.residual = f64::INFINITY;
                 break;

@@ -17,7 +17,7 @@
 
 use std::time::Instant;
 
-use runout_linsolve::Stencil5;
+use runout_linsolve::{LinearSolver, Stencil5};
 use runout_mesh::{Grid, Sides};
 
 use super::diagnostics::since;
@@ -138,40 +138,34 @@ fn assemble_momentum(
     });
 }
 
-/// The linear solves of every phase's u and v; returns their iterations.
+/// The linear solves of every phase's u and v; returns their iterations. The u systems
+/// (gas, then each phase) and the v systems are independent after the elimination and have
+/// their own solvers, so the two components are solved as two tasks (the same results on
+/// any number of threads); a failure is reported as the sequential order gas u, gas v,
+/// solids u, solids v would meet it first.
 fn solve_momentum(
     grid: &Grid,
     state: &mut State,
     work: &mut Workspace,
 ) -> Result<usize, TwoFluidError> {
-    let mut iterations = 0;
-    let gas = state.gas_mut();
-    iterations += work
-        .solvers
-        .u
-        .setup_and_solve(&work.a_ug, &mut gas.u)
-        .map_err(lin("gas u momentum"))?
-        .iterations;
-    iterations += work
-        .solvers
-        .v
-        .setup_and_solve(&work.a_vg, &mut gas.v)
-        .map_err(lin("gas v momentum"))?
-        .iterations;
-    for (s, p) in work.solids.iter().zip(state.phases_mut()) {
-        iterations += work
-            .solvers
-            .u
-            .setup_and_solve(&s.a_u, &mut p.u)
-            .map_err(lin("solids u momentum"))?
-            .iterations;
-        iterations += work
-            .solvers
-            .v
-            .setup_and_solve(&s.a_v, &mut p.v)
-            .map_err(lin("solids v momentum"))?
-            .iterations;
+    let (gas, phases) = state.gas_mut_and_phases_mut();
+    let (mut u_systems, mut v_systems) = (vec![(&work.a_ug, &mut gas.u)], Vec::new());
+    v_systems.push((&work.a_vg, &mut gas.v));
+    for (s, p) in work.solids.iter().zip(phases.iter_mut()) {
+        u_systems.push((&s.a_u, &mut p.u));
+        v_systems.push((&s.a_v, &mut p.v));
     }
+    let (solver_u, solver_v) = (&mut work.solvers.u, &mut work.solvers.v);
+    let (u, v) = rayon::join(
+        || solve_component(solver_u.as_mut(), u_systems, "u"),
+        || solve_component(solver_v.as_mut(), v_systems, "v"),
+    );
+    let iterations = match (u, v) {
+        (Ok(iu), Ok(iv)) => iu + iv,
+        // the first failure in the sequential order: phase index first, then u before v
+        (Err((pu, eu)), Err((pv, ev))) => return Err(if pv < pu { ev } else { eu }),
+        (Err((_, e)), Ok(_)) | (Ok(_), Err((_, e))) => return Err(e),
+    };
     if grid.periodic_x() {
         // node nx of a periodic column is node 0 (fixed in the solves)
         let (nx, ny) = (grid.nx(), grid.ny());
@@ -179,6 +173,27 @@ fn solve_momentum(
         let copy = |u: &mut [f64]| (0..ny).for_each(|j| u[nx + mx * j] = u[mx * j]);
         copy(&mut state.gas_mut().u);
         state.phases_mut().iter_mut().for_each(|p| copy(&mut p.u));
+    }
+    Ok(iterations)
+}
+
+/// Solves the systems of one velocity component in order (gas, then each solids phase);
+/// returns their iterations, or the index of the phase whose solve failed and the error.
+fn solve_component(
+    solver: &mut dyn LinearSolver,
+    systems: Vec<(&Stencil5, &mut Vec<f64>)>,
+    component: &str,
+) -> Result<usize, (usize, TwoFluidError)> {
+    let mut iterations = 0;
+    for (phase, (a, x)) in systems.into_iter().enumerate() {
+        let what = match phase {
+            0 => format!("gas {component} momentum"),
+            _ => format!("solids {component} momentum"),
+        };
+        iterations += solver
+            .setup_and_solve(a, x)
+            .map_err(|e| (phase, lin(&what)(e)))?
+            .iterations;
     }
     Ok(iterations)
 }

@@ -17,6 +17,7 @@ use super::diagnostics::{since, Diagnostics};
 use super::model::Model;
 use super::{lin, solve_keeping_preconditioner, State, TwoFluidError, Workspace};
 use crate::momentum::fixed_row;
+use crate::rows::for_each_row;
 use crate::transport::{face_value, Scheme};
 
 /// Step 4: gas pressure correction (module doc); returns the mean |gas imbalance|.
@@ -132,8 +133,8 @@ fn assemble(
         }
     };
     let (u, v, f) = (gas.u, gas.v, gas.inflow);
-    let mut total = 0.0;
-    for j in 0..ny {
+    // rows in parallel (each cell's row is its own); b goes to the row first
+    a.par_fill_rows(|j, row| {
         for i in 0..nx {
             let k = i + nx * j;
             let (kw, ke) = (i + (nx + 1) * j, i + 1 + (nx + 1) * j);
@@ -147,28 +148,27 @@ fn assemble(
             let es = inlet(j == 0, f.south, face(v[ks], south, Some(k), nx));
             let en = inlet(j + 1 == ny, f.north, face(v[kn], Some(k), north, nx));
             let volume = dx[i] * dy[j];
-            let b = rho
+            row.b[i] = rho
                 * (-(eps[k] - gas.eps_old[k]) * volume / dt + ew * u[kw] * dy[j]
                     - ee * u[ke] * dy[j]
                     + es * v[ks] * dx[i]
                     - en * v[kn] * dx[i]);
-            imbalance[k] = b;
-            total += b.abs();
-            if gas.pinned && k == 0 {
-                fixed_row(a, k, 0.0);
-                continue;
-            }
             let ce = rho * ee * gas.d_u[ke] * dy[j];
             let cw = rho * ew * gas.d_u[kw] * dy[j];
             let cn = rho * en * gas.d_v[kn] * dx[i];
             let cs = rho * es * gas.d_v[ks] * dx[i];
-            a.a_e[k] = if east.is_some() { ce } else { 0.0 };
-            a.a_w[k] = if west.is_some() { cw } else { 0.0 };
-            a.a_n[k] = if north.is_some() { cn } else { 0.0 };
-            a.a_s[k] = if south.is_some() { cs } else { 0.0 };
-            a.a_p[k] = ce + cw + cn + cs;
-            a.b[k] = b;
+            row.a_e[i] = if east.is_some() { ce } else { 0.0 };
+            row.a_w[i] = if west.is_some() { cw } else { 0.0 };
+            row.a_n[i] = if north.is_some() { cn } else { 0.0 };
+            row.a_s[i] = if south.is_some() { cs } else { 0.0 };
+            row.a_p[i] = ce + cw + cn + cs;
         }
+    });
+    imbalance.copy_from_slice(&a.b);
+    // Σ|b| in cell order, as one sequential pass would add it
+    let total = imbalance.iter().fold(0.0, |sum, b| sum + b.abs());
+    if gas.pinned {
+        fixed_row(a, 0, 0.0);
     }
     total
 }
@@ -183,26 +183,28 @@ fn correct_velocities(
     u: &mut [f64],
     v: &mut [f64],
 ) {
-    for j in 0..ny {
-        for i in 0..=nx {
+    let u_row = |j: usize, u: &mut [f64]| {
+        for (i, u) in u.iter_mut().enumerate() {
             let k = i + (nx + 1) * j;
             if d_u[k] != 0.0 {
                 let p_w = if i == 0 { 0.0 } else { pc[i - 1 + nx * j] };
                 let p_e = if i == nx { 0.0 } else { pc[i + nx * j] };
-                u[k] += d_u[k] * (p_w - p_e);
+                *u += d_u[k] * (p_w - p_e);
             }
         }
-    }
-    for j in 0..=ny {
-        for i in 0..nx {
+    };
+    let v_row = |j: usize, v: &mut [f64]| {
+        for (i, v) in v.iter_mut().enumerate() {
             let k = i + nx * j;
             if d_v[k] != 0.0 {
                 let p_s = if j == 0 { 0.0 } else { pc[i + nx * (j - 1)] };
                 let p_n = if j == ny { 0.0 } else { pc[i + nx * j] };
-                v[k] += d_v[k] * (p_s - p_n);
+                *v += d_v[k] * (p_s - p_n);
             }
         }
-    }
+    };
+    for_each_row(u, nx + 1, u_row);
+    for_each_row(v, nx, v_row);
 }
 
 /// Whether cells `a` < `b`, `stride` apart, lie on one grid line (x lines: stride 1 within

@@ -214,6 +214,12 @@ impl State {
         &mut self.solids
     }
 
+    /// The gas beside every solids phase, all writable (their velocities solved side by
+    /// side).
+    pub fn gas_mut_and_phases_mut(&mut self) -> (&mut GasState, &mut [PhaseState]) {
+        (&mut self.gas, &mut self.solids)
+    }
+
     /// The gas (read) beside every solids phase (velocities and θ writable).
     pub fn gas_and_phases_mut(&mut self) -> (&GasState, &mut [PhaseState]) {
         (&self.gas, &mut self.solids)
