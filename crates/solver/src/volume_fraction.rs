@@ -16,6 +16,7 @@
 use runout_linsolve::Stencil5;
 use runout_mesh::Grid;
 
+use crate::rows::for_each_row;
 use crate::transport::{face_value, Scheme};
 
 /// Inputs of the correction equation of one solids phase.
@@ -176,11 +177,13 @@ pub fn assemble_correction(
     imbalance: &mut [f64],
     a: &mut Stencil5,
 ) {
-    let (nx, ny) = (grid.nx(), grid.ny());
+    let nx = grid.nx();
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
     mass_imbalance(grid, x, imbalance);
     let rho = x.density;
-    for j in 0..ny {
+    let imbalance = &*imbalance;
+    // each cell's row from its own faces, rows in parallel
+    a.par_fill_rows(|j, row| {
         for i in 0..nx {
             let k = i + nx * j;
             let mut a_p = rho * dx[i] * dy[j] / x.dt;
@@ -216,14 +219,14 @@ pub fn assemble_correction(
                     a_p += rho * x.eps[n] * e_f * area * x.k_cp[k];
                 }
             }
-            a.a_e[k] = links[0];
-            a.a_w[k] = links[1];
-            a.a_n[k] = links[2];
-            a.a_s[k] = links[3];
-            a.a_p[k] = a_p;
-            a.b[k] = -imbalance[k];
+            row.a_e[i] = links[0];
+            row.a_w[i] = links[1];
+            row.a_n[i] = links[2];
+            row.a_s[i] = links[3];
+            row.a_p[i] = a_p;
+            row.b[i] = -imbalance[k];
         }
-    }
+    });
 }
 
 /// Applies the correction ε' (docs/model.md §4.7): selective under-relaxation where the new
@@ -249,18 +252,21 @@ pub fn apply_correction(
         }
         eps[k] = (eps[k] + eps_prime[k]).max(0.0);
     }
-    for j in 0..ny {
+    let eps_prime = &*eps_prime;
+    // face by face, rows in parallel (interior faces; walls have e = 0 anyway)
+    for_each_row(u, nx + 1, |j, row| {
         for i in 1..nx {
-            let f = i + (nx + 1) * j;
-            let (w, e) = (i - 1 + nx * j, i + nx * j);
-            u[f] -= e_u[f] * (k_cp[e] * eps_prime[e] - k_cp[w] * eps_prime[w]);
+            let (w, e, f) = (i - 1 + nx * j, i + nx * j, i + (nx + 1) * j);
+            row[i] -= e_u[f] * (k_cp[e] * eps_prime[e] - k_cp[w] * eps_prime[w]);
         }
-    }
-    for j in 1..ny {
-        for i in 0..nx {
-            let f = i + nx * j;
-            let (s, n) = (i + nx * (j - 1), i + nx * j);
-            v[f] -= e_v[f] * (k_cp[n] * eps_prime[n] - k_cp[s] * eps_prime[s]);
+    });
+    for_each_row(v, nx, |j, row| {
+        if j == 0 || j == ny {
+            return;
         }
-    }
+        for (i, v) in row.iter_mut().enumerate() {
+            let (s, n, f) = (i + nx * (j - 1), i + nx * j, i + nx * j);
+            *v -= e_v[f] * (k_cp[n] * eps_prime[n] - k_cp[s] * eps_prime[s]);
+        }
+    });
 }
