@@ -114,35 +114,30 @@ impl Level {
         }
     }
 
+    /// The LU factors of the x lines and of the y lines. The two sets are independent, so
+    /// on levels from [`LINES_PAR_MIN_CELLS`] cells they are computed as two tasks; a zero
+    /// pivot of the x lines is reported first, as one pass doing x before y would.
     fn factor_lines(&mut self) -> Result<(), LinSolveError> {
         let op = &self.op;
         let (nx, n) = (op.nx, op.len());
-        let pivot_err = |d: f64, k: usize| LinSolveError::Singular {
-            detail: format!("multigrid line pivot {d} at cell {k}"),
+        let x_lines = |inv: &mut [f64], up: &mut [f64]| {
+            factor_recurrence(&op.ap, &op.aw, &op.ae, 1, |k| k % nx > 0, inv, up)
         };
-        for k in 0..n {
-            let mut d = op.ap[k];
-            if k % nx > 0 {
-                d -= op.aw[k] * self.x_up[k - 1];
-            }
-            if d == 0.0 || !d.is_finite() {
-                return Err(pivot_err(d, k));
-            }
-            self.x_inv[k] = 1.0 / d;
-            self.x_up[k] = op.ae[k] / d;
-        }
-        for k in 0..n {
-            let mut d = op.ap[k];
-            if k >= nx {
-                d -= op.as_[k] * self.y_up[k - nx];
-            }
-            if d == 0.0 || !d.is_finite() {
-                return Err(pivot_err(d, k));
-            }
-            self.y_inv[k] = 1.0 / d;
-            self.y_up[k] = op.an[k] / d;
-        }
-        Ok(())
+        let y_lines = |inv: &mut [f64], up: &mut [f64]| {
+            factor_recurrence(&op.ap, &op.as_, &op.an, nx, |k| k >= nx, inv, up)
+        };
+        let (x, y) = if n < LINES_PAR_MIN_CELLS {
+            (
+                x_lines(&mut self.x_inv, &mut self.x_up),
+                y_lines(&mut self.y_inv, &mut self.y_up),
+            )
+        } else {
+            rayon::join(
+                || x_lines(&mut self.x_inv, &mut self.x_up),
+                || y_lines(&mut self.y_inv, &mut self.y_up),
+            )
+        };
+        x.and(y)
     }
 
     /// Block Gauss–Seidel on the x lines j ≡ colour (mod 2). Lines of one colour only read
@@ -313,6 +308,34 @@ fn galerkin(fine: &Level, coarse: &mut Level) {
             coarse.active[kc] = any;
         }
     }
+}
+
+/// The forward elimination of tridiagonal lines a_P x_k − a_lo x_(k−stride) − a_hi x_(k+stride)
+/// = r (Thomas algorithm): inv_k = 1/d_k and up_k = a_hi,k/d_k with
+/// d_k = a_P,k − a_lo,k up_(k−stride) where `has_lower(k)`, else a_P,k.
+fn factor_recurrence(
+    ap: &[f64],
+    a_lo: &[f64],
+    a_hi: &[f64],
+    stride: usize,
+    has_lower: impl Fn(usize) -> bool,
+    inv: &mut [f64],
+    up: &mut [f64],
+) -> Result<(), LinSolveError> {
+    for k in 0..ap.len() {
+        let mut d = ap[k];
+        if has_lower(k) {
+            d -= a_lo[k] * up[k - stride];
+        }
+        if d == 0.0 || !d.is_finite() {
+            return Err(LinSolveError::Singular {
+                detail: format!("multigrid line pivot {d} at cell {k}"),
+            });
+        }
+        inv[k] = 1.0 / d;
+        up[k] = a_hi[k] / d;
+    }
+    Ok(())
 }
 
 /// coarse_rhs = Pᵀ r.

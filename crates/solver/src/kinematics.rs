@@ -9,6 +9,8 @@
 
 use runout_mesh::Grid;
 
+use crate::rows::for_each_row;
+
 /// Strain-rate invariants of one cell.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Strain {
@@ -53,7 +55,8 @@ pub fn strain_rates(
     // cell-centred velocities: the mean of the two faces (MFIX AVG_X_E, docs/model.md §4.1)
     let uc = |i: usize, j: usize| 0.5 * (u[i + (nx + 1) * j] + u[i + 1 + (nx + 1) * j]);
     let vc = |i: usize, j: usize| 0.5 * (v[i + nx * j] + v[i + nx * (j + 1)]);
-    for j in 0..ny {
+    // each cell from its own faces and neighbours, rows in parallel
+    for_each_row(out, nx, |j, row| {
         for i in 0..nx {
             let du_dx = (u[i + 1 + (nx + 1) * j] - u[i + (nx + 1) * j]) / dx[i];
             let dv_dy = (v[i + nx * (j + 1)] - v[i + nx * j]) / dy[j];
@@ -101,11 +104,11 @@ pub fn strain_rates(
             let tr_d = du_dx + dv_dy;
             // 2-D: D33 = 0 (docs/model.md §0.3)
             let tr_d2 = du_dx * du_dx + dv_dy * dv_dy + 2.0 * d12 * d12;
-            out[i + nx * j] = Strain {
+            row[i] = Strain {
                 tr_d,
                 tr_d2,
                 s_ddot_s: (tr_d2 - tr_d * tr_d / 3.0).max(0.0),
             };
         }
-    }
+    });
 }

@@ -15,9 +15,10 @@ pub(crate) fn rows_per_task(row_len: usize) -> usize {
 
 /// Calls `f(j, row)` for every row of `row_len` entries of `data`, in parallel over blocks of
 /// rows of at least [`PAR_ROW_ENTRIES`] entries (serially below that).
-pub(crate) fn for_each_row<F>(data: &mut [f64], row_len: usize, f: F)
+pub(crate) fn for_each_row<T, F>(data: &mut [T], row_len: usize, f: F)
 where
-    F: Fn(usize, &mut [f64]) + Sync + Send,
+    T: Send,
+    F: Fn(usize, &mut [T]) + Sync + Send,
 {
     if data.len() < PAR_ROW_ENTRIES {
         data.chunks_mut(row_len)
