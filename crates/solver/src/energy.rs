@@ -66,45 +66,8 @@ pub fn assemble_theta(
 ) {
     let (nx, ny) = (grid.nx(), grid.ny());
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
-    let (dxc, dyc) = (grid.x.face_spacing(), grid.y.face_spacing());
-    let rho_eps = inputs.bulk_density;
     let kappa = inputs.conductivity;
-    let harmonic = |a: f64, b: f64, w: f64| a * b / (w * a + (1.0 - w) * b).max(1e-15);
-    // face by face, rows in parallel (each face's value is its own); interior faces only
-    let upwind =
-        |vel: f64, lo: usize, hi: usize| if vel >= 0.0 { rho_eps[lo] } else { rho_eps[hi] };
-    for_each_row(&mut faces.flux_x, nx + 1, |j, row| {
-        for i in 1..nx {
-            let vel = u[i + (nx + 1) * j];
-            row[i] = 1.5 * upwind(vel, i - 1 + nx * j, i + nx * j) * vel * dy[j];
-        }
-    });
-    for_each_row(&mut faces.cond_x, nx + 1, |j, row| {
-        for i in 1..nx {
-            let (w, e) = (i - 1 + nx * j, i + nx * j);
-            row[i] =
-                harmonic(kappa[w], kappa[e], grid.x.interpolation_weight(i - 1)) * dy[j] / dxc[i];
-        }
-    });
-    for_each_row(&mut faces.flux_y, nx, |j, row| {
-        if j == 0 || j == ny {
-            return;
-        }
-        for (i, flux) in row.iter_mut().enumerate() {
-            let vel = v[i + nx * j];
-            *flux = 1.5 * upwind(vel, i + nx * (j - 1), i + nx * j) * vel * dx[i];
-        }
-    });
-    for_each_row(&mut faces.cond_y, nx, |j, row| {
-        if j == 0 || j == ny {
-            return;
-        }
-        for (i, cond) in row.iter_mut().enumerate() {
-            let (s, n) = (i + nx * (j - 1), i + nx * j);
-            *cond =
-                harmonic(kappa[s], kappa[n], grid.y.interpolation_weight(j - 1)) * dx[i] / dyc[j];
-        }
-    });
+    face_fluxes_and_conductances(grid, inputs, u, v, faces);
     assemble(faces, theta, scheme, a);
     // the sources of each cell's own row, rows in parallel
     a.par_fill_rows(|j, row| {
@@ -171,6 +134,58 @@ pub fn assemble_theta(
             }
             row.b[i] +=
                 (2.0 * inputs.mu_kin[k] * inputs.tr_d2[k] + inputs.slip_production[k]) * volume;
+        }
+    });
+}
+
+/// The θ convection flux (3/2)·(solids mass flux, upwind bulk density) and the harmonic
+/// face conductance of every interior face (docs/model.md §4.1, §4.8), rows in parallel
+/// (each face's value is its own).
+fn face_fluxes_and_conductances(
+    grid: &Grid,
+    inputs: &EnergyInputs<'_>,
+    u: &[f64],
+    v: &[f64],
+    faces: &mut FaceData,
+) {
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let (dx, dy) = (grid.x.widths(), grid.y.widths());
+    let (dxc, dyc) = (grid.x.face_spacing(), grid.y.face_spacing());
+    let rho_eps = inputs.bulk_density;
+    let kappa = inputs.conductivity;
+    let harmonic = |a: f64, b: f64, w: f64| a * b / (w * a + (1.0 - w) * b).max(1e-15);
+    let upwind =
+        |vel: f64, lo: usize, hi: usize| if vel >= 0.0 { rho_eps[lo] } else { rho_eps[hi] };
+    for_each_row(&mut faces.flux_x, nx + 1, |j, row| {
+        for i in 1..nx {
+            let vel = u[i + (nx + 1) * j];
+            row[i] = 1.5 * upwind(vel, i - 1 + nx * j, i + nx * j) * vel * dy[j];
+        }
+    });
+    for_each_row(&mut faces.cond_x, nx + 1, |j, row| {
+        for i in 1..nx {
+            let (w, e) = (i - 1 + nx * j, i + nx * j);
+            row[i] =
+                harmonic(kappa[w], kappa[e], grid.x.interpolation_weight(i - 1)) * dy[j] / dxc[i];
+        }
+    });
+    for_each_row(&mut faces.flux_y, nx, |j, row| {
+        if j == 0 || j == ny {
+            return;
+        }
+        for (i, flux) in row.iter_mut().enumerate() {
+            let vel = v[i + nx * j];
+            *flux = 1.5 * upwind(vel, i + nx * (j - 1), i + nx * j) * vel * dx[i];
+        }
+    });
+    for_each_row(&mut faces.cond_y, nx, |j, row| {
+        if j == 0 || j == ny {
+            return;
+        }
+        for (i, cond) in row.iter_mut().enumerate() {
+            let (s, n) = (i + nx * (j - 1), i + nx * j);
+            *cond =
+                harmonic(kappa[s], kappa[n], grid.y.interpolation_weight(j - 1)) * dx[i] / dyc[j];
         }
     });
 }
