@@ -70,7 +70,7 @@ pub use bicgstab::BiCgStab;
 pub use direct::{CholeskySolver, CscAssembler, SparseLuSolver, DIRECT_MAX_REL_RESIDUAL};
 pub use multigrid::{Cycle, MultigridCg, MultigridParams};
 pub use precond::Precond;
-pub use stencil::{CellKind, Pattern, RowMut, Stencil5};
+pub use stencil::{for_each_row, CellKind, Pattern, RowMut, Stencil5};
 
 /// Errors of the linear solvers. Every failure is reported, never a panic or a hang.
 #[derive(Debug, thiserror::Error, Clone, PartialEq)]

@@ -417,6 +417,27 @@ pub(crate) fn rows_per_task(nx: usize) -> usize {
     (PAR_MIN_LEN / nx.max(1)).max(1)
 }
 
+/// Calls `f(j, row)` for every row j of `row_len` entries of `data` (a cell or face array,
+/// x fastest), in parallel over blocks of rows of at least [`PAR_MIN_LEN`] entries, serially
+/// below that: the loop of [`Stencil5::par_fill_rows`], for any array. Each row is computed
+/// as a serial loop would compute it, so the results do not depend on the number of threads.
+pub fn for_each_row<T, F>(data: &mut [T], row_len: usize, f: F)
+where
+    T: Send,
+    F: Fn(usize, &mut [T]) + Sync + Send,
+{
+    if data.len() < PAR_MIN_LEN {
+        data.chunks_mut(row_len)
+            .enumerate()
+            .for_each(|(j, row)| f(j, row));
+    } else {
+        data.par_chunks_mut(row_len)
+            .enumerate()
+            .with_min_len(rows_per_task(row_len))
+            .for_each(|(j, row)| f(j, row));
+    }
+}
+
 /// y = A x for a 5-point operator; rows of `fixed` cells use only the diagonal.
 pub(crate) fn apply5(c: &Coeffs<'_>, fixed: Option<&[bool]>, x: &[f64], y: &mut [f64]) {
     let (nx, ny) = (c.nx, c.ny);

@@ -15,8 +15,8 @@ use runout_mesh::{Grid, Sides};
 use runout_walls::RobinFace;
 
 use crate::momentum::WallFaces;
-use crate::rows::for_each_row;
 use crate::transport::{assemble, FaceData, Scheme};
+use runout_linsolve::for_each_row;
 
 /// Per-cell inputs of the granular-energy equation, evaluated by the caller from the
 /// closures at the current iterate (cell index i + nx j).

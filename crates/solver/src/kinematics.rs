@@ -9,7 +9,7 @@
 
 use runout_mesh::Grid;
 
-use crate::rows::for_each_row;
+use runout_linsolve::for_each_row;
 
 /// Strain-rate invariants of one cell.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

@@ -21,7 +21,6 @@ pub mod energy;
 pub mod kinematics;
 pub mod momentum;
 pub mod pea;
-mod rows;
 pub mod single_phase;
 pub mod staggered;
 pub mod state;

@@ -16,8 +16,8 @@
 use runout_linsolve::Stencil5;
 use runout_mesh::Grid;
 
-use crate::rows::for_each_row;
 use crate::transport::{face_value, Scheme};
+use runout_linsolve::for_each_row;
 
 /// Inputs of the correction equation of one solids phase.
 #[derive(Clone, Copy, Debug)]

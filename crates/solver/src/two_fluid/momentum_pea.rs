@@ -186,13 +186,12 @@ fn solve_component(
 ) -> Result<usize, (usize, TwoFluidError)> {
     let mut iterations = 0;
     for (phase, (a, x)) in systems.into_iter().enumerate() {
-        let what = match phase {
-            0 => format!("gas {component} momentum"),
-            _ => format!("solids {component} momentum"),
-        };
         iterations += solver
             .setup_and_solve(a, x)
-            .map_err(|e| (phase, lin(&what)(e)))?
+            .map_err(|e| {
+                let who = if phase == 0 { "gas" } else { "solids" };
+                (phase, lin(&format!("{who} {component} momentum"))(e))
+            })?
             .iterations;
     }
     Ok(iterations)

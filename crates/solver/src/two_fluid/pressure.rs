@@ -17,8 +17,8 @@ use super::diagnostics::{since, Diagnostics};
 use super::model::Model;
 use super::{lin, solve_keeping_preconditioner, State, TwoFluidError, Workspace};
 use crate::momentum::fixed_row;
-use crate::rows::for_each_row;
 use crate::transport::{face_value, Scheme};
+use runout_linsolve::for_each_row;
 
 /// Step 4: gas pressure correction (module doc); returns the mean |gas imbalance|.
 pub(super) fn pressure_correction(
