@@ -33,6 +33,7 @@ mod chute;
 mod collapse;
 mod error_time;
 mod figure;
+mod jobs;
 mod mfix_slope;
 mod report;
 mod sensitivity;

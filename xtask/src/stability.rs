@@ -17,7 +17,6 @@ use std::time::{Instant, SystemTime, UNIX_EPOCH};
 
 use anyhow::{bail, Context, Result};
 use indicatif::{MultiProgress, ProgressBar};
-use rayon::prelude::*;
 use runout_case::{Fidelity, SourcedCase};
 use runout_output::{RunStatus, RunSummary};
 use runout_run::store::{self, Request, Reuse};
@@ -321,11 +320,13 @@ pub fn run_cases(cases_dir: &Path, runs_dir: &Path, opts: &StabilityOptions) -> 
     }
     let progress = MultiProgress::new();
     let rows: Mutex<Vec<(usize, Row)>> = Mutex::new(Vec::new());
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(opts.jobs.max(1))
-        .build()?;
-    pool.install(|| {
-        selected.par_iter().enumerate().for_each(|(k, r)| {
+    // each worker on a pool of its own (crate::jobs): a run waiting in a parallel stage of
+    // a shared pool could steal and run the next case inside it
+    crate::jobs::run_queue(
+        selected.iter().enumerate(),
+        opts.jobs,
+        || true,
+        |(k, r)| {
             let bar = progress.add(ProgressBar::new(1000));
             bar.set_style(progress_style());
             bar.set_prefix(r.case.name.clone());
@@ -340,8 +341,8 @@ pub fn run_cases(cases_dir: &Path, runs_dir: &Path, opts: &StabilityOptions) -> 
                     .map_or(String::new(), |m| format!(": {m}"))
             );
             rows.lock().expect("no poisoned lock").push((k, row));
-        });
-    });
+        },
+    )?;
     let mut rows = rows.into_inner().expect("no poisoned lock");
     rows.sort_by_key(|(k, _)| *k);
     Ok(rows.into_iter().map(|(_, r)| r).collect())

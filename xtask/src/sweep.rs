@@ -360,7 +360,7 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
         "the running cases stop after their step with a checkpoint; run the sweep again to \
          continue them",
     );
-    let mut outcomes = run_in_parallel(root, &selected, order, fidelity, opts.jobs, &stop);
+    let mut outcomes = run_in_parallel(root, &selected, order, fidelity, opts.jobs, &stop)?;
     for (k, original) in same_as.iter().enumerate() {
         let Some(original) = *original else {
             continue;
@@ -462,6 +462,13 @@ fn list_selection(
         );
     }
     println!("total cells over the selection: {cells}");
+    if !opts.list {
+        println!(
+            "{} run(s) at once, {} thread(s) each",
+            opts.jobs.max(1),
+            crate::jobs::threads_per_job(opts.jobs)
+        );
+    }
     Ok(())
 }
 
@@ -499,8 +506,9 @@ fn longest_first(
     order
 }
 
-/// Runs the selected cases `order` names on `jobs` workers, each with a progress bar, until
-/// the queue is empty or a signal stops the sweep; the outcomes in the order they ended.
+/// Runs the selected cases `order` names on `jobs` workers, each on a thread pool of its own
+/// ([`crate::jobs`]) and with a progress bar, until the queue is empty or a signal stops the
+/// sweep; the outcomes in the order they ended.
 fn run_in_parallel(
     root: &Path,
     selected: &[&SourcedCase],
@@ -508,33 +516,27 @@ fn run_in_parallel(
     fidelity: Fidelity,
     jobs: usize,
     stop: &Arc<AtomicBool>,
-) -> Vec<(usize, Outcome)> {
+) -> Result<Vec<(usize, Outcome)>> {
     let progress = MultiProgress::new();
     let style = progress_style();
-    let queue = Mutex::new(order.into_iter());
     let outcomes: Mutex<Vec<(usize, Outcome)>> = Mutex::new(Vec::new());
-    std::thread::scope(|scope| {
-        for _ in 0..jobs.max(1) {
-            scope.spawn(|| loop {
-                if stop.load(Ordering::SeqCst) {
-                    break;
-                }
-                let Some(k) = queue.lock().expect("no poisoned lock").next() else {
-                    break;
-                };
-                let r = selected[k];
-                let bar = progress.add(ProgressBar::new(1000));
-                bar.set_style(style.clone());
-                bar.set_prefix(r.case.name.clone());
-                let outcome = run_one(r, fidelity, root, &bar, stop);
-                outcomes
-                    .lock()
-                    .expect("no poisoned lock")
-                    .push((k, outcome));
-            });
-        }
-    });
-    outcomes.into_inner().expect("no poisoned lock")
+    crate::jobs::run_queue(
+        order,
+        jobs,
+        || !stop.load(Ordering::SeqCst),
+        |k| {
+            let r = selected[k];
+            let bar = progress.add(ProgressBar::new(1000));
+            bar.set_style(style.clone());
+            bar.set_prefix(r.case.name.clone());
+            let outcome = run_one(r, fidelity, root, &bar, stop);
+            outcomes
+                .lock()
+                .expect("no poisoned lock")
+                .push((k, outcome));
+        },
+    )?;
+    Ok(outcomes.into_inner().expect("no poisoned lock"))
 }
 
 /// How the runs of a sweep ended, counted.

@@ -288,28 +288,18 @@ pub fn scan_points(n: usize) -> Vec<f64> {
     }
 }
 
-/// Evaluates `points` on `jobs` workers.
+/// Evaluates `points` on `jobs` workers, each on a thread pool of its own ([`crate::jobs`]).
 fn evaluate_all(ev: &Evaluator, points: Vec<Vec<f64>>, stage: Stage, jobs: usize) -> Result<()> {
-    let queue = Mutex::new(points.into_iter());
     let first_error = Mutex::new(None);
-    std::thread::scope(|scope| {
-        for _ in 0..jobs.max(1) {
-            scope.spawn(|| loop {
-                if first_error.lock().expect("no poisoned lock").is_some() {
-                    break;
-                }
-                let Some(x) = queue.lock().expect("no poisoned lock").next() else {
-                    break;
-                };
-                if let Err(e) = ev.evaluate(x, stage) {
-                    first_error
-                        .lock()
-                        .expect("no poisoned lock")
-                        .get_or_insert(e);
-                }
-            });
+    let no_error = || first_error.lock().expect("no poisoned lock").is_none();
+    crate::jobs::run_queue(points, jobs, no_error, |x| {
+        if let Err(e) = ev.evaluate(x, stage) {
+            first_error
+                .lock()
+                .expect("no poisoned lock")
+                .get_or_insert(e);
         }
-    });
+    })?;
     match first_error.into_inner().expect("no poisoned lock") {
         Some(e) => Err(e),
         None => Ok(()),
