@@ -26,6 +26,7 @@ use anyhow::{bail, Context, Result};
 use indicatif::{MultiProgress, ProgressBar, ProgressStyle};
 use runout_case::{case_files, load, Case, Fidelity, Loaded, SourcedCase};
 use runout_output::RunSummary;
+use runout_run::checkpoint::CHECKPOINT_DIR;
 use runout_run::store::{self, Request, Reuse, Stored};
 use runout_run::{signals, Progress, RunError};
 
@@ -212,7 +213,8 @@ fn duplicates(selected: &[&SourcedCase], fidelity: Fidelity) -> Vec<Option<usize
 
 /// Copies the finished run of `from` to the folder of `to` (a repeat of the same case),
 /// with the case name in its summary and resolved case changed to `to`; skipped if `to` is
-/// finished already.
+/// finished already. The checkpoints stay with the run that wrote them (they restart
+/// `from`'s case, and a restart refuses another case).
 fn copy_run(runs: &Path, from: &str, to: &str, fidelity: Fidelity) -> Outcome {
     let done = runs.join(to).join(fidelity.name());
     if let Some(summary) = store::read_summary(&done) {
@@ -223,10 +225,7 @@ fn copy_run(runs: &Path, from: &str, to: &str, fidelity: Fidelity) -> Outcome {
     let copy = || -> Result<RunSummary> {
         let _ = std::fs::remove_dir_all(&partial);
         std::fs::create_dir_all(&partial)?;
-        for entry in std::fs::read_dir(&source)? {
-            let entry = entry?;
-            std::fs::copy(entry.path(), partial.join(entry.file_name()))?;
-        }
+        copy_outputs(&source, &partial)?;
         let mut summary = store::read_summary(&partial)
             .with_context(|| format!("no summary in {}", source.display()))?;
         summary.case = to.to_string();
@@ -245,6 +244,24 @@ fn copy_run(runs: &Path, from: &str, to: &str, fidelity: Fidelity) -> Outcome {
         Ok(summary) => Outcome::Copied(summary, from.to_string()),
         Err(e) => Outcome::Failed(format!("copying the run of {from}: {e:#}")),
     }
+}
+
+/// Copies the files of the run folder `source` into `dest`, and its folders (but its
+/// checkpoints) recursively.
+fn copy_outputs(source: &Path, dest: &Path) -> Result<()> {
+    std::fs::create_dir_all(dest)?;
+    for entry in std::fs::read_dir(source)? {
+        let entry = entry?;
+        let (from, to) = (entry.path(), dest.join(entry.file_name()));
+        if entry.file_type()?.is_dir() {
+            if entry.file_name() != CHECKPOINT_DIR {
+                copy_outputs(&from, &to)?;
+            }
+        } else {
+            std::fs::copy(&from, &to).with_context(|| format!("copying {}", from.display()))?;
+        }
+    }
+    Ok(())
 }
 
 pub use runout_run::store::finished_run;
@@ -705,6 +722,33 @@ mod tests {
         std::fs::remove_file(tmp.0.join("results").join("summary.csv")).unwrap();
         assert_eq!(sweep_of("S-JJ", Some((2, 2))).len(), 3);
         assert_eq!(sweep_of("S-JJ", Some((1, 2))), names);
+    }
+
+    /// A repeat of a finished `wall` run (which holds a checkpoints folder) is copied with
+    /// its outputs and its name, without the checkpoints (session 17: the copy failed on the
+    /// folder).
+    #[test]
+    fn a_repeat_is_copied_without_the_checkpoints() {
+        use runout_post::fixture::{write_run, TempDir};
+        let tmp = TempDir::new("sweep-copy");
+        let runs = tmp.0.join("runs");
+        write_run(&runs, "a", "wall", 0.4, &[("bulk.csv", "t\n0\n")]);
+        let checkpoints = runs.join("a").join("wall").join(CHECKPOINT_DIR);
+        std::fs::create_dir_all(&checkpoints).unwrap();
+        std::fs::write(checkpoints.join("step_0000000001.ckpt"), "x").unwrap();
+        let outcome = copy_run(&runs, "a", "b", Fidelity::Wall);
+        let Outcome::Copied(summary, from) = outcome else {
+            panic!("not copied");
+        };
+        assert_eq!((summary.case.as_str(), from.as_str()), ("b", "a"));
+        let copy = runs.join("b").join("wall");
+        assert_eq!(
+            std::fs::read_to_string(copy.join("bulk.csv")).unwrap(),
+            "t\n0\n"
+        );
+        assert_eq!(store::read_summary(&copy).unwrap().case, "b");
+        assert!(!copy.join(CHECKPOINT_DIR).exists());
+        assert!(checkpoints.join("step_0000000001.ckpt").exists());
     }
 
     #[test]
