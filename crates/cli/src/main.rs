@@ -497,13 +497,6 @@ fn report(
     }
 }
 
-/// Runs `job` on one of the threads of rayon's global pool (`RAYON_NUM_THREADS` of them):
-/// the solver's serial stages then run on a pool thread, not on the main thread beside all
-/// of the pool's, one thread fewer competing for the cores (docs/performance.md, session 15).
-fn on_the_pool<R: Send>(job: impl FnOnce() -> R + Send) -> R {
-    rayon::scope(|_| job())
-}
-
 fn main() -> ExitCode {
     tracing_subscriber::fmt()
         .with_env_filter(
@@ -554,7 +547,7 @@ fn main() -> ExitCode {
                 end_time,
                 ignore_memory,
             };
-            on_the_pool(|| run(&file, &target, quiet, &options))
+            run(&file, &target, quiet, &options)
         }
         Command::Closures(args) => match cmd_closures::run(&args) {
             Ok(()) => ExitCode::SUCCESS,

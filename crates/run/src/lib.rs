@@ -127,7 +127,7 @@ pub fn run_case(
     case: &Case,
     fidelity: Fidelity,
     out_dir: &Path,
-    progress: impl FnMut(&Progress),
+    progress: impl FnMut(&Progress) + Send,
 ) -> Result<RunSummary, RunError> {
     let options = RunOptions {
         replace: true,
@@ -529,23 +529,37 @@ fn time_loop(
 /// run stops with a diagnosis in the summary and keeps what it wrote. A stop request
 /// ([`RunOptions::stop`]) ends the run after the current step with a checkpoint; an output
 /// error ends it with status `Failed` in the summary where the summary can still be written.
+///
+/// The run executes on a thread of the current rayon pool ([`on_the_pool`]).
 pub fn run_case_with(
     case: &Case,
     fidelity: Fidelity,
     out_dir: &Path,
     options: &RunOptions,
-    mut progress: impl FnMut(&Progress),
+    mut progress: impl FnMut(&Progress) + Send,
 ) -> Result<RunSummary, RunError> {
-    let case = case.at_fidelity(fidelity);
-    let mut solver = case_solver(&case)?;
-    run_solver(
-        &case,
-        fidelity,
-        out_dir,
-        options,
-        solver.as_mut(),
-        &mut progress,
-    )
+    on_the_pool(|| {
+        let case = case.at_fidelity(fidelity);
+        let mut solver = case_solver(&case)?;
+        run_solver(
+            &case,
+            fidelity,
+            out_dir,
+            options,
+            solver.as_mut(),
+            &mut progress,
+        )
+    })
+}
+
+/// Runs `job` on a thread of the current rayon pool (the global pool of
+/// `RAYON_NUM_THREADS` threads, or the pool installed by the caller): the solver's serial
+/// stages then run on a pool thread rather than on the calling thread beside all of the
+/// pool's, one thread fewer competing for the cores (docs/performance.md, session 15: 40k
+/// cells on two threads, wall 0.857 of the run from the main thread). Called from a thread
+/// of the pool, `job` runs where it is.
+pub fn on_the_pool<R: Send>(job: impl FnOnce() -> R + Send) -> R {
+    rayon::scope(|_| job())
 }
 
 /// [`run_case_with`] on a solver already built from the resolved `case`.

@@ -117,7 +117,7 @@ pub fn obtain(
     case: &Case,
     fidelity: Fidelity,
     request: &Request,
-    mut progress: impl FnMut(&Progress),
+    mut progress: impl FnMut(&Progress) + Send,
 ) -> Result<Stored, RunError> {
     let previous = match request.reuse {
         Reuse::Never => None,
