@@ -13,11 +13,17 @@ use std::sync::Mutex;
 
 use anyhow::{Context, Result};
 
-/// Threads of each of `jobs` runs at once: the cores this process may use (its CPU
-/// affinity and cgroup quota, as `std::thread::available_parallelism` reads them) shared
-/// out, at least one.
+/// Threads of each of `jobs` runs at once: the threads this process may use shared out,
+/// at least one each. Those are `RAYON_NUM_THREADS` if it is set to a positive number (as
+/// for rayon's global pool), else the cores of its CPU affinity and cgroup quota
+/// (`std::thread::available_parallelism`).
 pub fn threads_per_job(jobs: usize) -> usize {
-    let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let from_env = std::env::var("RAYON_NUM_THREADS")
+        .ok()
+        .and_then(|v| v.trim().parse::<usize>().ok())
+        .filter(|&n| n > 0);
+    let cores =
+        from_env.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
     (cores / jobs.max(1)).max(1)
 }
 
@@ -96,9 +102,13 @@ mod tests {
         assert_eq!(done.load(Ordering::SeqCst), 3);
     }
 
-    /// The cores are shared out, at least one thread each.
+    /// The cores are shared out, at least one thread each (the test runner's environment
+    /// sets no `RAYON_NUM_THREADS`, or this test is skipped).
     #[test]
     fn threads_per_job_shares_the_cores_out() {
+        if std::env::var_os("RAYON_NUM_THREADS").is_some() {
+            return;
+        }
         let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
         assert_eq!(threads_per_job(1), cores);
         assert_eq!(threads_per_job(cores), 1);
