@@ -50,12 +50,16 @@
 //! - [`MultigridCg`]: flexible CG + aggregation multigrid (K-cycle by default); iterations
 //!   to 1e-8 stay at 12–13 from 10k to 1M cells on paper-like stretched grids.
 //!
+//! - [`ActiveBox`]: any of these on the rectangle of rows that have links, the rows
+//!   outside it (a_P φ = b) solved exactly (the solids equations of a slide).
+//!
 //! Per-equation defaults: [`LinearSolverKind::pressure_default`],
 //! [`LinearSolverKind::volume_fraction_default`], [`LinearSolverKind::momentum_default`],
 //! [`LinearSolverKind::granular_energy_default`]; the measurements behind them are in
 //! `docs/performance.md` (`cargo run --release -p runout-linsolve --example linsolve_table`).
 #![deny(missing_docs)]
 
+mod active_box;
 mod bicgstab;
 mod direct;
 mod kernels;
@@ -66,6 +70,7 @@ mod stencil;
 
 use std::time::Duration;
 
+pub use active_box::{coupled_rect, ActiveBox, Rect};
 pub use bicgstab::BiCgStab;
 pub use direct::{CholeskySolver, CscAssembler, SparseLuSolver, DIRECT_MAX_REL_RESIDUAL};
 pub use multigrid::{Cycle, MultigridCg, MultigridParams};

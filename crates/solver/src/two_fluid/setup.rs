@@ -3,7 +3,9 @@
 //! docs/model.md §4.6), its linear solvers and their tolerances (docs/model.md §4.13), and
 //! the work storage of every phase, allocated once.
 
-use runout_linsolve::{build, LinearSolver, LinearSolverKind, MultigridParams, Pattern, Stencil5};
+use runout_linsolve::{
+    build, ActiveBox, LinearSolver, LinearSolverKind, MultigridParams, Pattern, Stencil5,
+};
 use runout_mesh::{Grid, Sides};
 
 use super::diagnostics::Diagnostics;
@@ -168,8 +170,13 @@ fn linear_solvers(
     // with 1e-4 the normalised residuals of the outer iteration stall near 1e-4, the
     // size of the linear solves' own error, and θ's tolerance (1e-4) is never met.
     let transport = LinearSolverKind::transport_default(1e-8, 100);
-    let mut solver_u = build(&transport);
-    let mut solver_v = build(&transport);
+    // Each solver of u, v, ε' and θ solves the rectangle of rows with links only
+    // (`ActiveBox`): the dilute solids rows outside it read a_P φ = b (docs/model.md §2.7,
+    // §4.8) and are solved exactly; the gas's rows are linked everywhere and solved whole.
+    let active =
+        |kind: &LinearSolverKind| -> Box<dyn LinearSolver> { Box::new(ActiveBox::new(kind)) };
+    let mut solver_u = active(&transport);
+    let mut solver_v = active(&transport);
     // The gas pressure correction is solved to 1e-2: its error is removed by the next outer
     // iteration like any other, and on family M (coarse) the results agree with a 1e-4
     // solve to 6 digits at the same outer-iteration count while the solve costs half
@@ -180,9 +187,9 @@ fn linear_solvers(
         max_iter: 20,
         ..MultigridParams::default()
     }));
-    let mut solver_eps = build(&LinearSolverKind::volume_fraction_default());
-    let mut solver_eps_fallback = build(&LinearSolverKind::transport_default(1e-4, 20));
-    let mut solver_theta = build(&transport);
+    let mut solver_eps = active(&LinearSolverKind::volume_fraction_default());
+    let mut solver_eps_fallback = active(&LinearSolverKind::transport_default(1e-4, 20));
+    let mut solver_theta = active(&transport);
     solver_u.set_pattern(pu).map_err(lin("u"))?;
     solver_v.set_pattern(pv).map_err(lin("v"))?;
     solver_p.set_pattern(pp).map_err(lin("p'"))?;
