@@ -89,29 +89,32 @@ impl Rect {
 pub fn coupled_rect(a: &Stencil5) -> Option<Rect> {
     let (nx, ny) = (a.pattern().nx(), a.pattern().ny());
     let fixed = a.pattern().fixed_mask();
+    let linked = |k: usize| {
+        ((a.a_e[k] != 0.0) | (a.a_w[k] != 0.0) | (a.a_n[k] != 0.0) | (a.a_s[k] != 0.0)) & !fixed[k]
+    };
     let mut r: Option<Rect> = None;
     for j in 0..ny {
-        for i in 0..nx {
-            let k = i + nx * j;
-            let linked = a.a_e[k] != 0.0 || a.a_w[k] != 0.0 || a.a_n[k] != 0.0 || a.a_s[k] != 0.0;
-            if !linked || fixed[k] {
-                continue;
-            }
-            r = Some(match r {
-                None => Rect {
-                    i0: i,
-                    i1: i + 1,
-                    j0: j,
-                    j1: j + 1,
-                },
-                Some(r) => Rect {
-                    i0: r.i0.min(i),
-                    i1: r.i1.max(i + 1),
-                    j0: r.j0,
-                    j1: j + 1,
-                },
-            });
-        }
+        let row = nx * j;
+        let Some(first) = (0..nx).position(|i| linked(row + i)) else {
+            continue;
+        };
+        let last = (first..nx)
+            .rposition(|i| linked(row + i))
+            .map_or(first, |p| first + p);
+        r = Some(match r {
+            None => Rect {
+                i0: first,
+                i1: last + 1,
+                j0: j,
+                j1: j + 1,
+            },
+            Some(r) => Rect {
+                i0: r.i0.min(first),
+                i1: r.i1.max(last + 1),
+                j0: r.j0,
+                j1: j + 1,
+            },
+        });
     }
     r
 }
@@ -278,23 +281,37 @@ impl ActiveBox {
     }
 }
 
+/// The index ranges of the rows outside `r` (all rows if `None`), row by row of the
+/// `nx × ny` block.
+fn outside_ranges(
+    (nx, ny): (usize, usize),
+    r: Option<Rect>,
+) -> impl Iterator<Item = std::ops::Range<usize>> {
+    (0..ny).flat_map(move |j| {
+        let row = nx * j;
+        match r {
+            Some(r) if (r.j0..r.j1).contains(&j) => [row..row + r.i0, row + r.i1..row + nx],
+            _ => [row..row + nx, 0..0],
+        }
+    })
+}
+
 /// Every row outside `r` (all rows if `None`) has a finite, non-zero a_P: its exact solve
 /// needs nothing else (its links are zero, or it is fixed).
 fn check_outside_diagonal(a: &Stencil5, r: Option<Rect>) -> Result<(), LinSolveError> {
-    let nx = a.pattern().nx();
-    for (k, &d) in a.a_p.iter().enumerate() {
-        let (i, j) = (k % nx, k / nx);
-        if r.is_some_and(|r| (r.i0..r.i1).contains(&i) && (r.j0..r.j1).contains(&j)) {
-            continue;
-        }
-        if !d.is_finite() {
-            return Err(LinSolveError::NonFinite {
-                what: "a_p",
-                cell: k,
+    let dims = (a.pattern().nx(), a.pattern().ny());
+    for range in outside_ranges(dims, r) {
+        let start = range.start;
+        if let Some(s) = a.a_p[range]
+            .iter()
+            .position(|d| !d.is_finite() || *d == 0.0)
+        {
+            let cell = start + s;
+            return Err(if a.a_p[cell] == 0.0 {
+                LinSolveError::ZeroDiagonal { cell }
+            } else {
+                LinSolveError::NonFinite { what: "a_p", cell }
             });
-        }
-        if d == 0.0 {
-            return Err(LinSolveError::ZeroDiagonal { cell: k });
         }
     }
     Ok(())
@@ -302,16 +319,19 @@ fn check_outside_diagonal(a: &Stencil5, r: Option<Rect>) -> Result<(), LinSolveE
 
 /// x = b/a_P on every row outside `r` (all rows if `None`).
 fn solve_outside(a: &Stencil5, x: &mut [f64], r: Option<Rect>) -> Result<(), LinSolveError> {
-    let nx = a.pattern().nx();
-    for (k, xk) in x.iter_mut().enumerate() {
-        let (i, j) = (k % nx, k / nx);
-        if r.is_some_and(|r| (r.i0..r.i1).contains(&i) && (r.j0..r.j1).contains(&j)) {
-            continue;
+    let dims = (a.pattern().nx(), a.pattern().ny());
+    for range in outside_ranges(dims, r) {
+        let start = range.start;
+        let (b, d) = (&a.b[range.clone()], &a.a_p[range.clone()]);
+        if let Some(s) = b.iter().position(|b| !b.is_finite()) {
+            return Err(LinSolveError::NonFinite {
+                what: "b",
+                cell: start + s,
+            });
         }
-        if !a.b[k].is_finite() {
-            return Err(LinSolveError::NonFinite { what: "b", cell: k });
+        for ((x, b), d) in x[range].iter_mut().zip(b).zip(d) {
+            *x = b / d;
         }
-        *xk = a.b[k] / a.a_p[k];
     }
     Ok(())
 }
@@ -469,8 +489,21 @@ mod tests {
             j0: 0,
             j1: 3,
         };
-        let a = slide_like(40, 12, inner);
+        let mut a = slide_like(40, 12, inner);
         assert_eq!(coupled_rect(&a), Some(inner));
+        // a fixed row's links are ignored by the solvers and do not count
+        a.a_w[40 * 12 - 1] = 1.0;
+        assert_eq!(coupled_rect(&a), Some(inner));
+        a.a_w[40 * 12 - 2] = 1.0;
+        assert_eq!(
+            coupled_rect(&a),
+            Some(Rect {
+                i0: 5,
+                i1: 39,
+                j0: 0,
+                j1: 12
+            })
+        );
         let mut diag = Stencil5::new(Pattern::new(4, 4).unwrap());
         diag.a_p.iter_mut().for_each(|d| *d = 2.0);
         assert_eq!(coupled_rect(&diag), None);
