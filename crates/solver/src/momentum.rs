@@ -188,8 +188,8 @@ fn both_skipped(skip: Option<&[bool]>, k0: usize, k1: usize) -> bool {
 /// without relaxation (module doc); `old` is the component's velocity at the old time level.
 /// Rows of fixed nodes (wall normal velocities) read 0.
 ///
-/// u and v are one equation, written twice as mirror images ([`assemble_u`],
-/// [`assemble_v`]; the test `v_of_the_transposed_problem_is_u` holds them to it): one
+/// u and v are one equation, written twice as mirror images (`u_faces`/`u_sources` and
+/// `v_faces`/`v_sources`; the test `v_of_the_transposed_problem_is_u` holds them to it): one
 /// assembly over the staggered [`Component`] view gave the same results bit for bit but
 /// cost 6–7 % more CPU on family M (docs/performance.md, session 14), where the issue's
 /// constraint allows 3 %.
@@ -204,27 +204,107 @@ pub fn assemble(
     faces: &mut FaceData,
     a: &mut Stencil5,
 ) {
-    if c.dir == 0 {
-        assemble_u(ctx, phase, u, v, old, faces, a);
-    } else {
-        assemble_v(ctx, phase, u, v, old, faces, a);
-    }
+    let mut fluxes = MassFluxes::default();
+    mass_fluxes(ctx.grid, ctx.scheme, phase.bulk_density, u, v, &mut fluxes);
+    assemble_with_fluxes(ctx, phase, c, u, v, old, &fluxes, faces, a);
 }
 
-/// Assembles the u-momentum system of one phase on the (nx+1) × ny block of x-faces,
-/// without relaxation. Rows of fixed nodes (wall normal velocities) read u = 0.
-fn assemble_u(
+/// [`assemble`] with the phase's scalar-cell mass fluxes `fluxes` of [`mass_fluxes`] at
+/// the same u, v and bulk density, computed once for the u and the v system.
+#[allow(clippy::too_many_arguments)]
+pub fn assemble_with_fluxes(
     ctx: &Context<'_>,
     phase: &PhaseFields<'_>,
+    c: Component,
     u: &[f64],
     v: &[f64],
-    u_old: &[f64],
+    old: &[f64],
+    fluxes: &MassFluxes,
     faces: &mut FaceData,
     a: &mut Stencil5,
 ) {
-    u_faces(ctx, phase, u, v, faces);
-    assemble_masked(faces, u, ctx.scheme, phase.skip, a);
-    u_sources(ctx, phase, u_old, a);
+    if c.dir == 0 {
+        u_faces(ctx, phase, fluxes, faces);
+        assemble_masked(faces, u, ctx.scheme, phase.skip, a);
+        u_sources(ctx, phase, old, a);
+    } else {
+        v_faces(ctx, phase, fluxes, faces);
+        assemble_masked(faces, v, ctx.scheme, phase.skip, a);
+        v_sources(ctx, phase, old, a);
+    }
+}
+
+/// The mass fluxes ρε u A of one phase through every face of the scalar cells, ρε at an
+/// inner face from the convection scheme (docs/model.md §4.2, [`face_value`]) and at a
+/// domain end the inside cell's (an outlet's inflow). A momentum control volume's face
+/// flux is the mean of two of them (module doc): computed once per phase, they serve the
+/// u and the v system, where each is read four times.
+#[derive(Clone, Debug, Default)]
+pub struct MassFluxes {
+    /// through the x-faces, index i + (nx + 1) j (the u-nodes) [kg s⁻¹ per m depth]
+    pub x: Vec<f64>,
+    /// through the y-faces, index i + nx j (the v-nodes) [kg s⁻¹ per m depth]
+    pub y: Vec<f64>,
+}
+
+/// Fills `out` with the mass fluxes of bulk density `rho_eps` and velocities u, v
+/// ([`MassFluxes`]).
+pub fn mass_fluxes(
+    grid: &Grid,
+    scheme: Scheme,
+    rho_eps: &[f64],
+    u: &[f64],
+    v: &[f64],
+    out: &mut MassFluxes,
+) {
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let (dx, dy) = (grid.x.widths(), grid.y.widths());
+    let mx = nx + 1;
+    out.x.resize(mx * ny, 0.0);
+    out.y.resize(nx * (ny + 1), 0.0);
+    for j in 0..ny {
+        let row = nx * j;
+        for i in 0..mx {
+            let vel = u[i + mx * j];
+            let re = if i == 0 {
+                rho_eps[row]
+            } else if i == nx {
+                rho_eps[nx - 1 + row]
+            } else {
+                face_value(
+                    scheme,
+                    rho_eps,
+                    (i >= 2).then(|| i - 2 + row),
+                    i - 1 + row,
+                    i + row,
+                    (i + 1 < nx).then(|| i + 1 + row),
+                    vel,
+                )
+            };
+            out.x[i + mx * j] = re * vel * dy[j];
+        }
+    }
+    for j in 0..=ny {
+        for i in 0..nx {
+            let vel = v[i + nx * j];
+            let re = if j == 0 {
+                rho_eps[i]
+            } else if j == ny {
+                rho_eps[i + nx * (ny - 1)]
+            } else {
+                face_value(
+                    scheme,
+                    rho_eps,
+                    (j >= 2).then(|| i + nx * (j - 2)),
+                    i + nx * (j - 1),
+                    i + nx * j,
+                    (j + 1 < ny).then(|| i + nx * (j + 1)),
+                    vel,
+                )
+            };
+            out.y[i + nx * j] = re * vel * dx[i];
+        }
+    }
 }
 
 /// The u-nodes of a grid: the cells beside each node, the distance weights between them and
@@ -269,36 +349,15 @@ impl UNodes<'_> {
 }
 
 /// The face fluxes and conductances of the u control volumes (module doc).
-fn u_faces(ctx: &Context<'_>, phase: &PhaseFields<'_>, u: &[f64], v: &[f64], faces: &mut FaceData) {
+fn u_faces(ctx: &Context<'_>, phase: &PhaseFields<'_>, fluxes: &MassFluxes, faces: &mut FaceData) {
     let grid = ctx.grid;
     let (nx, ny) = (grid.nx(), grid.ny());
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
     let dyc = grid.y.face_spacing();
     let mx = nx + 1;
-    let rho_eps = phase.bulk_density;
     let mu = phase.viscosity;
-    // scalar-cell x-face mass flux at u-node (i, j), ρε upwind (zero on the domain ends
-    // unless the node is an outlet, where the inside cell supplies ρε)
-    let x_face_flux = |i: usize, j: usize| -> f64 {
-        let vel = u[i + mx * j];
-        let re = if i == 0 {
-            rho_eps[nx * j]
-        } else if i == nx {
-            rho_eps[nx - 1 + nx * j]
-        } else {
-            let row = nx * j;
-            face_value(
-                ctx.scheme,
-                rho_eps,
-                (i >= 2).then(|| i - 2 + row),
-                i - 1 + row,
-                i + row,
-                (i + 1 < nx).then(|| i + 1 + row),
-                vel,
-            )
-        };
-        re * vel * dy[j]
-    };
+    // scalar-cell x-face mass flux at u-node (i, j)
+    let x_face_flux = |i: usize, j: usize| fluxes.x[i + mx * j];
     let nodes = UNodes {
         grid,
         periodic: ctx.grid.periodic_x(),
@@ -307,19 +366,7 @@ fn u_faces(ctx: &Context<'_>, phase: &PhaseFields<'_>, u: &[f64], v: &[f64], fac
     let x_weight = |w: usize, e: usize| nodes.x_weight(w, e);
     let width = |i: usize| nodes.width(i);
     // scalar-cell y-face mass flux at v-node (i, j), 1 ≤ j < ny
-    let y_face_flux = |i: usize, j: usize| -> f64 {
-        let vel = v[i + nx * j];
-        face_value(
-            ctx.scheme,
-            rho_eps,
-            (j >= 2).then(|| i + nx * (j - 2)),
-            i + nx * (j - 1),
-            i + nx * j,
-            (j + 1 < ny).then(|| i + nx * (j + 1)),
-            vel,
-        ) * vel
-            * dx[i]
-    };
+    let y_face_flux = |i: usize, j: usize| fluxes.y[i + nx * j];
     for j in 0..ny {
         for i in 1..=nx {
             // u-CV x-face at cell centre i−1, between u-nodes i−1 and i
@@ -466,64 +513,17 @@ fn u_sources(ctx: &Context<'_>, phase: &PhaseFields<'_>, u_old: &[f64], a: &mut 
     }
 }
 
-/// Assembles the v-momentum system of one phase on the nx × (ny+1) block of y-faces,
-/// without relaxation (the mirror of [`assemble_u`]).
-fn assemble_v(
-    ctx: &Context<'_>,
-    phase: &PhaseFields<'_>,
-    u: &[f64],
-    v: &[f64],
-    v_old: &[f64],
-    faces: &mut FaceData,
-    a: &mut Stencil5,
-) {
-    v_faces(ctx, phase, u, v, faces);
-    assemble_masked(faces, v, ctx.scheme, phase.skip, a);
-    v_sources(ctx, phase, v_old, a);
-}
-
 /// The face fluxes and conductances of the v control volumes (module doc).
-fn v_faces(ctx: &Context<'_>, phase: &PhaseFields<'_>, u: &[f64], v: &[f64], faces: &mut FaceData) {
+fn v_faces(ctx: &Context<'_>, phase: &PhaseFields<'_>, fluxes: &MassFluxes, faces: &mut FaceData) {
     let grid = ctx.grid;
     let (nx, ny) = (grid.nx(), grid.ny());
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
     let dxc = grid.x.face_spacing();
     let my = ny + 1;
-    let rho_eps = phase.bulk_density;
     let mu = phase.viscosity;
-    let y_face_flux = |i: usize, j: usize| -> f64 {
-        let vel = v[i + nx * j];
-        let re = if j == 0 {
-            rho_eps[i]
-        } else if j == ny {
-            rho_eps[i + nx * (ny - 1)]
-        } else {
-            face_value(
-                ctx.scheme,
-                rho_eps,
-                (j >= 2).then(|| i + nx * (j - 2)),
-                i + nx * (j - 1),
-                i + nx * j,
-                (j + 1 < ny).then(|| i + nx * (j + 1)),
-                vel,
-            )
-        };
-        re * vel * dx[i]
-    };
-    let x_face_flux = |i: usize, j: usize| -> f64 {
-        let vel = u[i + (nx + 1) * j];
-        let row = nx * j;
-        face_value(
-            ctx.scheme,
-            rho_eps,
-            (i >= 2).then(|| i - 2 + row),
-            i - 1 + row,
-            i + row,
-            (i + 1 < nx).then(|| i + 1 + row),
-            vel,
-        ) * vel
-            * dy[j]
-    };
+    // scalar-cell y-face and x-face mass fluxes ([`MassFluxes`])
+    let y_face_flux = |i: usize, j: usize| fluxes.y[i + nx * j];
+    let x_face_flux = |i: usize, j: usize| fluxes.x[i + (nx + 1) * j];
     for j in 0..my {
         for i in 1..nx {
             // v-CV x-face at x-face i: halves of the two adjacent rows' u-face fluxes

@@ -31,7 +31,9 @@ use super::{
     lin, PhaseCoefficients, PhaseState, PhaseWallClosures, PhaseWork, SolidsSpec, State,
     TwoFluidError, Workspace, MAX_SOLIDS_PHASES,
 };
-use crate::momentum::{assemble, fixed_row, neighbour_sum, Context, PhaseFields};
+use crate::momentum::{
+    assemble_with_fluxes, fixed_row, mass_fluxes, neighbour_sum, Context, MassFluxes, PhaseFields,
+};
 use crate::pea::eliminate_node;
 use crate::staggered::Component;
 
@@ -118,14 +120,46 @@ fn assemble_momentum(
     let (u_g, v_g) = (&g.u, &g.v);
     let (u_faces, a_u) = (&mut work.u_faces, &mut work.a_ug);
     let (v_faces, a_v) = (&mut work.v_faces, &mut work.a_vg);
+    let gas_fluxes = &mut work.gas_fluxes;
     let (ctx_gas, gas_fields) = (&ctx_gas, &gas_fields);
     // every system has its own face data and rows: the gas's u and v and each phase's run
     // in parallel, each as it would alone (the same results on any number of threads)
     let solids = work.solids.iter_mut().zip(state.phases()).zip(coefficients);
     let solids = solids.zip(wall_closures).zip(&model.solids_specs);
     rayon::scope(|scope| {
-        scope.spawn(move |_| assemble(ctx_gas, gas_fields, cu, u_g, v_g, &g.old().u, u_faces, a_u));
-        scope.spawn(move |_| assemble(ctx_gas, gas_fields, cv, u_g, v_g, &g.old().v, v_faces, a_v));
+        scope.spawn(move |_| {
+            let rho_eps = gas_fields.bulk_density;
+            mass_fluxes(grid, ctx_gas.scheme, rho_eps, u_g, v_g, gas_fluxes);
+            let fluxes = &*gas_fluxes;
+            rayon::join(
+                || {
+                    assemble_with_fluxes(
+                        ctx_gas,
+                        gas_fields,
+                        cu,
+                        u_g,
+                        v_g,
+                        &g.old().u,
+                        fluxes,
+                        u_faces,
+                        a_u,
+                    )
+                },
+                || {
+                    assemble_with_fluxes(
+                        ctx_gas,
+                        gas_fields,
+                        cv,
+                        u_g,
+                        v_g,
+                        &g.old().v,
+                        fluxes,
+                        v_faces,
+                        a_v,
+                    )
+                },
+            );
+        });
         for ((((s, p), coef), w), spec) in solids {
             let phase = SolidsPhase {
                 phase: p,
@@ -291,9 +325,11 @@ fn assemble_phase(
     };
     let (u_faces, a_u, v_faces, a_v) = (&mut s.u_faces, &mut s.a_u, &mut s.v_faces, &mut s.a_v);
     let (u, v) = (&p.u, &p.v);
+    mass_fluxes(ctx.grid, ctx.scheme, p.bulk_density(), u, v, &mut s.fluxes);
+    let fluxes: &MassFluxes = &s.fluxes;
     rayon::join(
-        || assemble(&ctx, &fields_u, cu, u, v, &p.old().u, u_faces, a_u),
-        || assemble(&ctx, &fields_v, cv, u, v, &p.old().v, v_faces, a_v),
+        || assemble_with_fluxes(&ctx, &fields_u, cu, u, v, &p.old().u, fluxes, u_faces, a_u),
+        || assemble_with_fluxes(&ctx, &fields_v, cv, u, v, &p.old().v, fluxes, v_faces, a_v),
     );
 }
 

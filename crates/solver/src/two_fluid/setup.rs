@@ -66,6 +66,7 @@ impl TwoFluid {
                 u_faces: FaceData::zeros(nx + 1, ny),
                 v_faces: FaceData::zeros(nx, ny + 1),
                 c_faces: FaceData::zeros(nx, ny),
+                gas_fluxes: Default::default(),
                 a_ug: Stencil5::new(pu),
                 a_vg: Stencil5::new(pv),
                 a_p: Stencil5::new(pp),

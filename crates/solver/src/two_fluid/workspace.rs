@@ -6,6 +6,7 @@
 
 use runout_linsolve::{LinearSolver, Pattern, Stencil5};
 
+use crate::momentum::MassFluxes;
 use crate::transport::FaceData;
 
 /// The work storage of the solver (module doc).
@@ -22,6 +23,8 @@ pub(crate) struct Workspace {
     pub u_faces: FaceData,
     pub v_faces: FaceData,
     pub c_faces: FaceData,
+    /// the gas's scalar-cell mass fluxes of the momentum assembly (shared by u and v)
+    pub gas_fluxes: MassFluxes,
     /// the gas u, v and P' equations
     pub a_ug: Stencil5,
     pub a_vg: Stencil5,
@@ -72,6 +75,8 @@ pub(crate) struct PhaseWork {
     /// phases' momentum equations are assembled in parallel)
     pub u_faces: FaceData,
     pub v_faces: FaceData,
+    /// the phase's scalar-cell mass fluxes of the momentum assembly (shared by u and v)
+    pub fluxes: MassFluxes,
     /// dilute u and v faces of the current momentum assembly (docs/model.md §2.7)
     pub dilute_u: Vec<bool>,
     pub dilute_v: Vec<bool>,
@@ -101,6 +106,7 @@ impl PhaseWork {
         PhaseWork {
             u_faces: FaceData::zeros(nx + 1, ny),
             v_faces: FaceData::zeros(nx, ny + 1),
+            fluxes: MassFluxes::default(),
             dilute_u: vec![false; (nx + 1) * ny],
             dilute_v: vec![false; nx * (ny + 1)],
             e_u: vec![0.0; (nx + 1) * ny],
