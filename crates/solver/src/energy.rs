@@ -15,7 +15,7 @@ use runout_mesh::{Grid, Sides};
 use runout_walls::RobinFace;
 
 use crate::momentum::WallFaces;
-use crate::transport::{assemble, FaceData, Scheme};
+use crate::transport::{assemble_masked, FaceData, Scheme};
 use runout_linsolve::for_each_row;
 
 /// Per-cell inputs of the granular-energy equation, evaluated by the caller from the
@@ -44,6 +44,9 @@ pub struct EnergyInputs<'a> {
     pub tr_d: &'a [f64],
     /// tr(D²) of the solids [s⁻²]
     pub tr_d2: &'a [f64],
+    /// cells whose rows the caller replaces (the dilute cells of the two-fluid model,
+    /// docs/model.md §4.8): their rows are left as they are; `None`: every row
+    pub skip: Option<&'a [bool]>,
 }
 
 /// Assembles the θ equation (without relaxation) into `a`, given the solids face velocities
@@ -68,11 +71,14 @@ pub fn assemble_theta(
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
     let kappa = inputs.conductivity;
     face_fluxes_and_conductances(grid, inputs, u, v, faces);
-    assemble(faces, theta, scheme, a);
+    assemble_masked(faces, theta, scheme, inputs.skip, a);
     // the sources of each cell's own row, rows in parallel
     a.par_fill_rows(|j, row| {
         for i in 0..nx {
             let k = i + nx * j;
+            if inputs.skip.is_some_and(|s| s[k]) {
+                continue;
+            }
             let volume = dx[i] * dy[j];
             // wall faces: θ closure with the fluid cell's conductivity (docs/model.md §3.1)
             let cell_face =

@@ -47,6 +47,7 @@ fn steady_conduction_with_flux_and_dirichlet_walls_is_exact() {
         slip_production: &zeros,
         tr_d: &zeros,
         tr_d2: &zeros,
+        skip: None,
     };
     let pattern = Pattern::new(nx, ny).unwrap();
     let mut a = Stencil5::new(pattern.clone());

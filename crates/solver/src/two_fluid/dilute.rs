@@ -52,27 +52,25 @@ pub(super) fn dilute_faces(
     }
 }
 
-/// The row of a dilute solids velocity node k (docs/model.md §2.7, MFIX `source_u_s.f`): the
-/// mean of its neighbour nodes whose test cell — the neighbour of the node's low-side cell
-/// `cell` in that direction (MFIX's IJK) — holds εs > DIL_EP_S, and of its own current
-/// value; with no such neighbour the node keeps `current`. Neighbours on fixed (wall) nodes do not count. `(mx, my)` is
-/// the node block, `nx` the cells per row.
+/// The row of a dilute solids velocity node (i, j) of component `c` (docs/model.md §2.7,
+/// MFIX `source_u_s.f`): the mean of its neighbour nodes whose test cell — the neighbour of
+/// the node's low-side cell `cell` = (ci, cj) in that direction (MFIX's IJK) — holds
+/// εs > DIL_EP_S, and of its own current value; with no such neighbour the node keeps
+/// `current`. Neighbours on fixed (wall) nodes do not count.
 pub(super) fn dilute_row(
     a: &mut Stencil5,
-    k: usize,
+    c: Component,
+    (i, j): (usize, usize),
     current: f64,
-    cell: Option<usize>,
+    cell: Option<(usize, usize)>,
     eps: &[f64],
-    (mx, my): (usize, usize),
-    nx: usize,
 ) {
-    let ny = eps.len() / nx;
-    let (i, j) = (k % mx, k / mx);
+    let (mx, my, nx, ny) = (c.mx, c.my, c.nx, c.ny);
+    let k = i + mx * j;
     fixed_row(a, k, current);
-    let Some(c) = cell else {
+    let Some((ci, cj)) = cell else {
         return;
     };
-    let (ci, cj) = (c % nx, c / nx);
     let dense = |ti: Option<usize>, tj: Option<usize>| match (ti, tj) {
         (Some(ti), Some(tj)) if ti < nx && tj < ny => eps[ti + nx * tj] > DIL_EP_S,
         _ => false,

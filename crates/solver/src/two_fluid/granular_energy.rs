@@ -47,6 +47,8 @@ pub(super) fn granular_energy(
     let solids = work.solids.iter_mut().zip(phases).zip(coefficients);
     let solids = solids.zip(wall_closures).zip(&model.solids_specs);
     for ((((s, p), coef), w), spec) in solids {
+        // the class of each row first: the dilute rows are not assembled (replaced below)
+        classify_rows(p.eps(), s, freeze);
         let inputs = EnergyInputs {
             bulk_density: p.bulk_density(),
             bulk_density_old: &p.old().rho_eps,
@@ -59,6 +61,7 @@ pub(super) fn granular_energy(
             slip_production: &coef.j_slip,
             tr_d: &coef.tr_d,
             tr_d2: &coef.tr_d2,
+            skip: Some(&s.theta_dilute),
         };
         assemble_theta(
             &model.grid,
@@ -77,7 +80,6 @@ pub(super) fn granular_energy(
         if model.sidewalls.is_some() {
             add_theta_flux(&model.grid, &coef.sidewall, &mut s.a_theta); // docs/model.md §8
         }
-        classify_rows(p.eps(), s, freeze);
         // θ = θ_small where εg < εg* if the friction model pins it (docs/model.md §1.3)
         let eps_g_star = spec
             .params
@@ -124,6 +126,7 @@ fn classify_rows(eps: &[f64], s: &mut PhaseWork, freeze: bool) {
             s.theta_dense[k] = dense_now;
             s.theta_class_changes[k] = 0;
         }
+        s.theta_dilute[k] = !s.theta_dense[k];
     }
 }
 

@@ -455,7 +455,7 @@ fn eliminate_drag(
                 }
             }
             let area = c.face_area(i, j, dx, dy);
-            decouple(c, k, area, relax, &node, gas, solids);
+            decouple(c, (i, j), area, relax, &node, gas, solids);
         }
     }
     if den > 0.0 {
@@ -514,11 +514,11 @@ fn gather(
     node
 }
 
-/// Replaces the rows of node k by the decoupled, relaxed rows of the partial elimination
-/// and stores d_g and e_s (module doc); a dilute solids node gets its dilute row.
+/// Replaces the rows of node (i, j) by the decoupled, relaxed rows of the partial
+/// elimination and stores d_g and e_s (module doc); a dilute solids node gets its dilute row.
 fn decouple(
     c: Component,
-    k: usize,
+    (i, j): (usize, usize),
     area: f64,
     relax: f64,
     node: &CoupledNode,
@@ -526,8 +526,12 @@ fn decouple(
     solids: &mut [SolidsComponent<'_>],
 ) {
     let m = solids.len();
+    let k = i + c.mx * j;
     let (a_in, r_in, drag) = (&node.a_in, &node.r_in, &node.drag);
     let (c0, c1) = node.cells;
+    // the low-side cell of the node as (ci, cj), the high-side one at the low boundary
+    let [lo, hi] = c.cells(i, j, true);
+    let low_cell = lo.or(hi);
     let (mut a_out, mut r_out) = ([0.0; MAX_SOLIDS_PHASES + 1], [0.0; MAX_SOLIDS_PHASES + 1]);
     eliminate_node(
         &a_in[..=m],
@@ -550,7 +554,7 @@ fn decouple(
         numerator += eps_face_s * f / (a_s + f);
         denominator += f * a_s / (a_s + f);
         if node.dilute[p] {
-            dilute_row(sc.a, k, phi[k], c0.or(c1), eps, (c.mx, c.my), c.nx);
+            dilute_row(sc.a, c, (i, j), phi[k], low_cell, eps);
             sc.e[k] = 0.0;
             continue;
         }
@@ -639,7 +643,7 @@ mod tests {
         let c = Component::u(nx, ny, false);
         let coef = PhaseCoefficients::new((nx, ny));
         let [su, _] = solids.components(&state.phases()[0], &coef);
-        decouple(c, 1, area, relax, &node, &mut gas, &mut [su]);
+        decouple(c, (1, 0), area, relax, &node, &mut gas, &mut [su]);
         let (ag, as_) = (a_gas / relax, a_s / relax);
         let d_expected = area * (0.5 + 0.5 * f / (as_ + f)) / (ag + f * as_ / (as_ + f));
         assert!((d[1] - d_expected).abs() < 1e-15 * d_expected);

@@ -97,6 +97,8 @@ pub(crate) struct PhaseWork {
     /// often it changed within the step ([`super::TwoFluidSettings::freeze_cycling_dilute_class`])
     pub theta_dense: Vec<bool>,
     pub theta_class_changes: Vec<u8>,
+    /// the negation of `theta_dense`: the rows the θ assembly skips
+    pub theta_dilute: Vec<bool>,
 }
 
 impl PhaseWork {
@@ -119,6 +121,7 @@ impl PhaseWork {
             a_theta: Stencil5::new(pc.clone()),
             theta_dense: vec![false; n],
             theta_class_changes: vec![0; n],
+            theta_dilute: vec![true; n],
         }
     }
 }

@@ -108,6 +108,7 @@ pub fn cool(t_end: f64, steps: usize) -> anyhow::Result<Vec<f64>> {
                 slip_production: &zeros,
                 tr_d: &zeros,
                 tr_d2: &zeros,
+                skip: None,
             };
             assemble_theta(
                 &grid,
