@@ -763,6 +763,7 @@ mod tests {
             steps: 3,
             rejected_steps: 0,
             outer_iterations: 9,
+            rejected_outer_iterations: 0,
             dt: DtStats {
                 min: 0.1,
                 max: 0.5,

@@ -57,6 +57,10 @@ pub struct RunSummary {
     pub rejected_steps: u64,
     /// total outer iterations of accepted steps
     pub outer_iterations: u64,
+    /// outer iterations spent on rejected steps (left out of `outer_iterations`; a step
+    /// undone by a solver error counts none): with them, the run's whole iteration work
+    #[serde(default)]
+    pub rejected_outer_iterations: u64,
     /// Δt statistics
     pub dt: DtStats,
     /// relative change of the total solids mass over the run [-]

@@ -135,6 +135,7 @@ fn summary_round_trips() {
         steps: 100,
         rejected_steps: 2,
         outer_iterations: 900,
+        rejected_outer_iterations: 12,
         dt: DtStats {
             min: 1e-4,
             max: 1e-3,
@@ -153,4 +154,15 @@ fn summary_round_trips() {
     s.write_json(&path).unwrap();
     let back: RunSummary = serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
     assert_eq!(back, s);
+}
+
+/// A summary written before `rejected_outer_iterations` existed still reads, with 0.
+#[test]
+fn an_older_summary_without_rejected_iterations_reads() {
+    let old = r#"{"case": "M-JJ", "fidelity": "smoke", "cells": [40, 10], "simulated_time": 0.1,
+        "wall_time": 1.5, "steps": 100, "rejected_steps": 2, "outer_iterations": 900,
+        "dt": {"min": 1e-4, "max": 1e-3, "mean": 5e-4}, "solids_mass_change": 0.0,
+        "max_mass_imbalance": 0.0, "status": "Completed"}"#;
+    let s: RunSummary = serde_json::from_str(old).unwrap();
+    assert_eq!((s.outer_iterations, s.rejected_outer_iterations), (900, 0));
 }

@@ -37,6 +37,7 @@ pub fn write_run(runs: &Path, case: &str, fidelity: &str, end_time: f64, files: 
         steps: 10,
         rejected_steps: 0,
         outer_iterations: 50,
+        rejected_outer_iterations: 0,
         dt: DtStats {
             min: 1e-3,
             max: 1e-3,

@@ -296,6 +296,7 @@ fn start_fresh(
         steps: 0,
         rejected_steps: 0,
         outer_iterations: 0,
+        rejected_outer_iterations: 0,
         dt: DtStats {
             min: f64::INFINITY,
             max: 0.0,
@@ -470,6 +471,7 @@ fn time_loop(
         let outcome = attempt_step(solver, time, step_dt, run);
         if !outcome.converged {
             standing.summary.rejected_steps += 1;
+            standing.summary.rejected_outer_iterations += outcome.iterations as u64;
             // a step shortened to land on the end time is retried shorter than itself
             if shortened {
                 standing.dt.shorten_to(step_dt);

@@ -104,6 +104,8 @@ fn a_solver_error_is_a_failed_step_retried_with_a_smaller_dt() {
     let s = run(&case, &mut solver, "error");
     assert_eq!(s.status, RunStatus::Completed);
     assert_eq!(s.rejected_steps, 2);
+    // a step undone by a solver error reports no outer iterations
+    assert_eq!(s.rejected_outer_iterations, 0);
     // the first accepted step ran at dt_initial × 0.9² (the smallest of the run)
     assert!((s.dt.min - 0.01 * 0.9 * 0.9).abs() < 1e-15, "{:?}", s.dt);
 }
@@ -127,6 +129,9 @@ fn a_step_cut_to_the_end_time_shrinks_when_it_fails() {
         s.rejected_steps, 1,
         "one retry, not one per halving of 0.01 s"
     );
+    // the rejected step's 3 outer iterations are counted apart from the accepted ones
+    assert_eq!(s.rejected_outer_iterations, 3);
+    assert_eq!(s.outer_iterations, 3 * s.steps);
     // a solver that never converges stops after the retries of the cut step alone
     let mut never = Flaky {
         grid: case.grid().unwrap(),

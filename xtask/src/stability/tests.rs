@@ -106,6 +106,7 @@ fn nan_or_a_panic_fails_the_suite_and_a_diagnosed_stop_does_not() {
         steps: 10,
         rejected_steps: 0,
         outer_iterations: 100,
+        rejected_outer_iterations: 0,
         dt: runout_output::DtStats {
             min: 1e-3,
             max: 1e-2,
