@@ -253,19 +253,30 @@ fn speedups(rows: &[Row]) -> Vec<String> {
     lines
 }
 
-/// S-JJ-phi φ = 0.1 at the paper grid over [after, after + span] from a kept checkpoint.
-fn paper_window(root: &Path, opts: &Options, rows: &mut Vec<Row>) -> Result<()> {
+/// S-JJ-phi φ = 0.1, the case of the paper-grid rows, at the paper fidelity (smoke with
+/// `--smoke`).
+fn s_jj_phi(root: &Path, opts: &Options) -> Result<(Case, Fidelity)> {
     let base = load_case(
         root,
         "cases/sensitivity/S-JJ-phi.ron",
         Some("S-JJ-phi_phi=0.1"),
     )?;
-    let (fidelity, after, span) = if opts.smoke {
-        (Fidelity::Smoke, 0.22, 0.01)
+    let fidelity = if opts.smoke {
+        Fidelity::Smoke
     } else {
-        (Fidelity::Paper, opts.after, opts.span)
+        Fidelity::Paper
     };
-    let mut case = base.at_fidelity(fidelity);
+    Ok((base.at_fidelity(fidelity), fidelity))
+}
+
+/// S-JJ-phi φ = 0.1 at the paper grid over [after, after + span] from a kept checkpoint.
+fn paper_window(root: &Path, opts: &Options, rows: &mut Vec<Row>) -> Result<()> {
+    let (mut case, fidelity) = s_jj_phi(root, opts)?;
+    let (after, span) = if opts.smoke {
+        (0.22, 0.01)
+    } else {
+        (opts.after, opts.span)
+    };
     // the window's case: its checkpoint at `after` and the window both run it
     case.run.end_time = after + span;
     let start = root.join(format!("runs/bench/S-JJ-phi-{}-t{after}", fidelity.name()));
@@ -338,23 +349,15 @@ fn paper_window(root: &Path, opts: &Options, rows: &mut Vec<Row>) -> Result<()> 
 
 /// Wall time target of issue 22 for S-JJ-phi's whole paper-grid run on two threads [s].
 const PAPER_FULL_TARGET_WALL: f64 = 30.0 * 60.0;
+/// The end of the whole-run row's label, by which the target line finds it.
+const WHOLE_RUN: &str = "whole run";
 
 /// S-JJ-phi φ = 0.1's whole run at the paper grid (or smoke with `--smoke`) on 2 threads,
 /// from t = 0 to the case's end (the paper's t = 1.25 s after the impact).
 fn paper_full(root: &Path, opts: &Options, rows: &mut Vec<Row>) -> Result<()> {
-    let base = load_case(
-        root,
-        "cases/sensitivity/S-JJ-phi.ron",
-        Some("S-JJ-phi_phi=0.1"),
-    )?;
-    let fidelity = if opts.smoke {
-        Fidelity::Smoke
-    } else {
-        Fidelity::Paper
-    };
-    let case = base.at_fidelity(fidelity);
+    let (case, fidelity) = s_jj_phi(root, opts)?;
     let dir = root.join(format!("runs/bench/S-JJ-phi-{}-full", fidelity.name()));
-    let what = format!("S-JJ-phi φ = 0.1 {fidelity} grid, whole run");
+    let what = format!("S-JJ-phi φ = 0.1 {fidelity} grid, {WHOLE_RUN}");
     let row = timed(what, &case, 2, &dir, false, case.run.end_time)?;
     // the case's end time is on the paper's clock (from the impact); per simulated second
     // counts the run's own clock, which ends later
@@ -461,7 +464,7 @@ pub fn run(root: &Path, args: &[String]) -> Result<()> {
     }
     if let Some(full) = rows
         .iter()
-        .find(|r| !opts.smoke && r.what.ends_with("whole run"))
+        .find(|r| !opts.smoke && r.what.ends_with(WHOLE_RUN))
     {
         println!(
             "S-JJ-phi φ = 0.1 whole run ({} cells, t = {:.4} s of the run, {:?}): {:.1} min wall on 2 threads; issue 22's target {:.0} min: {}",
