@@ -1,10 +1,15 @@
 //! Vector kernels shared by the iterative solvers.
 //!
-//! Above [`PAR_MIN_LEN`] entries the loops run on rayon. Reductions are split into at most
-//! [`N_PARTIALS`] fixed chunks whose partial sums are added in a fixed order, so a dot
-//! product gives the same bits on every run regardless of work stealing.
+//! Each kernel runs its loop on a [`Team`]: rayon above [`PAR_MIN_LEN`] entries outside a
+//! multigrid solve, the solve's spinning team above [`crate::team::TEAM_MIN_LEN`] inside
+//! one. Reductions are split into at most [`N_PARTIALS`] fixed chunks (their length a
+//! function of the vector's length and the kind of team, never of the number of threads)
+//! whose partial sums are added in a fixed order, so a dot product gives the same bits on
+//! every run regardless of work stealing.
 
 use rayon::prelude::*;
+
+use crate::team::Team;
 
 /// Vectors shorter than this are processed serially (rayon's fork/join overhead of a few
 /// microseconds exceeds the work below about 16k entries).
@@ -15,6 +20,17 @@ const N_PARTIALS: usize = 32;
 
 fn chunk_len(n: usize) -> usize {
     n.div_ceil(N_PARTIALS).max(1)
+}
+
+/// The fixed chunk length of a loop of `n` entries by `team`: [`N_PARTIALS`] chunks on
+/// rayon, chunks of at least the team's [`Team::min_chunk`] with a team (a function of n
+/// alone, so the partial sums are the same on any number of threads).
+fn chunk_len_on(team: &Team<'_>, n: usize) -> usize {
+    if team.is_rayon() {
+        chunk_len(n)
+    } else {
+        chunk_len(n).max(team.min_chunk())
+    }
 }
 
 #[inline]
@@ -40,17 +56,22 @@ fn dot_serial(x: &[f64], y: &[f64]) -> f64 {
 
 /// x · y, deterministic.
 pub(crate) fn dot(x: &[f64], y: &[f64]) -> f64 {
+    dot_on(&Team::RAYON, x, y)
+}
+
+/// x · y by `team`: fixed chunks whose partial sums are added in order (module doc).
+pub(crate) fn dot_on(team: &Team<'_>, x: &[f64], y: &[f64]) -> f64 {
     debug_assert_eq!(x.len(), y.len());
     let n = x.len();
-    if n < PAR_MIN_LEN {
+    if n < team.min_len() {
         return dot_serial(x, y);
     }
-    let c = chunk_len(n);
+    let c = chunk_len_on(team, n);
     let mut partial = [0.0f64; N_PARTIALS];
-    partial
-        .par_iter_mut()
-        .zip(x.par_chunks(c).zip(y.par_chunks(c)))
-        .for_each(|(p, (a, b))| *p = dot_serial(a, b));
+    team.for_each_chunk_mut(&mut partial[..n.div_ceil(c)], 1, |i, p| {
+        let r = i * c..((i + 1) * c).min(n);
+        p[0] = dot_serial(&x[r.clone()], &y[r]);
+    });
     partial.iter().sum()
 }
 
@@ -59,17 +80,30 @@ pub(crate) fn norm2(x: &[f64]) -> f64 {
     dot(x, x).sqrt()
 }
 
-/// Applies `f(i, &mut y_i)` to every entry, in parallel above [`PAR_MIN_LEN`].
+/// ‖x‖₂ by `team`.
+pub(crate) fn norm2_on(team: &Team<'_>, x: &[f64]) -> f64 {
+    dot_on(team, x, x).sqrt()
+}
+
+/// Applies `f(i, &mut y_i)` to every entry, on rayon from [`PAR_MIN_LEN`] entries.
 pub(crate) fn for_each_indexed<F>(y: &mut [f64], f: F)
 where
     F: Fn(usize, &mut f64) + Sync + Send,
 {
+    for_each_indexed_on(&Team::RAYON, y, f);
+}
+
+/// [`for_each_indexed`] by `team`.
+pub(crate) fn for_each_indexed_on<F>(team: &Team<'_>, y: &mut [f64], f: F)
+where
+    F: Fn(usize, &mut f64) + Sync + Send,
+{
     let n = y.len();
-    if n < PAR_MIN_LEN {
+    if n < team.min_len() {
         y.iter_mut().enumerate().for_each(|(i, v)| f(i, v));
     } else {
-        let c = chunk_len(n);
-        y.par_chunks_mut(c).enumerate().for_each(|(ci, chunk)| {
+        let c = chunk_len_on(team, n);
+        team.for_each_chunk_mut(y, c, |ci, chunk| {
             let base = ci * c;
             chunk
                 .iter_mut()
@@ -81,7 +115,12 @@ where
 
 /// y ← y + α x.
 pub(crate) fn axpy(alpha: f64, x: &[f64], y: &mut [f64]) {
-    for_each_indexed(y, |i, v| *v += alpha * x[i]);
+    axpy_on(&Team::RAYON, alpha, x, y);
+}
+
+/// y ← y + α x by `team`.
+pub(crate) fn axpy_on(team: &Team<'_>, alpha: f64, x: &[f64], y: &mut [f64]) {
+    for_each_indexed_on(team, y, |i, v| *v += alpha * x[i]);
 }
 
 /// The exponent bits of an f64: all set exactly for ±∞ and NaN.

@@ -67,6 +67,7 @@ mod multigrid;
 mod precond;
 pub mod problems;
 mod stencil;
+mod team;
 
 use std::time::Duration;
 

@@ -17,13 +17,16 @@
 //!   level-independent convergence at about twice the coarse work. The outer iteration
 //!   is flexible CG (Notay 2000, FCG(1)), because the K-cycle is not a fixed linear map.
 //! * **Coarsest level** (≤ `coarsest_max_cells`): dense LU with partial pivoting.
+//! * **Threads**: a whole flexible-CG solve (a preconditioner application under BiCGSTAB)
+//!   runs on one [`Team`], which keeps the pool's threads awake through the coarse levels'
+//!   short sweeps; every loop's chunks are fixed by the level's size, so the result is the
+//!   same on any number of threads.
 
 use std::time::{Duration, Instant};
 
-use rayon::prelude::*;
-
-use crate::kernels::{axpy, dot, for_each_indexed, norm2, SharedMut, PAR_MIN_LEN};
-use crate::stencil::{apply5, check_len, reduced_rhs, residual5, rows_per_task, Op5};
+use crate::kernels::{axpy_on, dot_on, for_each_indexed_on, norm2_on, SharedMut};
+use crate::stencil::{apply5_on, check_len, for_each_row_on, reduced_rhs, residual5_on, Op5};
+use crate::team::Team;
 use crate::{check_rtol, LinSolveError, LinearSolver, Pattern, SolveStats, Stencil5};
 
 /// Multigrid cycle type.
@@ -60,14 +63,9 @@ impl Default for MultigridParams {
     }
 }
 
-/// Levels with fewer cells smooth their x lines serially. A line solve costs several times a
-/// vector update per cell, so its half-sweeps pay for rayon's fork/join (a few µs) on
-/// smaller levels than [`PAR_MIN_LEN`] (the coarse levels of a 40k-cell grid); the y-line
-/// blocks keep [`PAR_MIN_LEN`] (narrower blocks cost more than they saved,
-/// docs/performance.md, session 15).
+/// Levels with fewer cells factor their x and y lines in one task, larger ones in two
+/// (the set-up runs on rayon, outside the solve's team).
 const LINES_PAR_MIN_CELLS: usize = 1 << 12;
-/// Cells of one half-sweep below which its lines are not split further between tasks.
-const LINES_PER_TASK_CELLS: usize = 1 << 10;
 
 /// One grid level with its operator, line factorisations and work vectors.
 struct Level {
@@ -142,7 +140,7 @@ impl Level {
 
     /// Block Gauss–Seidel on the x lines j ≡ colour (mod 2). Lines of one colour only read
     /// lines of the other colour, so they are solved in parallel.
-    fn x_lines(&mut self, colour: usize) {
+    fn x_lines(&mut self, colour: usize, team: &Team<'_>) {
         let (nx, ny) = (self.op.nx, self.op.ny);
         let n_lines = (ny + 1 - colour.min(ny)) / 2;
         let x = SharedMut(self.sol.as_mut_ptr());
@@ -150,14 +148,14 @@ impl Level {
         // SAFETY: line j writes only row j (colour c) and reads rows j ± 1 (the other
         // colour), which no task writes during this half-sweep; all indices are < nx·ny.
         let line = |m: usize| unsafe { this.x_line(colour + 2 * m, x) };
-        if nx * ny < LINES_PAR_MIN_CELLS {
-            (0..n_lines).for_each(line);
+        let per_chunk = if nx * ny < team.min_len() {
+            n_lines.max(1)
         } else {
-            (0..n_lines)
-                .into_par_iter()
-                .with_min_len((LINES_PER_TASK_CELLS / nx).max(1))
-                .for_each(line);
-        }
+            (team.min_chunk() / nx).max(1)
+        };
+        team.for_each(n_lines.div_ceil(per_chunk), |c| {
+            (c * per_chunk..((c + 1) * per_chunk).min(n_lines)).for_each(line)
+        });
     }
 
     /// # Safety
@@ -195,21 +193,21 @@ impl Level {
 
     /// Block Gauss–Seidel on the y lines i ≡ colour (mod 2), all lines of a block of
     /// columns advanced together row by row; blocks run in parallel.
-    fn y_lines(&mut self, colour: usize) {
+    fn y_lines(&mut self, colour: usize, team: &Team<'_>) {
         let (nx, ny) = (self.op.nx, self.op.ny);
         let x = SharedMut(self.sol.as_mut_ptr());
         let this = &*self;
         // SAFETY: a block writes only its own columns of colour c and reads columns of the
         // other colour, which no task writes during this half-sweep.
         let block = |i0: usize, i1: usize| unsafe { this.y_block(colour, i0, i1, x) };
-        if nx * ny < PAR_MIN_LEN {
+        if nx * ny < team.min_len() {
             block(0, nx);
         } else {
             // even block width keeps the colour pattern identical in every block
-            let width = 2 * (nx / 2 / rayon::current_num_threads().max(1) / 4).max(8);
-            (0..nx.div_ceil(width))
-                .into_par_iter()
-                .for_each(|b| block(b * width, ((b + 1) * width).min(nx)));
+            let width = 2 * (nx / 2 / team.size().max(1) / 4).max(8);
+            team.for_each(nx.div_ceil(width), |b| {
+                block(b * width, ((b + 1) * width).min(nx))
+            });
         }
     }
 
@@ -246,18 +244,18 @@ impl Level {
         }
     }
 
-    fn pre_smooth(&mut self) {
-        self.x_lines(0);
-        self.x_lines(1);
-        self.y_lines(0);
-        self.y_lines(1);
+    fn pre_smooth(&mut self, team: &Team<'_>) {
+        self.x_lines(0, team);
+        self.x_lines(1, team);
+        self.y_lines(0, team);
+        self.y_lines(1, team);
     }
 
-    fn post_smooth(&mut self) {
-        self.y_lines(1);
-        self.y_lines(0);
-        self.x_lines(1);
-        self.x_lines(0);
+    fn post_smooth(&mut self, team: &Team<'_>) {
+        self.y_lines(1, team);
+        self.y_lines(0, team);
+        self.x_lines(1, team);
+        self.x_lines(0, team);
     }
 }
 
@@ -338,23 +336,26 @@ fn factor_recurrence(
     Ok(())
 }
 
-/// coarse_rhs = Pᵀ r.
-fn restrict(fine: &Level, r: &[f64], coarse_rhs: &mut [f64], nxc: usize) {
+/// coarse_rhs = Pᵀ r, by coarse rows (each coarse cell adds its fine cells row by row, x
+/// fastest, as one pass over the fine grid would).
+fn restrict(fine: &Level, r: &[f64], coarse_rhs: &mut [f64], nxc: usize, team: &Team<'_>) {
     let (nxf, nyf) = (fine.op.nx, fine.op.ny);
-    coarse_rhs.fill(0.0);
-    for j in 0..nyf {
-        let o = nxf * j;
-        let co = nxc * (j / 2);
-        for i in 0..nxf {
-            if fine.active[o + i] {
-                coarse_rhs[co + i / 2] += r[o + i];
+    let active = &fine.active;
+    for_each_row_on(team, coarse_rhs, nxc, |jc, row| {
+        row.fill(0.0);
+        for j in (2 * jc..2 * jc + 2).filter(|&j| j < nyf) {
+            let o = nxf * j;
+            for i in 0..nxf {
+                if active[o + i] {
+                    row[i / 2] += r[o + i];
+                }
             }
         }
-    }
+    });
 }
 
 /// x += P e.
-fn prolong_add(fine: &mut Level, e: &[f64], nxc: usize) {
+fn prolong_add(fine: &mut Level, e: &[f64], nxc: usize, team: &Team<'_>) {
     let nxf = fine.op.nx;
     let active = &fine.active;
     let add_row = |j: usize, row: &mut [f64]| {
@@ -365,18 +366,7 @@ fn prolong_add(fine: &mut Level, e: &[f64], nxc: usize) {
             }
         }
     };
-    if fine.sol.len() < PAR_MIN_LEN {
-        fine.sol
-            .chunks_mut(nxf)
-            .enumerate()
-            .for_each(|(j, r)| add_row(j, r));
-    } else {
-        fine.sol
-            .par_chunks_mut(nxf)
-            .enumerate()
-            .with_min_len(rows_per_task(nxf))
-            .for_each(|(j, r)| add_row(j, r));
-    }
+    for_each_row_on(team, &mut fine.sol, nxf, add_row);
 }
 
 /// Dense LU with partial pivoting for the coarsest level.
@@ -517,37 +507,37 @@ impl Hierarchy {
         self.coarsest.factor(&self.levels[last].op)
     }
 
-    /// z = B r, one cycle from a zero initial guess.
-    pub fn precondition(&mut self, r: &[f64], z: &mut [f64]) {
+    /// z = B r, one cycle from a zero initial guess, by `team`.
+    pub fn precondition(&mut self, team: &Team<'_>, r: &[f64], z: &mut [f64]) {
         self.levels[0].rhs.copy_from_slice(r);
-        cycle(&mut self.levels, &self.coarsest, self.cycle);
+        cycle(&mut self.levels, &self.coarsest, self.cycle, team);
         z.copy_from_slice(&self.levels[0].sol);
     }
 }
 
 /// One cycle on `levels[0]`: `sol` ← B `rhs`.
-fn cycle(levels: &mut [Level], coarsest: &DenseLu, kind: Cycle) {
+fn cycle(levels: &mut [Level], coarsest: &DenseLu, kind: Cycle, team: &Team<'_>) {
     let (lv, rest) = levels.split_first_mut().expect("at least one level");
     if rest.is_empty() {
         coarsest.solve(&lv.rhs, &mut lv.sol);
         return;
     }
     lv.sol.fill(0.0);
-    lv.pre_smooth();
-    residual5(&lv.op.coeffs(), &lv.rhs, &lv.sol, &mut lv.res);
+    lv.pre_smooth(team);
+    residual5_on(team, &lv.op.coeffs(), &lv.rhs, &lv.sol, &mut lv.res);
     let nxc = rest[0].op.nx;
-    restrict(lv, &lv.res, &mut rest[0].coarse_rhs, nxc);
-    coarse_correction(rest, coarsest, kind);
-    prolong_add(lv, &rest[0].corr, nxc);
-    lv.post_smooth();
+    restrict(lv, &lv.res, &mut rest[0].coarse_rhs, nxc, team);
+    coarse_correction(rest, coarsest, kind, team);
+    prolong_add(lv, &rest[0].corr, nxc, team);
+    lv.post_smooth(team);
 }
 
 /// Approximately solves `levels[0]` with rhs `coarse_rhs`, result in `corr`.
-fn coarse_correction(levels: &mut [Level], coarsest: &DenseLu, kind: Cycle) {
+fn coarse_correction(levels: &mut [Level], coarsest: &DenseLu, kind: Cycle, team: &Team<'_>) {
     let lv0_is_coarsest = levels.len() == 1;
     let lv = &mut levels[0];
     lv.rhs.copy_from_slice(&lv.coarse_rhs);
-    cycle(levels, coarsest, kind);
+    cycle(levels, coarsest, kind, team);
     let lv = &mut levels[0];
     lv.corr.copy_from_slice(&lv.sol);
     if kind == Cycle::V || lv0_is_coarsest {
@@ -556,34 +546,34 @@ fn coarse_correction(levels: &mut [Level], coarsest: &DenseLu, kind: Cycle) {
     // K-cycle: two flexible-CG steps (Notay & Vassilevski 2008, Alg. 2.1 with t = 0)
     let c = lv.op.coeffs();
     lv.v1.copy_from_slice(&lv.sol);
-    apply5(&c, None, &lv.v1, &mut lv.w1);
-    let rho1 = dot(&lv.v1, &lv.w1);
-    let alpha1 = dot(&lv.v1, &lv.coarse_rhs);
+    apply5_on(team, &c, None, &lv.v1, &mut lv.w1);
+    let rho1 = dot_on(team, &lv.v1, &lv.w1);
+    let alpha1 = dot_on(team, &lv.v1, &lv.coarse_rhs);
     if rho1 <= 0.0 || !rho1.is_finite() {
         return; // corr = v1: plain V-cycle step
     }
     {
         let (r, w1) = (&lv.coarse_rhs, &lv.w1);
         let f = alpha1 / rho1;
-        for_each_indexed(&mut lv.r2, |k, v| *v = r[k] - f * w1[k]);
+        for_each_indexed_on(team, &mut lv.r2, |k, v| *v = r[k] - f * w1[k]);
     }
     lv.rhs.copy_from_slice(&lv.r2);
-    cycle(levels, coarsest, kind);
+    cycle(levels, coarsest, kind, team);
     let lv = &mut levels[0];
     let c = lv.op.coeffs();
-    apply5(&c, None, &lv.sol, &mut lv.w2); // v2 = sol
-    let gamma = dot(&lv.sol, &lv.w1);
-    let beta = dot(&lv.sol, &lv.w2);
-    let alpha2 = dot(&lv.sol, &lv.r2);
+    apply5_on(team, &c, None, &lv.sol, &mut lv.w2); // v2 = sol
+    let gamma = dot_on(team, &lv.sol, &lv.w1);
+    let beta = dot_on(team, &lv.sol, &lv.w2);
+    let alpha2 = dot_on(team, &lv.sol, &lv.r2);
     let rho2 = beta - gamma * gamma / rho1;
     let (v1, v2) = (&lv.v1, &lv.sol);
     if rho2 <= 0.0 || !rho2.is_finite() {
         let f = alpha1 / rho1;
-        for_each_indexed(&mut lv.corr, |k, v| *v = f * v1[k]);
+        for_each_indexed_on(team, &mut lv.corr, |k, v| *v = f * v1[k]);
     } else {
         let f1 = alpha1 / rho1 - gamma * alpha2 / (rho1 * rho2);
         let f2 = alpha2 / rho2;
-        for_each_indexed(&mut lv.corr, |k, v| *v = f1 * v1[k] + f2 * v2[k]);
+        for_each_indexed_on(team, &mut lv.corr, |k, v| *v = f1 * v1[k] + f2 * v2[k]);
     }
 }
 
@@ -724,7 +714,9 @@ impl LinearSolver for MultigridCg {
     }
 }
 
-/// FCG(1): p_k = z_k − (z_kᵀ q_(k−1) / p_(k−1)ᵀ q_(k−1)) p_(k−1), q = A p.
+/// FCG(1): p_k = z_k − (z_kᵀ q_(k−1) / p_(k−1)ᵀ q_(k−1)) p_(k−1), q = A p; the whole
+/// iteration runs on one [`Team`], which keeps the pool's threads awake between the short
+/// sweeps of the coarse levels.
 fn fcg(
     b_norm: f64,
     w: &mut CgWork,
@@ -732,45 +724,55 @@ fn fcg(
     rtol: f64,
     max_iter: usize,
 ) -> Result<usize, LinSolveError> {
-    let c = w.op.coeffs();
     // the tolerance refers to the caller's b, as the reported residual does
     if b_norm == 0.0 {
         x.fill(0.0);
         return Ok(0);
     }
-    let target = rtol * b_norm;
-    residual5(&c, &w.b, x, &mut w.r);
-    let mut r_norm = norm2(&w.r);
+    Team::run(|team| fcg_on(team, rtol * b_norm, w, x, max_iter))
+}
+
+/// The iterations of [`fcg`] by `team`, to ‖r‖₂ ≤ `target`.
+fn fcg_on(
+    team: &Team<'_>,
+    target: f64,
+    w: &mut CgWork,
+    x: &mut [f64],
+    max_iter: usize,
+) -> Result<usize, LinSolveError> {
+    let c = w.op.coeffs();
+    residual5_on(team, &c, &w.b, x, &mut w.r);
+    let mut r_norm = norm2_on(team, &w.r);
     let mut it = 0;
     let mut pq_prev = 0.0;
     let mut fresh = true;
     while r_norm > target && it < max_iter {
-        w.hierarchy.precondition(&w.r, &mut w.z);
+        w.hierarchy.precondition(team, &w.r, &mut w.z);
         if fresh {
             w.p.copy_from_slice(&w.z);
         } else {
-            let beta = dot(&w.z, &w.q) / pq_prev;
+            let beta = dot_on(team, &w.z, &w.q) / pq_prev;
             let z = &w.z;
-            for_each_indexed(&mut w.p, |k, v| *v = z[k] - beta * *v);
+            for_each_indexed_on(team, &mut w.p, |k, v| *v = z[k] - beta * *v);
         }
-        apply5(&c, None, &w.p, &mut w.q);
-        let pq = dot(&w.p, &w.q);
+        apply5_on(team, &c, None, &w.p, &mut w.q);
+        let pq = dot_on(team, &w.p, &w.q);
         if pq <= 0.0 || !pq.is_finite() {
             return Err(LinSolveError::NotSpd {
                 detail: format!("pᵀAp = {pq:.3e} in flexible CG at iteration {it}"),
             });
         }
-        let alpha = dot(&w.p, &w.r) / pq;
-        axpy(alpha, &w.p, x);
-        axpy(-alpha, &w.q, &mut w.r);
+        let alpha = dot_on(team, &w.p, &w.r) / pq;
+        axpy_on(team, alpha, &w.p, x);
+        axpy_on(team, -alpha, &w.q, &mut w.r);
         pq_prev = pq;
         fresh = false;
         it += 1;
-        r_norm = norm2(&w.r);
+        r_norm = norm2_on(team, &w.r);
         if r_norm <= target {
             // confirm with the true residual; restart the recurrence if they disagree
-            residual5(&c, &w.b, x, &mut w.r);
-            r_norm = norm2(&w.r);
+            residual5_on(team, &c, &w.b, x, &mut w.r);
+            r_norm = norm2_on(team, &w.r);
             fresh = true;
         }
     }

@@ -5,6 +5,7 @@ use rayon::prelude::*;
 use crate::kernels::{for_each_indexed, SharedMut, PAR_MIN_LEN};
 use crate::multigrid::Hierarchy;
 use crate::stencil::Op5;
+use crate::team::Team;
 use crate::{Cycle, LinSolveError, MultigridParams};
 
 /// Preconditioner choice for BiCGSTAB.
@@ -135,7 +136,7 @@ impl PrecondImpl {
                 }
             }
             Self::LineY(line) => line.apply(op, r, z),
-            Self::Multigrid(h) => h.precondition(r, z),
+            Self::Multigrid(h) => Team::run(|team| h.precondition(team, r, z)),
         }
     }
 }

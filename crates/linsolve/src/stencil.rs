@@ -15,6 +15,7 @@
 use rayon::prelude::*;
 
 use crate::kernels::PAR_MIN_LEN;
+use crate::team::Team;
 use crate::LinSolveError;
 
 /// Whether a cell is an unknown or has a prescribed value.
@@ -426,21 +427,44 @@ where
     T: Send,
     F: Fn(usize, &mut [T]) + Sync + Send,
 {
-    if data.len() < PAR_MIN_LEN {
+    for_each_row_on(&Team::RAYON, data, row_len, f);
+}
+
+/// [`for_each_row`] by `team`.
+pub(crate) fn for_each_row_on<T, F>(team: &Team<'_>, data: &mut [T], row_len: usize, f: F)
+where
+    T: Send,
+    F: Fn(usize, &mut [T]) + Sync + Send,
+{
+    if data.len() < team.min_len() {
         data.chunks_mut(row_len)
             .enumerate()
             .for_each(|(j, row)| f(j, row));
     } else {
-        data.par_chunks_mut(row_len)
-            .enumerate()
-            .with_min_len(rows_per_task(row_len))
-            .for_each(|(j, row)| f(j, row));
+        let rows = (team.min_chunk() / row_len.max(1)).max(1);
+        team.for_each_chunk_mut(data, rows * row_len, |c, block| {
+            block
+                .chunks_mut(row_len)
+                .enumerate()
+                .for_each(|(r, row)| f(c * rows + r, row));
+        });
     }
 }
 
 /// y = A x for a 5-point operator; rows of `fixed` cells use only the diagonal.
 pub(crate) fn apply5(c: &Coeffs<'_>, fixed: Option<&[bool]>, x: &[f64], y: &mut [f64]) {
-    for_each_row(y, c.nx, |j, yr| apply5_row(c, fixed, x, j, yr));
+    apply5_on(&Team::RAYON, c, fixed, x, y);
+}
+
+/// [`apply5`] by `team`.
+pub(crate) fn apply5_on(
+    team: &Team<'_>,
+    c: &Coeffs<'_>,
+    fixed: Option<&[bool]>,
+    x: &[f64],
+    y: &mut [f64],
+) {
+    for_each_row_on(team, y, c.nx, |j, yr| apply5_row(c, fixed, x, j, yr));
 }
 
 /// Row j of y = A x: each term as a separate branch-free pass over the row (in L1).
@@ -488,8 +512,13 @@ fn apply5_row(c: &Coeffs<'_>, fixed: Option<&[bool]>, x: &[f64], j: usize, yr: &
 /// r = b − A x for the reduced operator, row by row (A x and the subtraction in one pass
 /// while the row is in L1; the same operations as A x followed by b − A x).
 pub(crate) fn residual5(c: &Coeffs<'_>, b: &[f64], x: &[f64], r: &mut [f64]) {
+    residual5_on(&Team::RAYON, c, b, x, r);
+}
+
+/// [`residual5`] by `team`.
+pub(crate) fn residual5_on(team: &Team<'_>, c: &Coeffs<'_>, b: &[f64], x: &[f64], r: &mut [f64]) {
     let nx = c.nx;
-    for_each_row(r, nx, |j, rr| {
+    for_each_row_on(team, r, nx, |j, rr| {
         apply5_row(c, None, x, j, rr);
         for (v, bk) in rr.iter_mut().zip(&b[nx * j..nx * (j + 1)]) {
             *v = bk - *v;
