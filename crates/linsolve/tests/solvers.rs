@@ -547,3 +547,49 @@ fn multigrid_robust_to_coefficient_jumps() {
     }
     assert!(its[1] <= 1.3 * its[0], "iterations {its:?}");
 }
+
+/// The multigrid solves (flexible CG, and BiCGSTAB with the multigrid preconditioner) give
+/// the same bits on pools of one, two and three threads: their team's chunks are fixed by
+/// the vectors' lengths (src/team.rs). 300 × 150 cells puts level 0 on rayon-sized loops
+/// and levels 1–2 on the team's smaller ones.
+#[test]
+fn multigrid_solves_are_the_same_on_any_number_of_threads() {
+    let (p, _) = pressure_system(300, 150);
+    let (m, _) = momentum_system(300, 150, 1.0, 100.0);
+    let kinds = [
+        (
+            LinearSolverKind::MultigridCg(MultigridParams::default()),
+            &p,
+        ),
+        (
+            LinearSolverKind::BiCgStab {
+                rtol: 1e-8,
+                max_iter: 100,
+                precond: Precond::MultigridK,
+            },
+            &m,
+        ),
+    ];
+    for (kind, a) in kinds {
+        let solve = |threads: usize| {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap();
+            pool.install(|| {
+                let mut s = build(&kind);
+                s.set_pattern(a.pattern()).unwrap();
+                let mut x = vec![0.0; a.len()];
+                let stats = s.setup_and_solve(a, &mut x).unwrap();
+                (x, stats.iterations)
+            })
+        };
+        let (x1, it1) = solve(1);
+        for threads in [2, 3] {
+            let (x, it) = solve(threads);
+            assert_eq!(it, it1, "{kind:?}: iterations on {threads} threads");
+            let same = x.iter().zip(&x1).all(|(a, b)| a.to_bits() == b.to_bits());
+            assert!(same, "{kind:?}: the solution differs on {threads} threads");
+        }
+    }
+}
