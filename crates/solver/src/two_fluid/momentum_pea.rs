@@ -430,8 +430,33 @@ fn eliminate_drag(
     solids: &mut [SolidsComponent<'_>],
     worst: &mut (f64, usize, usize, usize, usize),
 ) -> f64 {
+    // one loop per number of phases, its node arrays sized for it
+    let eliminate = match solids.len() {
+        0 => eliminate_drag_with::<1>,
+        1 => eliminate_drag_with::<2>,
+        2 => eliminate_drag_with::<3>,
+        3 => eliminate_drag_with::<4>,
+        4 => eliminate_drag_with::<5>,
+        5 => eliminate_drag_with::<6>,
+        6 => eliminate_drag_with::<7>,
+        7 => eliminate_drag_with::<8>,
+        m => unreachable!("{m} solids phases: the set-up allows at most {MAX_SOLIDS_PHASES}"),
+    };
+    eliminate(grid, c, relax, gas, solids, worst)
+}
+
+/// [`eliminate_drag`] with N phases (the gas and N − 1 solids phases).
+fn eliminate_drag_with<const N: usize>(
+    grid: &Grid,
+    c: Component,
+    relax: f64,
+    gas: &mut GasComponent<'_>,
+    solids: &mut [SolidsComponent<'_>],
+    worst: &mut (f64, usize, usize, usize, usize),
+) -> f64 {
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
     let m = solids.len();
+    debug_assert_eq!(m + 1, N);
     let (mut num, mut den) = (0.0, 0.0);
     for j in 0..c.my {
         for i in 0..c.mx {
@@ -439,7 +464,7 @@ fn eliminate_drag(
             if gas.a.pattern().fixed_mask()[k] {
                 continue;
             }
-            let node = gather(c, (i, j), dx, dy, gas, solids);
+            let node = gather::<N>(c, (i, j), dx, dy, gas, solids);
             // momentum residuals of the coupled node (before relaxation, §4.11)
             for p in 0..=m {
                 if p > 0 && node.dilute[p - 1] {
@@ -467,24 +492,21 @@ fn eliminate_drag(
 
 /// The coupled equations of node (i, j) of component `c` (index 0 the gas, p the solids
 /// phase p) as the assembly left them.
-fn gather(
+fn gather<const N: usize>(
     c: Component,
     (i, j): (usize, usize),
     dx: &[f64],
     dy: &[f64],
     gas: &GasComponent<'_>,
     solids: &[SolidsComponent<'_>],
-) -> CoupledNode {
+) -> CoupledNode<N> {
     let k = i + c.mx * j;
     // the cells beside the node and their half volumes
     let [lo, hi] = c.cells(i, j, true);
     let cell = |x: Option<(usize, usize)>| x.map(|(ci, cj)| ci + c.nx * cj);
     let half = |x: Option<(usize, usize)>| x.map_or(0.0, |(ci, cj)| 0.5 * dx[ci] * dy[cj]);
     let (c0, c1, h0, h1) = (cell(lo), cell(hi), half(lo), half(hi));
-    let mut node = CoupledNode {
-        cells: (c0, c1),
-        ..CoupledNode::default()
-    };
+    let mut node = CoupledNode::<N>::new((c0, c1));
     let gas_phi = c.pick(gas.u, gas.v);
     node.a_in[0] = gas.a.a_p[k];
     node.r_in[0] = neighbour_sum(gas.a, gas_phi, k);
@@ -516,12 +538,12 @@ fn gather(
 
 /// Replaces the rows of node (i, j) by the decoupled, relaxed rows of the partial
 /// elimination and stores d_g and e_s (module doc); a dilute solids node gets its dilute row.
-fn decouple(
+fn decouple<const N: usize>(
     c: Component,
     (i, j): (usize, usize),
     area: f64,
     relax: f64,
-    node: &CoupledNode,
+    node: &CoupledNode<N>,
     gas: &mut GasComponent<'_>,
     solids: &mut [SolidsComponent<'_>],
 ) {
@@ -532,7 +554,7 @@ fn decouple(
     // the low-side cell of the node as (ci, cj), the high-side one at the low boundary
     let [lo, hi] = c.cells(i, j, true);
     let low_cell = lo.or(hi);
-    let (mut a_out, mut r_out) = ([0.0; MAX_SOLIDS_PHASES + 1], [0.0; MAX_SOLIDS_PHASES + 1]);
+    let (mut a_out, mut r_out) = ([0.0; N], [0.0; N]);
     eliminate_node(
         &a_in[..=m],
         &r_in[..=m],
@@ -632,10 +654,7 @@ mod tests {
             eps: &eps_g,
         };
         let (a_gas, a_s, f, relax, area) = (3.0, 2.0, 5.0, 0.5, 0.1);
-        let mut node = CoupledNode {
-            cells: (Some(0), Some(1)),
-            ..CoupledNode::default()
-        };
+        let mut node = CoupledNode::<2>::new((Some(0), Some(1)));
         node.a_in[..2].copy_from_slice(&[a_gas, a_s]);
         node.r_in[..2].copy_from_slice(&[1.0, 0.5]);
         node.phi[..2].copy_from_slice(&[1.0, 0.2]);

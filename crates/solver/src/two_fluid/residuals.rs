@@ -28,27 +28,45 @@ pub struct TwoFluidResiduals {
     pub theta: f64,
 }
 
-/// The coupled momentum equations of every phase at one velocity node, as assembled and
-/// before the partial elimination (index 0 the gas, p the solids phase p).
-#[derive(Clone, Copy, Debug, Default)]
-pub(super) struct CoupledNode {
+/// The coupled momentum equations of the N phases (the gas and N − 1 ≤
+/// [`MAX_SOLIDS_PHASES`] solids phases) at one velocity node, as assembled and before the
+/// partial elimination (index 0 the gas, p the solids phase p). N is a constant of the
+/// type so that a node of one solids phase is a few registers, not arrays sized for the
+/// most phases (the elimination visits every velocity node of every outer iteration).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct CoupledNode<const N: usize> {
     /// centre coefficients
-    pub a_in: [f64; MAX_SOLIDS_PHASES + 1],
+    pub a_in: [f64; N],
     /// right-hand sides Σ a_nb φ_nb + b
-    pub r_in: [f64; MAX_SOLIDS_PHASES + 1],
+    pub r_in: [f64; N],
     /// current values
-    pub phi: [f64; MAX_SOLIDS_PHASES + 1],
+    pub phi: [f64; N],
     /// the other velocity component MFIX stores at the node's index (for the speed)
-    pub cross: [f64; MAX_SOLIDS_PHASES + 1],
-    /// drag coefficients F_gs V of the solids phases
-    pub drag: [f64; MAX_SOLIDS_PHASES],
-    /// whether the node is dilute for each solids phase
-    pub dilute: [bool; MAX_SOLIDS_PHASES],
+    pub cross: [f64; N],
+    /// drag coefficients F_gs V of the solids phases (index q for solids phase q + 1; the
+    /// last entry unused)
+    pub drag: [f64; N],
+    /// whether the node is dilute for each solids phase (indexed as `drag`)
+    pub dilute: [bool; N],
     /// the cells beside the node (low, high)
     pub cells: (Option<usize>, Option<usize>),
 }
 
-impl CoupledNode {
+impl<const N: usize> CoupledNode<N> {
+    /// A node beside `cells` with every coefficient zero.
+    pub fn new(cells: (Option<usize>, Option<usize>)) -> Self {
+        const { assert!(N >= 1 && N <= MAX_SOLIDS_PHASES + 1) };
+        Self {
+            a_in: [0.0; N],
+            r_in: [0.0; N],
+            phi: [0.0; N],
+            cross: [0.0; N],
+            drag: [0.0; N],
+            dilute: [false; N],
+            cells,
+        }
+    }
+
     /// The momentum residual of phase p (of m solids phases) and its normaliser, `None`
     /// where the phase does not move: |(U, V)| ≤ 1e-15 with U, V the two face velocities
     /// MFIX stores at one index (the east and north faces of the cell west of a u-node,
