@@ -200,7 +200,9 @@ impl Level {
         // SAFETY: a block writes only its own columns of colour c and reads columns of the
         // other colour, which no task writes during this half-sweep.
         let block = |i0: usize, i1: usize| unsafe { this.y_block(colour, i0, i1, x) };
-        if nx * ny < team.min_len() {
+        if nx * ny < team.min_len() || team.size() == 1 {
+            // one block: narrow blocks cost more than they save (docs/performance.md,
+            // sessions 15 and 21)
             block(0, nx);
         } else {
             // even block width keeps the colour pattern identical in every block
