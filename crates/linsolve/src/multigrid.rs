@@ -71,9 +71,10 @@ const LINES_PAR_MIN_CELLS: usize = 1 << 12;
 struct Level {
     op: Op5,
     active: Vec<bool>,
-    /// Thomas factors of the x lines: 1/denom and a_E/denom
+    /// Thomas factors of the x lines: 1/denom, a_E/denom and a_W/denom
     x_inv: Vec<f64>,
     x_up: Vec<f64>,
+    x_low: Vec<f64>,
     /// Thomas factors of the y lines: 1/denom and a_N/denom
     y_inv: Vec<f64>,
     y_up: Vec<f64>,
@@ -98,6 +99,7 @@ impl Level {
             active: vec![true; n],
             x_inv: z(),
             x_up: z(),
+            x_low: z(),
             y_inv: z(),
             y_up: z(),
             rhs: z(),
@@ -118,20 +120,24 @@ impl Level {
     fn factor_lines(&mut self) -> Result<(), LinSolveError> {
         let op = &self.op;
         let (nx, n) = (op.nx, op.len());
-        let x_lines = |inv: &mut [f64], up: &mut [f64]| {
-            factor_recurrence(&op.ap, &op.aw, &op.ae, 1, |k| k % nx > 0, inv, up)
+        let x_lines = |(inv, up, low): (&mut [f64], &mut [f64], &mut [f64])| {
+            factor_recurrence(&op.ap, &op.aw, &op.ae, 1, |k| k % nx > 0, inv, up)?;
+            // the forward sweep's multiplier a_W/d, so that its recurrence is one
+            // multiply-add per cell (`x_line`)
+            for (k, l) in low.iter_mut().enumerate() {
+                *l = if k % nx > 0 { op.aw[k] * inv[k] } else { 0.0 };
+            }
+            Ok(())
         };
         let y_lines = |inv: &mut [f64], up: &mut [f64]| {
             factor_recurrence(&op.ap, &op.as_, &op.an, nx, |k| k >= nx, inv, up)
         };
+        let x_factors = (&mut self.x_inv[..], &mut self.x_up[..], &mut self.x_low[..]);
         let (x, y) = if n < LINES_PAR_MIN_CELLS {
-            (
-                x_lines(&mut self.x_inv, &mut self.x_up),
-                y_lines(&mut self.y_inv, &mut self.y_up),
-            )
+            (x_lines(x_factors), y_lines(&mut self.y_inv, &mut self.y_up))
         } else {
             rayon::join(
-                || x_lines(&mut self.x_inv, &mut self.x_up),
+                || x_lines(x_factors),
                 || y_lines(&mut self.y_inv, &mut self.y_up),
             )
         };
@@ -180,10 +186,12 @@ impl Level {
                 *v += a * u;
             }
         }
-        let aw = &op.aw[o..o + nx];
+        // forward sweep x_i = (r_i + a_W,i x_(i−1))/d_i as r_i/d_i + (a_W,i/d_i) x_(i−1):
+        // the product r_i/d_i is off the recurrence's critical path
+        let low = &self.x_low[o..o + nx];
         row[0] *= inv[0];
         for i in 1..nx {
-            row[i] = (row[i] + aw[i] * row[i - 1]) * inv[i];
+            row[i] = row[i] * inv[i] + low[i] * row[i - 1];
         }
         let upper = &self.x_up[o..o + nx];
         for i in (0..nx - 1).rev() {
