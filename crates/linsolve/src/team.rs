@@ -2,9 +2,9 @@
 //!
 //! Rayon's fork/join costs about a microsecond while the pool's threads are busy, but a
 //! thread that has found no work for some tens of microseconds goes to sleep, and waking it
-//! costs ~15 µs on this kind of machine (docs/performance.md, session 21: a join of two
-//! 10 µs halves takes 10.7 µs right after another join and 27 µs after a 20 µs serial
-//! stretch). A multigrid cycle alternates short parallel sweeps with serial stretches (the
+//! costs ~15 µs on this kind of machine (`cargo run --release -p runout-linsolve --example
+//! join_latency`, docs/performance.md session 21: a join of two 10 µs halves takes 10.8 µs
+//! right after other work and 24–27 µs after a serial stretch of 20 µs or more). A multigrid cycle alternates short parallel sweeps with serial stretches (the
 //! coarse levels, the coarsest solve), so rayon's threads fall asleep between the sweeps of
 //! the coarse levels and those levels run no faster on two threads than on one.
 //!
