@@ -60,6 +60,7 @@
 #![deny(missing_docs)]
 
 mod active_box;
+mod band;
 mod bicgstab;
 mod direct;
 mod kernels;

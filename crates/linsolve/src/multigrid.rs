@@ -16,7 +16,11 @@
 //!   flexible-CG steps preconditioned by the next level's cycle, which restores
 //!   level-independent convergence at about twice the coarse work. The outer iteration
 //!   is flexible CG (Notay 2000, FCG(1)), because the K-cycle is not a fixed linear map.
-//! * **Coarsest level** (≤ `coarsest_max_cells`): dense LU with partial pivoting.
+//! * **Coarsest level** (≤ `coarsest_max_cells`): band LU ([`BandLu`], cost ∝ cells ×
+//!   min(nx, ny) per solve). Stopping at ~1000 rather than ~60 cells drops the two or three
+//!   smallest levels, whose sweeps cost more per cell than the band solve (on 400 × 100
+//!   cells: 57 µs for the 650-cell level's visits against 142 µs for it and the levels
+//!   below, per outer iteration; docs/performance.md, session 23).
 //! * **Threads**: a whole flexible-CG solve (a preconditioner application under BiCGSTAB)
 //!   runs on one [`Team`], which keeps the pool's threads awake through the coarse levels'
 //!   short sweeps; every loop's chunks are fixed by the level's size, so the result is the
@@ -24,6 +28,7 @@
 
 use std::time::{Duration, Instant};
 
+use crate::band::BandLu;
 use crate::kernels::{axpy_on, dot_on, for_each_indexed_on, norm2_on, SharedMut};
 use crate::stencil::{apply5_on, check_len, for_each_row_on, reduced_rhs, residual5_on, Op5};
 use crate::team::Team;
@@ -48,7 +53,7 @@ pub struct MultigridParams {
     /// Cycle type.
     pub cycle: Cycle,
     /// Coarsening stops once a level has at most this many cells; that level is solved by
-    /// dense LU (cost ∝ cells², done once per cycle visit).
+    /// band LU (factor ∝ cells × min(nx, ny)², solve ∝ cells × min(nx, ny), per visit).
     pub coarsest_max_cells: usize,
 }
 
@@ -58,7 +63,7 @@ impl Default for MultigridParams {
             rtol: 1e-8,
             max_iter: 200,
             cycle: Cycle::K,
-            coarsest_max_cells: 64,
+            coarsest_max_cells: 1024,
         }
     }
 }
@@ -379,98 +384,11 @@ fn prolong_add(fine: &mut Level, e: &[f64], nxc: usize, team: &Team<'_>) {
     for_each_row_on(team, &mut fine.sol, nxf, add_row);
 }
 
-/// Dense LU with partial pivoting for the coarsest level.
-#[derive(Default)]
-struct DenseLu {
-    n: usize,
-    lu: Vec<f64>,
-    piv: Vec<usize>,
-}
-
-impl DenseLu {
-    fn factor(&mut self, op: &Op5) -> Result<(), LinSolveError> {
-        let n = op.len();
-        let nx = op.nx;
-        self.n = n;
-        self.lu.clear();
-        self.lu.resize(n * n, 0.0);
-        self.piv.clear();
-        self.piv.extend(0..n);
-        let a = &mut self.lu; // row-major
-        for k in 0..n {
-            a[k * n + k] = op.ap[k];
-            if k % nx + 1 < nx {
-                a[k * n + k + 1] = -op.ae[k];
-            }
-            if k % nx > 0 {
-                a[k * n + k - 1] = -op.aw[k];
-            }
-            if k + nx < n {
-                a[k * n + k + nx] = -op.an[k];
-            }
-            if k >= nx {
-                a[k * n + k - nx] = -op.as_[k];
-            }
-        }
-        let scale = a.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-        // rank-revealing threshold of LAPACK-style Gaussian elimination: n ε max|a|
-        let tiny = n as f64 * f64::EPSILON * scale;
-        for c in 0..n {
-            let (p, pv) = (c..n)
-                .map(|r| (r, a[r * n + c].abs()))
-                .fold(
-                    (c, -1.0),
-                    |best, cur| if cur.1 > best.1 { cur } else { best },
-                );
-            if pv <= tiny || !pv.is_finite() {
-                return Err(LinSolveError::Singular {
-                    detail: format!("coarsest multigrid level ({n} cells) has pivot {pv:.3e}"),
-                });
-            }
-            if p != c {
-                for col in 0..n {
-                    a.swap(p * n + col, c * n + col);
-                }
-                self.piv.swap(p, c);
-            }
-            let d = a[c * n + c];
-            for r in c + 1..n {
-                let l = a[r * n + c] / d;
-                if l != 0.0 {
-                    a[r * n + c] = l;
-                    for col in c + 1..n {
-                        a[r * n + col] -= l * a[c * n + col];
-                    }
-                }
-            }
-        }
-        Ok(())
-    }
-
-    fn solve(&self, b: &[f64], x: &mut [f64]) {
-        let (n, a) = (self.n, &self.lu);
-        for r in 0..n {
-            let mut s = b[self.piv[r]];
-            for c in 0..r {
-                s -= a[r * n + c] * x[c];
-            }
-            x[r] = s;
-        }
-        for r in (0..n).rev() {
-            let mut s = x[r];
-            for c in r + 1..n {
-                s -= a[r * n + c] * x[c];
-            }
-            x[r] = s / a[r * n + r];
-        }
-    }
-}
-
 /// The level hierarchy and the cycle; shared by [`MultigridCg`] and the BiCGSTAB
 /// multigrid preconditioner.
 pub(crate) struct Hierarchy {
     levels: Vec<Level>,
-    coarsest: DenseLu,
+    coarsest: BandLu,
     cycle: Cycle,
 }
 
@@ -485,7 +403,7 @@ impl Hierarchy {
         }
         Self {
             levels,
-            coarsest: DenseLu::default(),
+            coarsest: BandLu::default(),
             cycle: params.cycle,
         }
     }
@@ -520,13 +438,13 @@ impl Hierarchy {
     /// z = B r, one cycle from a zero initial guess, by `team`.
     pub fn precondition(&mut self, team: &Team<'_>, r: &[f64], z: &mut [f64]) {
         self.levels[0].rhs.copy_from_slice(r);
-        cycle(&mut self.levels, &self.coarsest, self.cycle, team);
+        cycle(&mut self.levels, &mut self.coarsest, self.cycle, team);
         z.copy_from_slice(&self.levels[0].sol);
     }
 }
 
 /// One cycle on `levels[0]`: `sol` ← B `rhs`.
-fn cycle(levels: &mut [Level], coarsest: &DenseLu, kind: Cycle, team: &Team<'_>) {
+fn cycle(levels: &mut [Level], coarsest: &mut BandLu, kind: Cycle, team: &Team<'_>) {
     let (lv, rest) = levels.split_first_mut().expect("at least one level");
     if rest.is_empty() {
         coarsest.solve(&lv.rhs, &mut lv.sol);
@@ -543,7 +461,7 @@ fn cycle(levels: &mut [Level], coarsest: &DenseLu, kind: Cycle, team: &Team<'_>)
 }
 
 /// Approximately solves `levels[0]` with rhs `coarse_rhs`, result in `corr`.
-fn coarse_correction(levels: &mut [Level], coarsest: &DenseLu, kind: Cycle, team: &Team<'_>) {
+fn coarse_correction(levels: &mut [Level], coarsest: &mut BandLu, kind: Cycle, team: &Team<'_>) {
     let lv0_is_coarsest = levels.len() == 1;
     let lv = &mut levels[0];
     lv.rhs.copy_from_slice(&lv.coarse_rhs);

@@ -31,10 +31,11 @@ use rayon::prelude::*;
 
 use crate::kernels::PAR_MIN_LEN;
 
-/// With a team, loops over fewer entries than this run on the calling thread alone: a
-/// job costs well under a microsecond to hand out, against ~1 µs of work per 2 000 entries
-/// of a vector update.
-pub(crate) const TEAM_MIN_LEN: usize = 1 << 11;
+/// With a team, loops over fewer entries than this run on the calling thread alone: below
+/// it, handing the job out and moving the data between the cores' caches cost more than
+/// the second thread saves (the 400 × 100 pressure solve's 2 500-cell level took 246 µs
+/// per outer iteration on two threads, 164 µs on one; docs/performance.md, session 23).
+pub(crate) const TEAM_MIN_LEN: usize = 1 << 13;
 /// With a team, the entries of one chunk of a loop at least (rayon: [`PAR_MIN_LEN`] per
 /// task of a row loop).
 pub(crate) const TEAM_MIN_CHUNK: usize = 1 << 10;
