@@ -21,6 +21,17 @@
 //!   smallest levels, whose sweeps cost more per cell than the band solve (on 400 × 100
 //!   cells: 57 µs for the 650-cell level's visits against 142 µs for it and the levels
 //!   below, per outer iteration; docs/performance.md, session 23).
+//! * **Split y lines**: on levels from [`Y_SPLIT_MIN_CELLS`] cells a y line is solved as
+//!   two halves, rows below m = ny/2 eliminated upwards and rows from m downwards, joined
+//!   at the two middle rows and substituted back outwards (the two-block partition method
+//!   for tridiagonal systems, Golub & Van Loan 2013 §4.5.4). With the lower half
+//!   eliminated, x_(m−1) = g + u x_m; with the upper half, x_m = h + z x_(m−1); so
+//!   x_(m−1) = (g + u h)/(1 − u z). The halves are two tasks that work on the same rows
+//!   as the x lines' tasks, so the solution stays in the cache of the core that owns the
+//!   rows; split by columns, half of it moved between the cores at every change of
+//!   direction, and the y sweep ran no faster on two threads than on one (docs/
+//!   performance.md, session 23). The split depends only on the level's size, so the
+//!   arithmetic is the same on any number of threads.
 //! * **Threads**: a whole flexible-CG solve (a preconditioner application under BiCGSTAB)
 //!   runs on one [`Team`], which keeps the pool's threads awake through the coarse levels'
 //!   short sweeps; every loop's chunks are fixed by the level's size, so the result is the
@@ -72,6 +83,10 @@ impl Default for MultigridParams {
 /// (the set-up runs on rayon, outside the solve's team).
 const LINES_PAR_MIN_CELLS: usize = 1 << 12;
 
+/// Levels with at least this many cells (and 4 rows) solve their y lines in two halves
+/// (module doc: split y lines).
+const Y_SPLIT_MIN_CELLS: usize = 1 << 13;
+
 /// One grid level with its operator, line factorisations and work vectors.
 struct Level {
     op: Op5,
@@ -80,9 +95,17 @@ struct Level {
     x_inv: Vec<f64>,
     x_up: Vec<f64>,
     x_low: Vec<f64>,
-    /// Thomas factors of the y lines: 1/denom and a_N/denom
+    /// Thomas factors of the y lines: 1/denom and a_N/denom (rows below `y_split`), or
+    /// a_S/denom eliminating from the top (rows from `y_split`)
     y_inv: Vec<f64>,
     y_up: Vec<f64>,
+    /// first row of the upper half of the split y lines, 0 if they are not split
+    y_split: usize,
+    /// per column, 1/(1 − u z) joining the halves (module doc)
+    y_join: Vec<f64>,
+    /// per column, the eliminated values of the rows y_split − 1 (g) and y_split (h)
+    y_edge_lower: Vec<f64>,
+    y_edge_upper: Vec<f64>,
     rhs: Vec<f64>,
     sol: Vec<f64>,
     res: Vec<f64>,
@@ -99,7 +122,16 @@ impl Level {
     fn new(nx: usize, ny: usize) -> Self {
         let n = nx * ny;
         let z = || vec![0.0; n];
+        let y_split = if n >= Y_SPLIT_MIN_CELLS && ny >= 4 {
+            ny / 2
+        } else {
+            0
+        };
         Self {
+            y_split,
+            y_join: vec![0.0; nx],
+            y_edge_lower: vec![0.0; nx],
+            y_edge_upper: vec![0.0; nx],
             op: Op5::zeros(nx, ny),
             active: vec![true; n],
             x_inv: z(),
@@ -126,7 +158,8 @@ impl Level {
         let op = &self.op;
         let (nx, n) = (op.nx, op.len());
         let x_lines = |(inv, up, low): (&mut [f64], &mut [f64], &mut [f64])| {
-            factor_recurrence(&op.ap, &op.aw, &op.ae, 1, |k| k % nx > 0, inv, up)?;
+            let west = |k: usize| (k % nx > 0).then(|| k - 1);
+            factor_recurrence(&op.ap, &op.aw, &op.ae, 0..n, west, inv, up)?;
             // the forward sweep's multiplier a_W/d, so that its recurrence is one
             // multiply-add per cell (`x_line`)
             for (k, l) in low.iter_mut().enumerate() {
@@ -134,16 +167,43 @@ impl Level {
             }
             Ok(())
         };
-        let y_lines = |inv: &mut [f64], up: &mut [f64]| {
-            factor_recurrence(&op.ap, &op.as_, &op.an, nx, |k| k >= nx, inv, up)
+        let split = self.y_split;
+        let y_lines = |inv: &mut [f64], up: &mut [f64], join: &mut [f64]| {
+            let south = |k: usize| (k >= nx).then(|| k - nx);
+            if split == 0 {
+                return factor_recurrence(&op.ap, &op.as_, &op.an, 0..n, south, inv, up);
+            }
+            let mid = split * nx;
+            factor_recurrence(&op.ap, &op.as_, &op.an, 0..mid, south, inv, up)?;
+            let north = |k: usize| (k + nx < n).then(|| k + nx);
+            factor_recurrence(&op.ap, &op.an, &op.as_, (mid..n).rev(), north, inv, up)?;
+            for (i, j) in join.iter_mut().enumerate() {
+                // x_(m−1) = (g + u h)/(1 − u z) (module doc)
+                let d = 1.0 - up[mid - nx + i] * up[mid + i];
+                if d == 0.0 || !d.is_finite() {
+                    return Err(LinSolveError::Singular {
+                        detail: format!("multigrid y line {i} cannot be joined ({d})"),
+                    });
+                }
+                *j = 1.0 / d;
+            }
+            Ok(())
         };
         let x_factors = (&mut self.x_inv[..], &mut self.x_up[..], &mut self.x_low[..]);
+        let y_factors = (
+            &mut self.y_inv[..],
+            &mut self.y_up[..],
+            &mut self.y_join[..],
+        );
         let (x, y) = if n < LINES_PAR_MIN_CELLS {
-            (x_lines(x_factors), y_lines(&mut self.y_inv, &mut self.y_up))
+            (
+                x_lines(x_factors),
+                y_lines(y_factors.0, y_factors.1, y_factors.2),
+            )
         } else {
             rayon::join(
                 || x_lines(x_factors),
-                || y_lines(&mut self.y_inv, &mut self.y_up),
+                || y_lines(y_factors.0, y_factors.1, y_factors.2),
             )
         };
         x.and(y)
@@ -204,38 +264,83 @@ impl Level {
         }
     }
 
-    /// Block Gauss–Seidel on the y lines i ≡ colour (mod 2), all lines of a block of
-    /// columns advanced together row by row; blocks run in parallel.
+    /// Block Gauss–Seidel on the y lines i ≡ colour (mod 2), all lines advanced together
+    /// row by row; split lines (module doc) as two tasks, one per half, that eliminate
+    /// and then substitute back.
     fn y_lines(&mut self, colour: usize, team: &Team<'_>) {
-        let (nx, ny) = (self.op.nx, self.op.ny);
+        let (nx, ny, m) = (self.op.nx, self.op.ny, self.y_split);
         let x = SharedMut(self.sol.as_mut_ptr());
+        let edges = [
+            SharedMut(self.y_edge_lower.as_mut_ptr()),
+            SharedMut(self.y_edge_upper.as_mut_ptr()),
+        ];
         let this = &*self;
-        // SAFETY: a block writes only its own columns of colour c and reads columns of the
-        // other colour, which no task writes during this half-sweep.
-        let block = |i0: usize, i1: usize| unsafe { this.y_block(colour, i0, i1, x) };
-        if nx * ny < team.min_len() || team.size() == 1 {
-            // one block: narrow blocks cost more than they save (docs/performance.md,
-            // sessions 15 and 21)
-            block(0, nx);
-        } else {
-            // even block width keeps the colour pattern identical in every block
-            let width = 2 * (nx / 2 / team.size().max(1) / 4).max(8);
-            team.for_each(nx.div_ceil(width), |b| {
-                block(b * width, ((b + 1) * width).min(nx))
-            });
+        let (south, north) = (-(nx as isize), nx as isize);
+        // SAFETY (all three): the lines of colour c read only lines of the other colour,
+        // which no task writes during this half-sweep; of a split line the lower task
+        // touches rows < m and the upper task rows ≥ m, and each writes only its own edge
+        // array; all indices are < nx·ny.
+        if m == 0 {
+            unsafe {
+                this.y_eliminate(colour, 0..ny, &this.op.as_, south, x);
+                this.y_substitute(colour, (0..ny.saturating_sub(1)).rev(), north, x);
+            }
+            return;
         }
+        team.for_each(2, |half| unsafe {
+            if half == 0 {
+                this.y_eliminate(colour, 0..m, &this.op.as_, south, x);
+            } else {
+                this.y_eliminate(colour, (m..ny).rev(), &this.op.an, north, x);
+            }
+            let row = if half == 0 { m - 1 } else { m };
+            for i in (colour..nx).step_by(2) {
+                *edges[half].0.add(i) = *x.0.add(row * nx + i);
+            }
+        });
+        let (lower, upper) = (&this.y_edge_lower, &this.y_edge_upper);
+        team.for_each(2, |half| unsafe {
+            // the join (module doc), the same expression in both tasks
+            let below_mid = |i: usize| {
+                let u = this.y_up[(m - 1) * nx + i];
+                (lower[i] + u * upper[i]) * this.y_join[i]
+            };
+            if half == 0 {
+                for i in (colour..nx).step_by(2) {
+                    *x.0.add((m - 1) * nx + i) = below_mid(i);
+                }
+                this.y_substitute(colour, (0..m - 1).rev(), north, x);
+            } else {
+                for i in (colour..nx).step_by(2) {
+                    let z = this.y_up[m * nx + i];
+                    *x.0.add(m * nx + i) = upper[i] + z * below_mid(i);
+                }
+                this.y_substitute(colour, m + 1..ny, south, x);
+            }
+        });
     }
 
+    /// Forward elimination of the y lines of `colour` over `rows` in that order: x_k =
+    /// (r_k + a_E x_E + a_W x_W + a_prev,k x_(k+prev)) / d_k, the last term from the second
+    /// row on.
+    ///
     /// # Safety
-    /// `x` points to `sol`; no other thread may access columns i0..i1 of this colour or
-    /// write the other colour.
-    unsafe fn y_block(&self, colour: usize, i0: usize, i1: usize, x: SharedMut) {
+    /// `x` points to `sol`; no other thread may access these cells or write the other
+    /// colour's.
+    unsafe fn y_eliminate(
+        &self,
+        colour: usize,
+        rows: impl Iterator<Item = usize>,
+        a_prev: &[f64],
+        prev: isize,
+        x: SharedMut,
+    ) {
         let op = &self.op;
-        let (nx, ny) = (op.nx, op.ny);
-        let first = i0 + (i0 + colour) % 2;
-        for j in 0..ny {
+        let nx = op.nx;
+        let mut has_prev = false;
+        for j in rows {
             let o = nx * j;
-            for i in (first..i1).step_by(2) {
+            for i in (colour..nx).step_by(2) {
                 let k = o + i;
                 let mut d = self.rhs[k];
                 if i + 1 < nx {
@@ -244,17 +349,33 @@ impl Level {
                 if i > 0 {
                     d += op.aw[k] * *x.0.add(k - 1);
                 }
-                if j > 0 {
-                    d += op.as_[k] * *x.0.add(k - nx);
+                if has_prev {
+                    d += a_prev[k] * *x.0.offset(k as isize + prev);
                 }
                 *x.0.add(k) = d * self.y_inv[k];
             }
+            has_prev = true;
         }
-        for j in (0..ny.saturating_sub(1)).rev() {
+    }
+
+    /// Back substitution of the y lines of `colour` over `rows` in that order:
+    /// x_k += up_k x_(k+next).
+    ///
+    /// # Safety
+    /// As [`Level::y_eliminate`].
+    unsafe fn y_substitute(
+        &self,
+        colour: usize,
+        rows: impl Iterator<Item = usize>,
+        next: isize,
+        x: SharedMut,
+    ) {
+        let nx = self.op.nx;
+        for j in rows {
             let o = nx * j;
-            for i in (first..i1).step_by(2) {
+            for i in (colour..nx).step_by(2) {
                 let k = o + i;
-                *x.0.add(k) += self.y_up[k] * *x.0.add(k + nx);
+                *x.0.add(k) += self.y_up[k] * *x.0.offset(k as isize + next);
             }
         }
     }
@@ -323,22 +444,22 @@ fn galerkin(fine: &Level, coarse: &mut Level) {
     }
 }
 
-/// The forward elimination of tridiagonal lines a_P x_k − a_lo x_(k−stride) − a_hi x_(k+stride)
-/// = r (Thomas algorithm): inv_k = 1/d_k and up_k = a_hi,k/d_k with
-/// d_k = a_P,k − a_lo,k up_(k−stride) where `has_lower(k)`, else a_P,k.
+/// The forward elimination of tridiagonal lines a_P x_k − a_prev x_prev(k) − a_next x_next(k)
+/// = r (Thomas algorithm) over `cells` in elimination order: inv_k = 1/d_k and up_k =
+/// a_next,k/d_k with d_k = a_P,k − a_prev,k up_prev(k) where `prev(k)` exists, else a_P,k.
 fn factor_recurrence(
     ap: &[f64],
-    a_lo: &[f64],
-    a_hi: &[f64],
-    stride: usize,
-    has_lower: impl Fn(usize) -> bool,
+    a_prev: &[f64],
+    a_next: &[f64],
+    cells: impl Iterator<Item = usize>,
+    prev: impl Fn(usize) -> Option<usize>,
     inv: &mut [f64],
     up: &mut [f64],
 ) -> Result<(), LinSolveError> {
-    for k in 0..ap.len() {
+    for k in cells {
         let mut d = ap[k];
-        if has_lower(k) {
-            d -= a_lo[k] * up[k - stride];
+        if let Some(p) = prev(k) {
+            d -= a_prev[k] * up[p];
         }
         if d == 0.0 || !d.is_finite() {
             return Err(LinSolveError::Singular {
@@ -346,7 +467,7 @@ fn factor_recurrence(
             });
         }
         inv[k] = 1.0 / d;
-        up[k] = a_hi[k] / d;
+        up[k] = a_next[k] / d;
     }
     Ok(())
 }
@@ -705,4 +826,66 @@ fn fcg_on(
         }
     }
     Ok(it)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A level with a diagonally dominant operator, strongly coupled in y, and a
+    /// right-hand side and start vector that vary from cell to cell.
+    fn level(nx: usize, ny: usize) -> Level {
+        let mut lv = Level::new(nx, ny);
+        for k in 0..nx * ny {
+            let (i, j) = (k % nx, k / nx);
+            let wave = |s: f64| 1.0 + 0.5 * (s * k as f64).sin();
+            let op = &mut lv.op;
+            op.ae[k] = if i + 1 < nx { wave(0.3) } else { 0.0 };
+            op.aw[k] = if i > 0 { wave(0.7) } else { 0.0 };
+            op.an[k] = if j + 1 < ny { 40.0 * wave(1.1) } else { 0.0 };
+            op.as_[k] = if j > 0 { 40.0 * wave(1.3) } else { 0.0 };
+            op.ap[k] = op.ae[k] + op.aw[k] + op.an[k] + op.as_[k] + 0.01;
+            lv.rhs[k] = (0.37 * k as f64).cos();
+            lv.sol[k] = (0.11 * k as f64).sin();
+        }
+        lv.factor_lines().unwrap();
+        lv
+    }
+
+    /// After a half-sweep of y lines every line of that colour satisfies its equations,
+    /// a_P x − Σ a_nb x_nb = r with the other colour's values, whether the lines are
+    /// split in two halves (8192 and 8281 cells, even and odd rows) or not.
+    #[test]
+    fn y_lines_solve_their_equations() {
+        for (nx, ny) in [(128, 64), (91, 91), (64, 7), (90, 91)] {
+            let mut lv = level(nx, ny);
+            assert_eq!(lv.y_split > 0, nx * ny >= Y_SPLIT_MIN_CELLS, "{nx} × {ny}");
+            for colour in [0, 1] {
+                Team::run(|team| lv.y_lines(colour, team));
+                let (op, x) = (&lv.op, &lv.sol);
+                let size = x.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+                for k in (0..nx * ny).filter(|k| k % nx % 2 == colour) {
+                    let link = |a: &[f64], offset: isize| {
+                        if a[k] == 0.0 {
+                            0.0
+                        } else {
+                            a[k] * x[(k as isize + offset) as usize]
+                        }
+                    };
+                    let (e, n) = (1, nx as isize);
+                    let lhs = op.ap[k] * x[k]
+                        - link(&op.ae, e)
+                        - link(&op.aw, -e)
+                        - link(&op.an, n)
+                        - link(&op.as_, -n);
+                    let tol = 1e-12 * (op.ap[k] * size + lv.rhs[k].abs());
+                    assert!(
+                        (lhs - lv.rhs[k]).abs() <= tol,
+                        "{nx} × {ny}, colour {colour}, cell {k}: {lhs} against {}",
+                        lv.rhs[k]
+                    );
+                }
+            }
+        }
+    }
 }

@@ -191,14 +191,6 @@ impl<'a> Team<'a> {
         })
     }
 
-    /// Number of threads that may run the chunks (1 for a serial team).
-    pub(crate) fn size(&self) -> usize {
-        match self.mode {
-            Mode::Serial => 1,
-            Mode::Rayon | Mode::Spinning(_) => rayon::current_num_threads(),
-        }
-    }
-
     /// Loops over fewer entries than this run serially: rayon's fork/join pays from
     /// [`PAR_MIN_LEN`] entries, a team's job from [`TEAM_MIN_LEN`]. Serial and spinning
     /// teams share every granularity, so their chunks, and results, are the same.
@@ -382,7 +374,15 @@ mod tests {
         });
         assert!(result.is_err());
         // the pool still works
-        assert_eq!(pool.install(|| Team::run(|team| team.size())), 2);
+        let chunks_run = AtomicUsize::new(0);
+        pool.install(|| {
+            Team::run(|team| {
+                team.for_each(10, |_| {
+                    chunks_run.fetch_add(1, Ordering::Relaxed);
+                })
+            })
+        });
+        assert_eq!(chunks_run.into_inner(), 10);
     }
 
     /// A team inside a job of a pool whose other thread is busy (it spins until the team is
