@@ -7,7 +7,7 @@
 //! conductance D = Γ A / δ. Outer faces must carry D = 0 and their convective effect is the
 //! caller's business (walls have F = 0; outlets are zero-gradient, docs/model.md §3).
 
-use runout_linsolve::Stencil5;
+use runout_linsolve::{for_each_row, Stencil5};
 
 /// Convection scheme (MFIX `DISCRETIZE` 0 and 2, docs/model.md §4.2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -33,6 +33,11 @@ pub struct FaceData {
     pub cond_x: Vec<f64>,
     /// D on y-faces
     pub cond_y: Vec<f64>,
+    /// the Superbee deferred-correction flux δ of every interior x-face, written by
+    /// [`assemble_masked`]
+    pub correction_x: Vec<f64>,
+    /// δ of every interior y-face
+    pub correction_y: Vec<f64>,
 }
 
 impl FaceData {
@@ -45,6 +50,8 @@ impl FaceData {
             flux_y: vec![0.0; mx * (my + 1)],
             cond_x: vec![0.0; (mx + 1) * my],
             cond_y: vec![0.0; mx * (my + 1)],
+            correction_x: vec![0.0; (mx + 1) * my],
+            correction_y: vec![0.0; mx * (my + 1)],
         }
     }
 
@@ -130,86 +137,107 @@ fn correction(flux: f64, up: Option<f64>, centre: f64, down: f64) -> f64 {
 /// deferred-correction source (zero for upwind). The continuity-subtracted form of
 /// docs/model.md §4.3 is used: a_P carries no net-outflow term. Transient, pressure, body
 /// force and wall terms are added by the caller afterwards.
-pub fn assemble(faces: &FaceData, phi: &[f64], scheme: Scheme, a: &mut Stencil5) {
+pub fn assemble(faces: &mut FaceData, phi: &[f64], scheme: Scheme, a: &mut Stencil5) {
     assemble_masked(faces, phi, scheme, None, a);
 }
 
-/// [`assemble`], leaving the rows of the nodes marked in `skip` untouched (the caller
-/// replaces them; their faces' fluxes must be zero unless a neighbour is active).
+/// [`assemble`], leaving the coefficients of the nodes marked in `skip` untouched (the
+/// caller replaces those rows; their faces' fluxes must be zero unless a neighbour is
+/// active).
 pub fn assemble_masked(
-    faces: &FaceData,
+    faces: &mut FaceData,
     phi: &[f64],
     scheme: Scheme,
     skip: Option<&[bool]>,
     a: &mut Stencil5,
 ) {
+    let superbee = scheme == Scheme::Superbee;
+    if superbee {
+        deferred_corrections(faces, phi);
+    }
+    let faces = &*faces;
     let (mx, my) = (faces.mx, faces.my);
     // each node's row from its own faces, rows in parallel
     a.par_fill_rows(|j, row| {
         for i in 0..mx {
             let k = i + mx * j;
-            if skip.is_some_and(|s| s[k]) {
-                continue;
+            if !skip.is_some_and(|s| s[k]) {
+                let fe = faces.flux_x[faces.xf(i + 1, j)];
+                let fw = faces.flux_x[faces.xf(i, j)];
+                let fn_ = faces.flux_y[faces.yf(i, j + 1)];
+                let fs = faces.flux_y[faces.yf(i, j)];
+                let ae = faces.cond_x[faces.xf(i + 1, j)] + (-fe).max(0.0);
+                let aw = faces.cond_x[faces.xf(i, j)] + fw.max(0.0);
+                let an = faces.cond_y[faces.yf(i, j + 1)] + (-fn_).max(0.0);
+                let as_ = faces.cond_y[faces.yf(i, j)] + fs.max(0.0);
+                // outer faces have no neighbour in the block
+                row.a_e[i] = if i + 1 < mx { ae } else { 0.0 };
+                row.a_w[i] = if i > 0 { aw } else { 0.0 };
+                row.a_n[i] = if j + 1 < my { an } else { 0.0 };
+                row.a_s[i] = if j > 0 { as_ } else { 0.0 };
+                row.a_p[i] = row.a_e[i] + row.a_w[i] + row.a_n[i] + row.a_s[i];
+                row.b[i] = 0.0;
             }
-            let fe = faces.flux_x[faces.xf(i + 1, j)];
-            let fw = faces.flux_x[faces.xf(i, j)];
-            let fn_ = faces.flux_y[faces.yf(i, j + 1)];
-            let fs = faces.flux_y[faces.yf(i, j)];
-            let ae = faces.cond_x[faces.xf(i + 1, j)] + (-fe).max(0.0);
-            let aw = faces.cond_x[faces.xf(i, j)] + fw.max(0.0);
-            let an = faces.cond_y[faces.yf(i, j + 1)] + (-fn_).max(0.0);
-            let as_ = faces.cond_y[faces.yf(i, j)] + fs.max(0.0);
-            // outer faces have no neighbour in the block
-            row.a_e[i] = if i + 1 < mx { ae } else { 0.0 };
-            row.a_w[i] = if i > 0 { aw } else { 0.0 };
-            row.a_n[i] = if j + 1 < my { an } else { 0.0 };
-            row.a_s[i] = if j > 0 { as_ } else { 0.0 };
-            row.a_p[i] = row.a_e[i] + row.a_w[i] + row.a_n[i] + row.a_s[i];
-            row.b[i] = 0.0;
+            if superbee {
+                // δ enters through the west/south face and leaves through the east/north
+                // face; nothing where F = 0, e.g. where a phase is absent
+                let (w, e) = (faces.xf(i, j), faces.xf(i + 1, j));
+                let (s, n) = (faces.yf(i, j), faces.yf(i, j + 1));
+                if i > 0 && faces.flux_x[w] != 0.0 {
+                    row.b[i] += faces.correction_x[w];
+                }
+                if i + 1 < mx && faces.flux_x[e] != 0.0 {
+                    row.b[i] -= faces.correction_x[e];
+                }
+                if j > 0 && faces.flux_y[s] != 0.0 {
+                    row.b[i] += faces.correction_y[s];
+                }
+                if j + 1 < my && faces.flux_y[n] != 0.0 {
+                    row.b[i] -= faces.correction_y[n];
+                }
+            }
         }
     });
-    if scheme == Scheme::Upwind {
-        return;
-    }
-    // Superbee deferred correction: for each interior face, δ = F (φ_f − φ_upwind) leaves
-    // the west/south node and enters the east/north node (nothing where F = 0, e.g. where a
-    // phase is absent).
+}
+
+/// The Superbee deferred-correction flux δ = F (φ_f − φ_upwind) of every interior face
+/// (docs/model.md §4.2), rows in parallel.
+fn deferred_corrections(faces: &mut FaceData, phi: &[f64]) {
+    let (mx, my) = (faces.mx, faces.my);
     let at = |i: isize, j: isize| -> Option<f64> {
         (i >= 0 && j >= 0 && (i as usize) < mx && (j as usize) < my)
             .then(|| phi[i as usize + mx * j as usize])
     };
-    for j in 0..my {
+    let (flux_x, flux_y) = (&faces.flux_x, &faces.flux_y);
+    for_each_row(&mut faces.correction_x, mx + 1, |j, row| {
         for i in 1..mx {
-            let f = faces.flux_x[faces.xf(i, j)];
-            if f == 0.0 {
-                continue;
-            }
+            let f = flux_x[i + (mx + 1) * j];
             let (ii, jj) = (i as isize, j as isize);
-            let delta = if f >= 0.0 {
+            row[i] = if f == 0.0 {
+                0.0
+            } else if f > 0.0 {
                 correction(f, at(ii - 2, jj), phi[i - 1 + mx * j], phi[i + mx * j])
             } else {
                 correction(f, at(ii + 1, jj), phi[i + mx * j], phi[i - 1 + mx * j])
             };
-            a.b[i - 1 + mx * j] -= delta;
-            a.b[i + mx * j] += delta;
         }
-    }
-    for j in 1..my {
-        for i in 0..mx {
-            let f = faces.flux_y[faces.yf(i, j)];
-            if f == 0.0 {
-                continue;
-            }
+    });
+    for_each_row(&mut faces.correction_y, mx, |j, row| {
+        if j == 0 || j >= my {
+            return;
+        }
+        for (i, delta) in row.iter_mut().enumerate() {
+            let f = flux_y[i + mx * j];
             let (ii, jj) = (i as isize, j as isize);
-            let delta = if f >= 0.0 {
+            *delta = if f == 0.0 {
+                0.0
+            } else if f > 0.0 {
                 correction(f, at(ii, jj - 2), phi[i + mx * (j - 1)], phi[i + mx * j])
             } else {
                 correction(f, at(ii, jj + 1), phi[i + mx * j], phi[i + mx * (j - 1)])
             };
-            a.b[i + mx * (j - 1)] -= delta;
-            a.b[i + mx * j] += delta;
         }
-    }
+    });
 }
 
 #[cfg(test)]

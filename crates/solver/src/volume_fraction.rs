@@ -18,6 +18,7 @@ use runout_mesh::Grid;
 
 use crate::transport::{face_value, Scheme};
 use runout_linsolve::for_each_row;
+use rayon::prelude::*;
 
 /// Inputs of the correction equation of one solids phase.
 #[derive(Clone, Copy, Debug)]
@@ -47,17 +48,36 @@ pub struct CorrectionInputs<'a> {
 /// Net solids mass imbalance of every cell with the given velocities, ρs [(εs − εs⁰) V/Δt +
 /// Σ εs,face u·n A] [kg s⁻¹ per m depth], into `out`; the face values follow `x.scheme`
 /// ([`face_value`]; on an outlet face the inside cell's for outflow and zero for inflow).
+/// Blocks of rows in parallel, two per thread: a y-face between two blocks is evaluated by
+/// both (the same value), and every cell sums its terms in the same order (storage, west,
+/// east, south, north face), so the result does not depend on the blocks.
 pub fn mass_imbalance(grid: &Grid, x: &CorrectionInputs<'_>, out: &mut [f64]) {
     let (nx, ny) = (grid.nx(), grid.ny());
+    let blocks = if nx * ny < PAR_MIN_CELLS {
+        1
+    } else {
+        2 * rayon::current_num_threads()
+    };
+    let rows_per_block = ny.div_ceil(blocks).max(1);
+    out.par_chunks_mut(nx * rows_per_block)
+        .enumerate()
+        .for_each(|(b, block)| imbalance_of_rows(grid, x, b * rows_per_block, block));
+}
+
+/// Grids with fewer cells than this compute [`mass_imbalance`] in one block.
+const PAR_MIN_CELLS: usize = 1 << 13;
+
+/// [`mass_imbalance`] of the rows j0.. that `out` holds.
+fn imbalance_of_rows(grid: &Grid, x: &CorrectionInputs<'_>, j0: usize, out: &mut [f64]) {
+    let (nx, ny) = (grid.nx(), grid.ny());
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
-    for j in 0..ny {
+    let rows = out.len() / nx;
+    for (r, row) in out.chunks_mut(nx).enumerate() {
+        let j = j0 + r;
+        let cells = nx * j;
         for i in 0..nx {
-            let k = i + nx * j;
-            out[k] = (x.eps[k] - x.eps_old[k]) * dx[i] * dy[j] / x.dt;
+            row[i] = (x.eps[i + cells] - x.eps_old[i + cells]) * dx[i] * dy[j] / x.dt;
         }
-    }
-    for j in 0..ny {
-        let row = nx * j;
         for i in 0..=nx {
             let vel = x.u[i + (nx + 1) * j];
             // a periodic column of one cell (nx = 1): the fluxes through its west and east
@@ -66,28 +86,30 @@ pub fn mass_imbalance(grid: &Grid, x: &CorrectionInputs<'_>, out: &mut [f64]) {
                 continue;
             }
             let eps_face = if i == 0 || i == nx {
-                boundary_face(x.eps[i.min(nx - 1) + row], vel, i == 0)
+                boundary_face(x.eps[i.min(nx - 1) + cells], vel, i == 0)
             } else {
                 face_value(
                     x.scheme,
                     x.eps,
-                    (i >= 2).then(|| i - 2 + row),
-                    i - 1 + row,
-                    i + row,
-                    (i + 1 < nx).then(|| i + 1 + row),
+                    (i >= 2).then(|| i - 2 + cells),
+                    i - 1 + cells,
+                    i + cells,
+                    (i + 1 < nx).then(|| i + 1 + cells),
                     vel,
                 )
             };
             let flux = eps_face * vel * dy[j];
             if i > 0 {
-                out[i - 1 + row] += flux;
+                row[i - 1] += flux;
             }
             if i < nx {
-                out[i + row] -= flux;
+                row[i] -= flux;
             }
         }
     }
-    for j in 0..=ny {
+    // the y-faces from the block's bottom to its top, each adding to the cell below and
+    // taking from the cell above where those are in the block
+    for j in j0..=j0 + rows {
         for i in 0..nx {
             let vel = x.v[i + nx * j];
             if vel == 0.0 {
@@ -107,11 +129,11 @@ pub fn mass_imbalance(grid: &Grid, x: &CorrectionInputs<'_>, out: &mut [f64]) {
                 )
             };
             let flux = eps_face * vel * dx[i];
-            if j > 0 {
-                out[i + nx * (j - 1)] += flux;
+            if j > j0 {
+                out[i + nx * (j - 1 - j0)] += flux;
             }
-            if j < ny {
-                out[i + nx * j] -= flux;
+            if j < j0 + rows {
+                out[i + nx * (j - j0)] -= flux;
             }
         }
     }
