@@ -17,8 +17,8 @@ use runout_linsolve::Stencil5;
 use runout_mesh::Grid;
 
 use crate::transport::{face_value, Scheme};
-use runout_linsolve::for_each_row;
 use rayon::prelude::*;
+use runout_linsolve::for_each_row;
 
 /// Inputs of the correction equation of one solids phase.
 #[derive(Clone, Copy, Debug)]
