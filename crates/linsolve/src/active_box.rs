@@ -23,6 +23,9 @@
 
 use std::time::Instant;
 
+use rayon::prelude::*;
+
+use crate::stencil::{for_each_row, rows_per_task};
 use crate::{build, LinSolveError, LinearSolver, LinearSolverKind, Pattern, SolveStats, Stencil5};
 
 /// Alignment of the rectangle's x bounds [cells].
@@ -85,38 +88,37 @@ impl Rect {
 }
 
 /// The smallest rectangle holding every row of `a` with a non-zero link (fixed rows
-/// excluded); `None` if no row has one.
+/// excluded); `None` if no row has one. Rows in parallel: the bounds are minima and maxima,
+/// the same in any order.
 pub fn coupled_rect(a: &Stencil5) -> Option<Rect> {
     let (nx, ny) = (a.pattern().nx(), a.pattern().ny());
     let fixed = a.pattern().fixed_mask();
     let linked = |k: usize| {
         ((a.a_e[k] != 0.0) | (a.a_w[k] != 0.0) | (a.a_n[k] != 0.0) | (a.a_s[k] != 0.0)) & !fixed[k]
     };
-    let mut r: Option<Rect> = None;
-    for j in 0..ny {
+    let row_rect = |j: usize| {
         let row = nx * j;
-        let Some(first) = (0..nx).position(|i| linked(row + i)) else {
-            continue;
-        };
+        let first = (0..nx).position(|i| linked(row + i))?;
         let last = (first..nx)
             .rposition(|i| linked(row + i))
             .map_or(first, |p| first + p);
-        r = Some(match r {
-            None => Rect {
-                i0: first,
-                i1: last + 1,
-                j0: j,
-                j1: j + 1,
-            },
-            Some(r) => Rect {
-                i0: r.i0.min(first),
-                i1: r.i1.max(last + 1),
-                j0: r.j0,
-                j1: j + 1,
-            },
-        });
-    }
-    r
+        Some(Rect {
+            i0: first,
+            i1: last + 1,
+            j0: j,
+            j1: j + 1,
+        })
+    };
+    (0..ny)
+        .into_par_iter()
+        .with_min_len(rows_per_task(nx))
+        .filter_map(row_rect)
+        .reduce_with(|a, b| Rect {
+            i0: a.i0.min(b.i0),
+            i1: a.i1.max(b.i1),
+            j0: a.j0.min(b.j0),
+            j1: a.j1.max(b.j1),
+        })
 }
 
 /// What the last set-up chose.
@@ -214,18 +216,18 @@ impl ActiveBox {
         let sub = self.sub.as_mut().expect("made above");
         let nx = a.pattern().nx();
         let snx = r.nx();
-        for j in r.j0..r.j1 {
-            let (k0, s0) = (r.i0 + nx * j, snx * (j - r.j0));
-            let (row, srow) = (k0..k0 + snx, s0..s0 + snx);
-            sub.a_p[srow.clone()].copy_from_slice(&a.a_p[row.clone()]);
-            sub.a_e[srow.clone()].copy_from_slice(&a.a_e[row.clone()]);
-            sub.a_w[srow.clone()].copy_from_slice(&a.a_w[row.clone()]);
-            sub.a_n[srow.clone()].copy_from_slice(&a.a_n[row.clone()]);
-            sub.a_s[srow.clone()].copy_from_slice(&a.a_s[row]);
+        sub.par_fill_rows(|js, row| {
+            let k0 = r.i0 + nx * (r.j0 + js);
+            let cells = k0..k0 + snx;
+            row.a_p.copy_from_slice(&a.a_p[cells.clone()]);
+            row.a_e.copy_from_slice(&a.a_e[cells.clone()]);
+            row.a_w.copy_from_slice(&a.a_w[cells.clone()]);
+            row.a_n.copy_from_slice(&a.a_n[cells.clone()]);
+            row.a_s.copy_from_slice(&a.a_s[cells]);
             // links out of the rectangle are moved to b in `solve`
-            sub.a_w[s0] = 0.0;
-            sub.a_e[s0 + snx - 1] = 0.0;
-        }
+            row.a_w[0] = 0.0;
+            row.a_e[snx - 1] = 0.0;
+        });
         let sny = r.ny();
         sub.a_s[..snx].iter_mut().for_each(|v| *v = 0.0);
         sub.a_n[snx * (sny - 1)..].iter_mut().for_each(|v| *v = 0.0);
@@ -239,10 +241,10 @@ impl ActiveBox {
         let (nx, ny) = (a.pattern().nx(), a.pattern().ny());
         let fixed = a.pattern().fixed_mask();
         let snx = r.nx();
-        for j in r.j0..r.j1 {
+        for_each_row(&mut sub.b, snx, |js, sub_b| {
+            let j = r.j0 + js;
             for i in r.i0..r.i1 {
                 let k = i + nx * j;
-                let s = (i - r.i0) + snx * (j - r.j0);
                 let mut b = a.b[k];
                 if !fixed[k] {
                     if i == r.i0 && i > 0 && a.a_w[k] != 0.0 {
@@ -258,9 +260,9 @@ impl ActiveBox {
                         b += a.a_n[k] * x[k + nx];
                     }
                 }
-                sub.b[s] = b;
+                sub_b[i - r.i0] = b;
             }
-        }
+        });
     }
 
     /// The index in the block of the rectangle's cell `s`, for an error of the part solver.
@@ -281,59 +283,78 @@ impl ActiveBox {
     }
 }
 
-/// The index ranges of the rows outside `r` (all rows if `None`), row by row of the
-/// `nx × ny` block.
-fn outside_ranges(
-    (nx, ny): (usize, usize),
-    r: Option<Rect>,
-) -> impl Iterator<Item = std::ops::Range<usize>> {
-    (0..ny).flat_map(move |j| {
-        let row = nx * j;
-        match r {
-            Some(r) if (r.j0..r.j1).contains(&j) => [row..row + r.i0, row + r.i1..row + nx],
-            _ => [row..row + nx, 0..0],
-        }
-    })
+/// The index ranges of row j's cells outside `r` (the whole row if `None`) in an `nx`-wide
+/// block.
+fn outside_of_row(nx: usize, j: usize, r: Option<Rect>) -> [std::ops::Range<usize>; 2] {
+    let row = nx * j;
+    match r {
+        Some(r) if (r.j0..r.j1).contains(&j) => [row..row + r.i0, row + r.i1..row + nx],
+        _ => [row..row + nx, 0..0],
+    }
 }
 
 /// Every row outside `r` (all rows if `None`) has a finite, non-zero a_P: its exact solve
-/// needs nothing else (its links are zero, or it is fixed).
+/// needs nothing else (its links are zero, or it is fixed). Rows in parallel; the error
+/// names the first such cell, as a serial scan would.
 fn check_outside_diagonal(a: &Stencil5, r: Option<Rect>) -> Result<(), LinSolveError> {
-    let dims = (a.pattern().nx(), a.pattern().ny());
-    for range in outside_ranges(dims, r) {
-        let start = range.start;
-        if let Some(s) = a.a_p[range]
-            .iter()
-            .position(|d| !d.is_finite() || *d == 0.0)
-        {
+    let (nx, ny) = (a.pattern().nx(), a.pattern().ny());
+    let bad_in_row = |j: usize| {
+        outside_of_row(nx, j, r).into_iter().find_map(|range| {
+            let start = range.start;
+            let s = a.a_p[range]
+                .iter()
+                .position(|d| !d.is_finite() || *d == 0.0)?;
             let cell = start + s;
-            return Err(if a.a_p[cell] == 0.0 {
+            Some(if a.a_p[cell] == 0.0 {
                 LinSolveError::ZeroDiagonal { cell }
             } else {
                 LinSolveError::NonFinite { what: "a_p", cell }
-            });
-        }
+            })
+        })
+    };
+    match (0..ny)
+        .into_par_iter()
+        .with_min_len(rows_per_task(nx))
+        .find_map_first(bad_in_row)
+    {
+        Some(e) => Err(e),
+        None => Ok(()),
     }
-    Ok(())
 }
 
-/// x = b/a_P on every row outside `r` (all rows if `None`).
+/// x = b/a_P on every row outside `r` (all rows if `None`), rows in parallel; a non-finite
+/// b is reported at the first such cell, as a serial pass would.
 fn solve_outside(a: &Stencil5, x: &mut [f64], r: Option<Rect>) -> Result<(), LinSolveError> {
-    let dims = (a.pattern().nx(), a.pattern().ny());
-    for range in outside_ranges(dims, r) {
-        let start = range.start;
-        let (b, d) = (&a.b[range.clone()], &a.a_p[range.clone()]);
-        if let Some(s) = b.iter().position(|b| !b.is_finite()) {
-            return Err(LinSolveError::NonFinite {
-                what: "b",
-                cell: start + s,
-            });
+    let nx = a.pattern().nx();
+    let solve_row = |(j, x_row): (usize, &mut [f64])| {
+        for range in outside_of_row(nx, j, r)
+            .into_iter()
+            .filter(|c| !c.is_empty())
+        {
+            let start = range.start;
+            let (b, d) = (&a.b[range.clone()], &a.a_p[range.clone()]);
+            if let Some(s) = b.iter().position(|b| !b.is_finite()) {
+                return Some(LinSolveError::NonFinite {
+                    what: "b",
+                    cell: start + s,
+                });
+            }
+            let local = range.start - nx * j..range.end - nx * j;
+            for ((x, b), d) in x_row[local].iter_mut().zip(b).zip(d) {
+                *x = b / d;
+            }
         }
-        for ((x, b), d) in x[range].iter_mut().zip(b).zip(d) {
-            *x = b / d;
-        }
+        None
+    };
+    match x
+        .par_chunks_mut(nx)
+        .enumerate()
+        .with_min_len(rows_per_task(nx))
+        .find_map_first(solve_row)
+    {
+        Some(e) => Err(e),
+        None => Ok(()),
     }
-    Ok(())
 }
 
 impl LinearSolver for ActiveBox {

@@ -778,7 +778,7 @@ fn fcg(
         x.fill(0.0);
         return Ok(0);
     }
-    Team::run(|team| fcg_on(team, rtol * b_norm, w, x, max_iter))
+    Team::run_for(x.len(), |team| fcg_on(team, rtol * b_norm, w, x, max_iter))
 }
 
 /// The iterations of [`fcg`] by `team`, to ‖r‖₂ ≤ `target`.

@@ -136,7 +136,7 @@ impl PrecondImpl {
                 }
             }
             Self::LineY(line) => line.apply(op, r, z),
-            Self::Multigrid(h) => Team::run(|team| h.precondition(team, r, z)),
+            Self::Multigrid(h) => Team::run_for(r.len(), |team| h.precondition(team, r, z)),
         }
     }
 }

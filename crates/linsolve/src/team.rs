@@ -191,6 +191,16 @@ impl<'a> Team<'a> {
         })
     }
 
+    /// [`Team::run`] for loops of at most `len` entries: below [`TEAM_MIN_LEN`] no loop
+    /// would be shared, so the pool's other threads are not woken (a serial team, whose
+    /// chunks and results are the same).
+    pub(crate) fn run_for<R: Send>(len: usize, body: impl FnOnce(&Team<'_>) -> R + Send) -> R {
+        if len < TEAM_MIN_LEN {
+            return body(&Team { mode: Mode::Serial });
+        }
+        Self::run(body)
+    }
+
     /// Loops over fewer entries than this run serially: rayon's fork/join pays from
     /// [`PAR_MIN_LEN`] entries, a team's job from [`TEAM_MIN_LEN`]. Serial and spinning
     /// teams share every granularity, so their chunks, and results, are the same.
