@@ -168,6 +168,21 @@ impl Stencil5 {
     where
         F: Fn(usize, RowMut<'_>) + Sync + Send,
     {
+        let mut nothing = vec![(); self.len()];
+        self.par_fill_rows_with(&mut nothing, |j, row, _| fill(j, row));
+    }
+
+    /// [`Stencil5::par_fill_rows`] with row j of a cell array `side` (nx × ny entries,
+    /// x fastest) as well: `fill(j, row, side_row)`.
+    ///
+    /// # Panics
+    /// If `side` does not have one entry per cell.
+    pub fn par_fill_rows_with<T, F>(&mut self, side: &mut [T], fill: F)
+    where
+        T: Send,
+        F: Fn(usize, RowMut<'_>, &mut [T]) + Sync + Send,
+    {
+        assert_eq!(side.len(), self.len(), "one side entry per cell");
         let nx = self.pattern.nx;
         let rows = self
             .a_p
@@ -177,21 +192,34 @@ impl Stencil5 {
             .zip(self.a_n.par_chunks_mut(nx))
             .zip(self.a_s.par_chunks_mut(nx))
             .zip(self.b.par_chunks_mut(nx))
+            .zip(side.par_chunks_mut(nx))
             .enumerate()
             .with_min_len(rows_per_task(nx));
-        rows.for_each(|(j, (((((a_p, a_e), a_w), a_n), a_s), b))| {
-            fill(
-                j,
-                RowMut {
-                    a_p,
-                    a_e,
-                    a_w,
-                    a_n,
-                    a_s,
-                    b,
-                },
-            )
+        rows.for_each(|(j, ((((((a_p, a_e), a_w), a_n), a_s), b), side_row))| {
+            let row = RowMut {
+                a_p,
+                a_e,
+                a_w,
+                a_n,
+                a_s,
+                b,
+            };
+            fill(j, row, side_row)
         });
+    }
+
+    /// The coefficients and b of row j.
+    pub fn row_mut(&mut self, j: usize) -> RowMut<'_> {
+        let nx = self.pattern.nx;
+        let cells = nx * j..nx * (j + 1);
+        RowMut {
+            a_p: &mut self.a_p[cells.clone()],
+            a_e: &mut self.a_e[cells.clone()],
+            a_w: &mut self.a_w[cells.clone()],
+            a_n: &mut self.a_n[cells.clone()],
+            a_s: &mut self.a_s[cells.clone()],
+            b: &mut self.b[cells],
+        }
     }
 
     /// y = A x for the full matrix described in the module docs.

@@ -22,7 +22,7 @@
 //! ([`PhaseFields::explicit_source`], computed by [`crate::stress`]); the interphase drag is
 //! added by the partial elimination of the two-fluid model.
 
-use runout_linsolve::Stencil5;
+use runout_linsolve::{RowMut, Stencil5};
 use runout_mesh::{Grid, Sides};
 use runout_walls::RobinFace;
 
@@ -133,31 +133,105 @@ fn interp_y(grid: &Grid, field: &[f64], i: usize, j: usize) -> f64 {
 /// Σ a_nb φ_nb + b of row k: the right-hand side with the current neighbour values (used
 /// for residuals, docs/model.md §4.11, and the partial elimination, §4.5).
 pub(crate) fn neighbour_sum(a: &Stencil5, phi: &[f64], k: usize) -> f64 {
-    let nx = a.pattern().nx();
-    let mut r = a.b[k];
-    if a.a_e[k] != 0.0 {
-        r += a.a_e[k] * phi[k + 1];
-    }
-    if a.a_w[k] != 0.0 {
-        r += a.a_w[k] * phi[k - 1];
-    }
-    if a.a_n[k] != 0.0 {
-        r += a.a_n[k] * phi[k + nx];
-    }
-    if a.a_s[k] != 0.0 {
-        r += a.a_s[k] * phi[k - nx];
-    }
-    r
+    let row = RowCoefficients::of(a, k);
+    row.neighbour_sum(phi, k, a.pattern().nx())
 }
 
 /// Makes row k read φ = `value` with no neighbour links.
 pub(crate) fn fixed_row(a: &mut Stencil5, k: usize, value: f64) {
-    a.a_p[k] = 1.0;
-    a.b[k] = value;
-    a.a_e[k] = 0.0;
-    a.a_w[k] = 0.0;
-    a.a_n[k] = 0.0;
-    a.a_s[k] = 0.0;
+    RowCoefficients::fixed(value).put(a, k);
+}
+
+/// The coefficients and right-hand side of one row, a_P φ_P = Σ a_nb φ_nb + b.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct RowCoefficients {
+    pub a_p: f64,
+    pub a_e: f64,
+    pub a_w: f64,
+    pub a_n: f64,
+    pub a_s: f64,
+    pub b: f64,
+}
+
+impl RowCoefficients {
+    /// φ = `value` with no neighbour links.
+    pub fn fixed(value: f64) -> Self {
+        RowCoefficients {
+            a_p: 1.0,
+            a_e: 0.0,
+            a_w: 0.0,
+            a_n: 0.0,
+            a_s: 0.0,
+            b: value,
+        }
+    }
+
+    /// Row k of `a`.
+    #[inline]
+    pub fn of(a: &Stencil5, k: usize) -> Self {
+        RowCoefficients {
+            a_p: a.a_p[k],
+            a_e: a.a_e[k],
+            a_w: a.a_w[k],
+            a_n: a.a_n[k],
+            a_s: a.a_s[k],
+            b: a.b[k],
+        }
+    }
+
+    /// Entry i of the row `row`.
+    #[inline]
+    pub fn of_entry(row: &RowMut<'_>, i: usize) -> Self {
+        RowCoefficients {
+            a_p: row.a_p[i],
+            a_e: row.a_e[i],
+            a_w: row.a_w[i],
+            a_n: row.a_n[i],
+            a_s: row.a_s[i],
+            b: row.b[i],
+        }
+    }
+
+    /// Writes these into row k of `a`.
+    #[inline]
+    pub fn put(self, a: &mut Stencil5, k: usize) {
+        a.a_p[k] = self.a_p;
+        a.b[k] = self.b;
+        a.a_e[k] = self.a_e;
+        a.a_w[k] = self.a_w;
+        a.a_n[k] = self.a_n;
+        a.a_s[k] = self.a_s;
+    }
+
+    /// Writes these into entry i of `row`.
+    #[inline]
+    pub fn put_in(self, row: &mut RowMut<'_>, i: usize) {
+        row.a_p[i] = self.a_p;
+        row.b[i] = self.b;
+        row.a_e[i] = self.a_e;
+        row.a_w[i] = self.a_w;
+        row.a_n[i] = self.a_n;
+        row.a_s[i] = self.a_s;
+    }
+
+    /// Σ a_nb φ_nb + b of this row of cell k in an `nx`-wide block ([`neighbour_sum`]).
+    #[inline]
+    pub fn neighbour_sum(&self, phi: &[f64], k: usize, nx: usize) -> f64 {
+        let mut r = self.b;
+        if self.a_e != 0.0 {
+            r += self.a_e * phi[k + 1];
+        }
+        if self.a_w != 0.0 {
+            r += self.a_w * phi[k - 1];
+        }
+        if self.a_n != 0.0 {
+            r += self.a_n * phi[k + nx];
+        }
+        if self.a_s != 0.0 {
+            r += self.a_s * phi[k - nx];
+        }
+        r
+    }
 }
 
 /// Adds the eliminated wall-face closure (docs/model.md §3.2) of a tangential component to row

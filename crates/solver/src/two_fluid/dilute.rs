@@ -15,7 +15,7 @@ use runout_linsolve::Stencil5;
 use runout_walls::RobinFace;
 
 use super::DIL_EP_S;
-use crate::momentum::fixed_row;
+use crate::momentum::{fixed_row, RowCoefficients};
 use crate::staggered::Component;
 use runout_mesh::Grid;
 
@@ -89,28 +89,30 @@ pub(super) fn dilute_row(
     );
     // the node's own current value counts once as well: two dilute nodes that would only
     // average each other otherwise form a singular pair (MFIX's plain mean has no self term)
-    mean_row(a, k, [west, east, south, north], Some(current));
+    if let Some(mean) = mean_row([west, east, south, north], Some(current)) {
+        mean.put(a, k);
+    }
 }
 
-/// Makes row k the plain mean of the neighbours flagged (west, east, south, north), plus
-/// the node's `own` value once if given; leaves the row as it is if no neighbour is flagged.
+/// The row of the plain mean of the neighbours flagged (west, east, south, north), plus
+/// the node's `own` value once if given; `None` if no neighbour is flagged.
 pub(super) fn mean_row(
-    a: &mut Stencil5,
-    k: usize,
     [west, east, south, north]: [bool; 4],
     own: Option<f64>,
-) {
+) -> Option<RowCoefficients> {
     let count = [west, east, south, north].iter().filter(|&&x| x).count();
     if count == 0 {
-        return;
+        return None;
     }
     let one = |flag: bool| if flag { 1.0 } else { 0.0 };
-    a.a_w[k] = one(west);
-    a.a_e[k] = one(east);
-    a.a_s[k] = one(south);
-    a.a_n[k] = one(north);
-    a.a_p[k] = count as f64 + one(own.is_some());
-    a.b[k] = own.unwrap_or(0.0);
+    Some(RowCoefficients {
+        a_p: count as f64 + one(own.is_some()),
+        a_e: one(east),
+        a_w: one(west),
+        a_n: one(north),
+        a_s: one(south),
+        b: own.unwrap_or(0.0),
+    })
 }
 
 /// The cycle watch of one wall node's momentum closure
@@ -169,24 +171,21 @@ pub(super) fn next_dilute_class(dense_now: bool, dense: &mut bool, changes: &mut
     }
 }
 
-/// The θ row of a dilute cell k: the plain mean of its neighbour cells of the dense class
-/// (εs > DIL_EP_S), or `current` if there are none (docs/model.md §4.8).
+/// The θ row of dilute cell (i, j): the plain mean of its neighbour cells of the dense
+/// class (εs > DIL_EP_S), or `current` if there are none (docs/model.md §4.8).
 pub(super) fn dilute_cell_row(
-    a: &mut Stencil5,
-    k: usize,
+    (i, j): (usize, usize),
     current: f64,
     dense_class: &[bool],
     nx: usize,
-) {
-    let n = dense_class.len();
-    let (i, j) = (k % nx, k / nx);
-    fixed_row(a, k, current);
+) -> RowCoefficients {
+    let (n, k) = (dense_class.len(), i + nx * j);
     let dense = |c: usize| dense_class[c];
     let west = i > 0 && dense(k - 1);
     let east = i + 1 < nx && dense(k + 1);
     let south = j > 0 && dense(k - nx);
     let north = k + nx < n && dense(k + nx);
-    mean_row(a, k, [west, east, south, north], None);
+    mean_row([west, east, south, north], None).unwrap_or(RowCoefficients::fixed(current))
 }
 
 #[cfg(test)]

@@ -13,6 +13,8 @@
 
 use std::time::Instant;
 
+use rayon::prelude::*;
+
 use runout_linsolve::Stencil5;
 
 use super::diagnostics::{since, Diagnostics};
@@ -24,7 +26,7 @@ use super::{
     DIL_EP_S, THETA_SMALL,
 };
 use crate::energy::{assemble_theta, EnergyInputs};
-use crate::momentum::{fixed_row, neighbour_sum};
+use crate::momentum::RowCoefficients;
 
 /// Step 5: granular energy of each solids phase (module doc); returns the θ residual
 /// summed over phases.
@@ -93,7 +95,7 @@ pub(super) fn granular_energy(
             relax,
             nx,
         };
-        residual += rows.finish(&mut s.a_theta, &mut worst_theta);
+        residual += rows.finish(&mut s.a_theta, &mut s.theta_terms, &mut worst_theta);
         let t = Instant::now();
         diagnostics.profile.iterations.theta += work
             .solvers
@@ -112,23 +114,28 @@ pub(super) fn granular_energy(
 }
 
 /// The class of each θ row: MFIX's εs > DIL_EP_S, unless `freeze` (a cycling cell keeps
-/// the class [`next_dilute_class`] gives it).
+/// the class [`next_dilute_class`] gives it); cells in parallel.
 fn classify_rows(eps: &[f64], s: &mut PhaseWork, freeze: bool) {
-    for k in 0..eps.len() {
-        let dense_now = eps[k] > DIL_EP_S;
+    let cells = eps
+        .par_iter()
+        .zip(&mut s.theta_dense)
+        .zip(&mut s.theta_class_changes)
+        .zip(&mut s.theta_dilute)
+        .with_min_len(CLASSIFY_MIN_CELLS);
+    cells.for_each(|(((eps, dense), changes), dilute)| {
+        let dense_now = *eps > DIL_EP_S;
         if freeze {
-            next_dilute_class(
-                dense_now,
-                &mut s.theta_dense[k],
-                &mut s.theta_class_changes[k],
-            );
+            next_dilute_class(dense_now, dense, changes);
         } else {
-            s.theta_dense[k] = dense_now;
-            s.theta_class_changes[k] = 0;
+            *dense = dense_now;
+            *changes = 0;
         }
-        s.theta_dilute[k] = !s.theta_dense[k];
-    }
+        *dilute = !*dense;
+    });
 }
+
+/// Cells per task of [`classify_rows`].
+const CLASSIFY_MIN_CELLS: usize = 1 << 14;
 
 /// What the θ rows of one phase are finished with.
 struct ThetaRows<'a> {
@@ -148,36 +155,46 @@ struct ThetaRows<'a> {
 
 impl ThetaRows<'_> {
     /// Replaces the dilute rows, fixes the forced ones and relaxes the others of the
-    /// assembled `a`; returns the phase's residual and keeps its largest (|residual|, cell)
-    /// in `worst` (module doc).
-    fn finish(&self, a: &mut Stencil5, worst: &mut (f64, usize)) -> f64 {
-        let (theta, relax) = (self.theta, self.relax);
+    /// assembled `a`, rows in parallel; returns the phase's residual, summed in cell order
+    /// from each row's terms kept in `terms`, and keeps its largest (|residual|, cell) in
+    /// `worst` (module doc).
+    fn finish(&self, a: &mut Stencil5, terms: &mut [(f64, f64)], worst: &mut (f64, usize)) -> f64 {
+        let (theta, relax, nx) = (self.theta, self.relax, self.nx);
+        a.par_fill_rows_with(terms, |j, mut row, terms| {
+            for i in 0..nx {
+                let k = i + nx * j;
+                terms[i] = (0.0, 0.0);
+                if !self.dense[k] {
+                    // the mean θ of the neighbours with εs > DIL_EP_S, or kept if none
+                    // (docs/model.md §4.8, MFIX `source_phi.f`)
+                    dilute_cell_row((i, j), theta[k], self.dense, nx).put_in(&mut row, i);
+                    continue;
+                }
+                // a fixed row before the residual and not relaxed (MFIX
+                // `solve_granular_energy.f`, `under_relax.f`)
+                let forced = self.eps_g_star.is_some_and(|star| self.eps_g[k] < star);
+                if forced {
+                    RowCoefficients::fixed(THETA_SMALL).put_in(&mut row, i); // §1.3 (Schaeffer)
+                }
+                let coefficients = RowCoefficients::of_entry(&row, i);
+                let nb = coefficients.neighbour_sum(theta, k, nx) - row.a_p[i] * theta[k];
+                terms[i] = (nb.abs(), (row.a_p[i] * theta[k]).abs());
+                if forced {
+                    continue; // fixed rows are not relaxed (MFIX `under_relax.f`, §1.3)
+                }
+                let ap = row.a_p[i] / relax;
+                row.b[i] += (1.0 - relax) * ap * theta[k];
+                row.a_p[i] = ap;
+            }
+        });
+        // a dilute row's terms are zero and change neither sum nor the largest
         let (mut num, mut den) = (0.0, 0.0);
-        for k in 0..theta.len() {
-            if !self.dense[k] {
-                // the mean θ of the neighbours with εs > DIL_EP_S, or kept if none
-                // (docs/model.md §4.8, MFIX `source_phi.f`)
-                dilute_cell_row(a, k, theta[k], self.dense, self.nx);
-                continue;
+        for (k, &(term, scale)) in terms.iter().enumerate() {
+            num += term;
+            if term > worst.0 {
+                *worst = (term, k);
             }
-            // a fixed row before the residual and not relaxed (MFIX
-            // `solve_granular_energy.f`, `under_relax.f`)
-            let forced = self.eps_g_star.is_some_and(|star| self.eps_g[k] < star);
-            if forced {
-                fixed_row(a, k, THETA_SMALL); // docs/model.md §1.3 (Schaeffer)
-            }
-            let nb = neighbour_sum(a, theta, k) - a.a_p[k] * theta[k];
-            num += nb.abs();
-            if nb.abs() > worst.0 {
-                *worst = (nb.abs(), k);
-            }
-            den += (a.a_p[k] * theta[k]).abs();
-            if forced {
-                continue; // fixed rows are not relaxed (MFIX `under_relax.f`, §1.3)
-            }
-            let ap = a.a_p[k] / relax;
-            a.b[k] += (1.0 - relax) * ap * theta[k];
-            a.a_p[k] = ap;
+            den += scale;
         }
         if den > 0.0 {
             num / den

@@ -99,6 +99,9 @@ pub(crate) struct PhaseWork {
     pub theta_class_changes: Vec<u8>,
     /// the negation of `theta_dense`: the rows the θ assembly skips
     pub theta_dilute: Vec<bool>,
+    /// per cell, the θ residual's |Σ a_nb θ_nb + b − a_P θ_P| and |a_P θ_P| (zero on
+    /// dilute rows), summed in cell order (docs/model.md §4.11)
+    pub theta_terms: Vec<(f64, f64)>,
 }
 
 impl PhaseWork {
@@ -122,6 +125,7 @@ impl PhaseWork {
             theta_dense: vec![false; n],
             theta_class_changes: vec![0; n],
             theta_dilute: vec![true; n],
+            theta_terms: vec![(0.0, 0.0); n],
         }
     }
 }
