@@ -14,7 +14,6 @@
 
 use rayon::prelude::*;
 
-use crate::kernels::PAR_MIN_LEN;
 use crate::team::Team;
 use crate::LinSolveError;
 
@@ -162,7 +161,7 @@ impl Stencil5 {
     }
 
     /// Fills the coefficients row by row (one row = one j, cells i = 0..nx), in parallel
-    /// over rows with rayon for blocks of more than 16k cells. `fill(j, row)` gets mutable
+    /// over rows with rayon in tasks of [`ROW_TASK_CELLS`] cells. `fill(j, row)` gets mutable
     /// slices of length nx of every coefficient and of b for row j.
     pub fn par_fill_rows<F>(&mut self, fill: F)
     where
@@ -194,7 +193,8 @@ impl Stencil5 {
             .zip(self.b.par_chunks_mut(nx))
             .zip(side.par_chunks_mut(nx))
             .enumerate()
-            .with_min_len(rows_per_task(nx));
+            .with_min_len(rows_per_task(nx))
+            .with_max_len(rows_per_task(nx));
         rows.for_each(|(j, ((((((a_p, a_e), a_w), a_n), a_s), b), side_row))| {
             let row = RowMut {
                 a_p,
@@ -391,7 +391,8 @@ impl Op5 {
             .zip(self.an.par_chunks_mut(nx))
             .zip(self.as_.par_chunks_mut(nx))
             .enumerate()
-            .with_min_len(rows_per_task(nx));
+            .with_min_len(rows_per_task(nx))
+            .with_max_len(rows_per_task(nx));
         rows.for_each(|(j, ((((ap, ae), aw), an), as_))| {
             for i in 0..nx {
                 let k = i + nx * j;
@@ -442,13 +443,22 @@ pub(crate) fn reduced_rhs(a: &Stencil5, b_eff: &mut [f64]) {
     }
 }
 
+/// Cells per rayon task of a parallel row loop (whole rows, at least one). Small, so that
+/// a loop whose work sits in a few rows (the solids of a slide near its floor) still
+/// spreads over the threads: with tasks of 16k cells, 400 × 100 cells made 2–3 tasks and
+/// the rows with solids fell to one thread (docs/performance.md, session 23). A row's
+/// result never depends on its task.
+pub(crate) const ROW_TASK_CELLS: usize = 1 << 11;
+
+/// Rows per task of a parallel row loop over an `nx`-wide block ([`ROW_TASK_CELLS`]).
 pub(crate) fn rows_per_task(nx: usize) -> usize {
-    (PAR_MIN_LEN / nx.max(1)).max(1)
+    (ROW_TASK_CELLS / nx.max(1)).max(1)
 }
 
 /// Calls `f(j, row)` for every row j of `row_len` entries of `data` (a cell or face array,
-/// x fastest), in parallel over blocks of rows of at least [`PAR_MIN_LEN`] entries, serially
-/// below that: the loop of [`Stencil5::par_fill_rows`], for any array. Each row is computed
+/// x fastest): in parallel over tasks of [`ROW_TASK_CELLS`] cells from
+/// [`crate::kernels::PAR_MIN_LEN`] entries, serially below that; the loop of
+/// [`Stencil5::par_fill_rows`], for any array. Each row is computed
 /// as a serial loop would compute it, so the results do not depend on the number of threads.
 pub fn for_each_row<T, F>(data: &mut [T], row_len: usize, f: F)
 where
@@ -469,7 +479,11 @@ where
             .enumerate()
             .for_each(|(j, row)| f(j, row));
     } else {
-        let rows = (team.min_chunk() / row_len.max(1)).max(1);
+        let rows = if team.is_rayon() {
+            rows_per_task(row_len)
+        } else {
+            (team.min_chunk() / row_len.max(1)).max(1)
+        };
         team.for_each_chunk_mut(data, rows * row_len, |c, block| {
             block
                 .chunks_mut(row_len)

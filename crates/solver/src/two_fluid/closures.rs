@@ -126,6 +126,7 @@ fn evaluate_cells(
     // tasks of at least PAR_MIN_CELLS cells: a small grid runs as one task
     let rows_per_task = PAR_MIN_CELLS.div_ceil(nx);
     rows.with_min_len(rows_per_task)
+        .with_max_len(rows_per_task)
         .enumerate()
         .for_each(|(j, mut row)| {
             for i in 0..nx {

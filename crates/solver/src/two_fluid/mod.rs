@@ -95,9 +95,10 @@ const GAS_RESIDUAL_FLOOR: f64 = 1e-5;
 /// Relative tolerance of the gas pressure-correction solve (see [`TwoFluid::new`]).
 const PRESSURE_RTOL: f64 = 1e-2;
 
-/// Fewest cells per parallel task of the per-cell closures (rayon's fork/join costs a few
-/// microseconds, the closures of one cell about 0.1–0.2 µs).
-const PAR_MIN_CELLS: usize = 4096;
+/// Cells per parallel task of the per-cell closures (rayon's fork/join costs about a
+/// microsecond, the closures of one cell with solids 0.1–0.2 µs, of one without nothing):
+/// small, so that the rows with solids spread over the threads.
+const PAR_MIN_CELLS: usize = 2048;
 
 /// θ floor after each solve (docs/model.md §1.3, MFIX `adjust_theta.f`).
 const THETA_SMALL: f64 = runout_closures::guards::THETA_SMALL;
