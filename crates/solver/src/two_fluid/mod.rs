@@ -95,6 +95,14 @@ const GAS_RESIDUAL_FLOOR: f64 = 1e-5;
 /// Relative tolerance of the gas pressure-correction solve (see [`TwoFluid::new`]).
 const PRESSURE_RTOL: f64 = 1e-2;
 
+/// Cells of the pressure multigrid's coarsest level at most (band LU): on the pressure-like
+/// model problem an outer iteration costs 14 % less than with 1024 on 200 × 50 cells and
+/// 2–6 % less on 400 × 100, 800 × 200 and 1000 × 90, at the same iteration counts
+/// (`cargo run --release -p runout-linsolve --example mg_threads`, docs/performance.md,
+/// session 23). The ε' preconditioner keeps the default 1024: its solves took longer with
+/// 4096.
+const PRESSURE_COARSEST_CELLS: usize = 4096;
+
 /// Cells per parallel task of the per-cell closures (rayon's fork/join costs about a
 /// microsecond, the closures of one cell with solids 0.1–0.2 µs, of one without nothing):
 /// small, so that the rows with solids spread over the threads.

@@ -13,7 +13,7 @@ use super::model::Model;
 use super::{
     lin, IterationFlags, PhaseCoefficients, PhaseWallClosures, PhaseWork, Scene, SolidsSpec,
     Solvers, State, TwoFluid, TwoFluidError, TwoFluidSettings, Workspace, MAX_SOLIDS_PHASES,
-    PRESSURE_RTOL, THETA_SMALL,
+    PRESSURE_COARSEST_CELLS, PRESSURE_RTOL, THETA_SMALL,
 };
 use crate::single_phase::{Fluid, SideBc};
 use crate::transport::FaceData;
@@ -186,6 +186,7 @@ fn linear_solvers(
     let mut solver_p = build(&LinearSolverKind::MultigridCg(MultigridParams {
         rtol: PRESSURE_RTOL,
         max_iter: 20,
+        coarsest_max_cells: PRESSURE_COARSEST_CELLS,
         ..MultigridParams::default()
     }));
     let mut solver_eps = active(&LinearSolverKind::volume_fraction_default());
