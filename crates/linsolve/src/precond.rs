@@ -8,6 +8,13 @@ use crate::stencil::Op5;
 use crate::team::Team;
 use crate::{Cycle, LinSolveError, MultigridParams};
 
+/// Coarsest level of the multigrid preconditioner at most: its systems (the ε' correction
+/// on the coupled rectangle) are small and set up at every outer iteration, where the band
+/// LU's factorisation of a 1024-cell level cost more than the levels it replaces (family M
+/// to 0.2 s on one thread: ε' solves 0.29–0.30 s with 1024, 0.22 s with 64;
+/// docs/performance.md, session 23).
+const PRECOND_COARSEST_CELLS: usize = 64;
+
 /// Preconditioner choice for BiCGSTAB.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Precond {
@@ -61,6 +68,7 @@ impl PrecondImpl {
                 };
                 let params = MultigridParams {
                     cycle,
+                    coarsest_max_cells: PRECOND_COARSEST_CELLS,
                     ..MultigridParams::default()
                 };
                 Self::Multigrid(Box::new(Hierarchy::allocate(nx, ny, &params)))

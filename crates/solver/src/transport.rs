@@ -141,9 +141,9 @@ pub fn assemble(faces: &mut FaceData, phi: &[f64], scheme: Scheme, a: &mut Stenc
     assemble_masked(faces, phi, scheme, None, a);
 }
 
-/// [`assemble`], leaving the coefficients of the nodes marked in `skip` untouched (the
-/// caller replaces those rows; their faces' fluxes must be zero unless a neighbour is
-/// active).
+/// [`assemble`], leaving the rows of the nodes marked in `skip` untouched, b included
+/// (the caller replaces those rows; their faces' fluxes must be zero unless a neighbour
+/// is active).
 pub fn assemble_masked(
     faces: &mut FaceData,
     phi: &[f64],
@@ -161,47 +161,48 @@ pub fn assemble_masked(
     a.par_fill_rows(|j, row| {
         for i in 0..mx {
             let k = i + mx * j;
-            if !skip.is_some_and(|s| s[k]) {
-                let fe = faces.flux_x[faces.xf(i + 1, j)];
-                let fw = faces.flux_x[faces.xf(i, j)];
-                let fn_ = faces.flux_y[faces.yf(i, j + 1)];
-                let fs = faces.flux_y[faces.yf(i, j)];
-                let ae = faces.cond_x[faces.xf(i + 1, j)] + (-fe).max(0.0);
-                let aw = faces.cond_x[faces.xf(i, j)] + fw.max(0.0);
-                let an = faces.cond_y[faces.yf(i, j + 1)] + (-fn_).max(0.0);
-                let as_ = faces.cond_y[faces.yf(i, j)] + fs.max(0.0);
-                // outer faces have no neighbour in the block
-                row.a_e[i] = if i + 1 < mx { ae } else { 0.0 };
-                row.a_w[i] = if i > 0 { aw } else { 0.0 };
-                row.a_n[i] = if j + 1 < my { an } else { 0.0 };
-                row.a_s[i] = if j > 0 { as_ } else { 0.0 };
-                row.a_p[i] = row.a_e[i] + row.a_w[i] + row.a_n[i] + row.a_s[i];
-                row.b[i] = 0.0;
+            if skip.is_some_and(|s| s[k]) {
+                continue;
             }
+            let (w, e) = (faces.xf(i, j), faces.xf(i + 1, j));
+            let (s, n) = (faces.yf(i, j), faces.yf(i, j + 1));
+            let (fe, fw) = (faces.flux_x[e], faces.flux_x[w]);
+            let (fn_, fs) = (faces.flux_y[n], faces.flux_y[s]);
+            let ae = faces.cond_x[e] + (-fe).max(0.0);
+            let aw = faces.cond_x[w] + fw.max(0.0);
+            let an = faces.cond_y[n] + (-fn_).max(0.0);
+            let as_ = faces.cond_y[s] + fs.max(0.0);
+            // outer faces have no neighbour in the block
+            row.a_e[i] = if i + 1 < mx { ae } else { 0.0 };
+            row.a_w[i] = if i > 0 { aw } else { 0.0 };
+            row.a_n[i] = if j + 1 < my { an } else { 0.0 };
+            row.a_s[i] = if j > 0 { as_ } else { 0.0 };
+            row.a_p[i] = row.a_e[i] + row.a_w[i] + row.a_n[i] + row.a_s[i];
+            let mut b = 0.0;
             if superbee {
                 // δ enters through the west/south face and leaves through the east/north
                 // face; nothing where F = 0, e.g. where a phase is absent
-                let (w, e) = (faces.xf(i, j), faces.xf(i + 1, j));
-                let (s, n) = (faces.yf(i, j), faces.yf(i, j + 1));
-                if i > 0 && faces.flux_x[w] != 0.0 {
-                    row.b[i] += faces.correction_x[w];
+                if i > 0 && fw != 0.0 {
+                    b += faces.correction_x[w];
                 }
-                if i + 1 < mx && faces.flux_x[e] != 0.0 {
-                    row.b[i] -= faces.correction_x[e];
+                if i + 1 < mx && fe != 0.0 {
+                    b -= faces.correction_x[e];
                 }
-                if j > 0 && faces.flux_y[s] != 0.0 {
-                    row.b[i] += faces.correction_y[s];
+                if j > 0 && fs != 0.0 {
+                    b += faces.correction_y[s];
                 }
-                if j + 1 < my && faces.flux_y[n] != 0.0 {
-                    row.b[i] -= faces.correction_y[n];
+                if j + 1 < my && fn_ != 0.0 {
+                    b -= faces.correction_y[n];
                 }
             }
+            row.b[i] = b;
         }
     });
 }
 
 /// The Superbee deferred-correction flux δ = F (φ_f − φ_upwind) of every interior face
-/// (docs/model.md §4.2), rows in parallel.
+/// with F ≠ 0 (docs/model.md §4.2), rows in parallel; the others keep a stale value that
+/// [`assemble_masked`] does not read.
 fn deferred_corrections(faces: &mut FaceData, phi: &[f64]) {
     let (mx, my) = (faces.mx, faces.my);
     let at = |i: isize, j: isize| -> Option<f64> {
@@ -212,10 +213,11 @@ fn deferred_corrections(faces: &mut FaceData, phi: &[f64]) {
     for_each_row(&mut faces.correction_x, mx + 1, |j, row| {
         for i in 1..mx {
             let f = flux_x[i + (mx + 1) * j];
+            if f == 0.0 {
+                continue; // not read (assemble_masked)
+            }
             let (ii, jj) = (i as isize, j as isize);
-            row[i] = if f == 0.0 {
-                0.0
-            } else if f > 0.0 {
+            row[i] = if f > 0.0 {
                 correction(f, at(ii - 2, jj), phi[i - 1 + mx * j], phi[i + mx * j])
             } else {
                 correction(f, at(ii + 1, jj), phi[i + mx * j], phi[i - 1 + mx * j])
@@ -228,10 +230,11 @@ fn deferred_corrections(faces: &mut FaceData, phi: &[f64]) {
         }
         for (i, delta) in row.iter_mut().enumerate() {
             let f = flux_y[i + mx * j];
+            if f == 0.0 {
+                continue; // not read (assemble_masked)
+            }
             let (ii, jj) = (i as isize, j as isize);
-            *delta = if f == 0.0 {
-                0.0
-            } else if f > 0.0 {
+            *delta = if f > 0.0 {
                 correction(f, at(ii, jj - 2), phi[i + mx * (j - 1)], phi[i + mx * j])
             } else {
                 correction(f, at(ii, jj + 1), phi[i + mx * j], phi[i + mx * (j - 1)])
