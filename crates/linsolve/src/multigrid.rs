@@ -190,21 +190,11 @@ impl Level {
             Ok(())
         };
         let x_factors = (&mut self.x_inv[..], &mut self.x_up[..], &mut self.x_low[..]);
-        let y_factors = (
-            &mut self.y_inv[..],
-            &mut self.y_up[..],
-            &mut self.y_join[..],
-        );
+        let (y_inv, y_up, y_join) = (&mut self.y_inv, &mut self.y_up, &mut self.y_join);
         let (x, y) = if n < LINES_PAR_MIN_CELLS {
-            (
-                x_lines(x_factors),
-                y_lines(y_factors.0, y_factors.1, y_factors.2),
-            )
+            (x_lines(x_factors), y_lines(y_inv, y_up, y_join))
         } else {
-            rayon::join(
-                || x_lines(x_factors),
-                || y_lines(y_factors.0, y_factors.1, y_factors.2),
-            )
+            rayon::join(|| x_lines(x_factors), || y_lines(y_inv, y_up, y_join))
         };
         x.and(y)
     }
