@@ -161,7 +161,7 @@ impl Stencil5 {
     }
 
     /// Fills the coefficients row by row (one row = one j, cells i = 0..nx), in parallel
-    /// over rows with rayon in tasks of [`ROW_TASK_CELLS`] cells. `fill(j, row)` gets mutable
+    /// over rows with rayon in tasks of about 2 048 cells. `fill(j, row)` gets mutable
     /// slices of length nx of every coefficient and of b for row j.
     pub fn par_fill_rows<F>(&mut self, fill: F)
     where
@@ -456,8 +456,8 @@ pub(crate) fn rows_per_task(nx: usize) -> usize {
 }
 
 /// Calls `f(j, row)` for every row j of `row_len` entries of `data` (a cell or face array,
-/// x fastest): in parallel over tasks of [`ROW_TASK_CELLS`] cells from
-/// [`crate::kernels::PAR_MIN_LEN`] entries, serially below that; the loop of
+/// x fastest): in parallel over tasks of about 2 048 cells from 16 384 entries,
+/// serially below that; the loop of
 /// [`Stencil5::par_fill_rows`], for any array. Each row is computed
 /// as a serial loop would compute it, so the results do not depend on the number of threads.
 pub fn for_each_row<T, F>(data: &mut [T], row_len: usize, f: F)
