@@ -33,8 +33,10 @@ fn chunk_len_on(team: &Team<'_>, n: usize) -> usize {
     }
 }
 
+/// x · y on one thread, summed in four interleaved partial sums (the order is fixed by
+/// the length alone).
 #[inline]
-fn dot_serial(x: &[f64], y: &[f64]) -> f64 {
+pub(crate) fn dot_serial(x: &[f64], y: &[f64]) -> f64 {
     // four independent accumulators let the compiler vectorise the loop
     let mut acc = [0.0f64; 4];
     let mut xc = x.chunks_exact(4);
