@@ -93,15 +93,21 @@ impl Rect {
 pub fn coupled_rect(a: &Stencil5) -> Option<Rect> {
     let (nx, ny) = (a.pattern().nx(), a.pattern().ny());
     let fixed = a.pattern().fixed_mask();
-    let linked = |k: usize| {
-        ((a.a_e[k] != 0.0) | (a.a_w[k] != 0.0) | (a.a_n[k] != 0.0) | (a.a_s[k] != 0.0)) & !fixed[k]
-    };
     let row_rect = |j: usize| {
-        let row = nx * j;
-        let first = (0..nx).position(|i| linked(row + i))?;
-        let last = (first..nx)
-            .rposition(|i| linked(row + i))
-            .map_or(first, |p| first + p);
+        // the row's slices, so that the scans below carry no bounds checks
+        let row = nx * j..nx * (j + 1);
+        let (ae, aw, an, as_) = (
+            &a.a_e[row.clone()],
+            &a.a_w[row.clone()],
+            &a.a_n[row.clone()],
+            &a.a_s[row.clone()],
+        );
+        let fixed = &fixed[row];
+        let linked = |i: usize| {
+            ((ae[i] != 0.0) | (aw[i] != 0.0) | (an[i] != 0.0) | (as_[i] != 0.0)) & !fixed[i]
+        };
+        let first = (0..nx).position(linked)?;
+        let last = (first..nx).rposition(linked).map_or(first, |p| first + p);
         Some(Rect {
             i0: first,
             i1: last + 1,

@@ -394,20 +394,30 @@ impl Op5 {
             .with_min_len(rows_per_task(nx))
             .with_max_len(rows_per_task(nx));
         rows.for_each(|(j, ((((ap, ae), aw), an), as_))| {
+            let row = nx * j..nx * (j + 1);
+            ap.copy_from_slice(&a.a_p[row.clone()]);
+            // a link survives when its own row and the neighbour's are free: a select per
+            // entry over the row's slices (the rows above and below, if any, shifted by nx)
+            let own = &fixed[row.clone()];
+            let keep = |v: f64, free: bool| if free { v } else { 0.0 };
             for i in 0..nx {
-                let k = i + nx * j;
-                ap[i] = a.a_p[k];
-                if fixed[k] {
-                    (ae[i], aw[i], an[i], as_[i]) = (0.0, 0.0, 0.0, 0.0);
-                    continue;
-                }
-                let keep =
-                    |inside: bool, nb: usize, v: f64| if inside && !fixed[nb] { v } else { 0.0 };
-                ae[i] = keep(i + 1 < nx, k + 1, a.a_e[k]);
-                aw[i] = keep(i > 0, k.wrapping_sub(1), a.a_w[k]);
-                an[i] = keep(j + 1 < ny, k + nx, a.a_n[k]);
-                as_[i] = keep(j > 0, k.wrapping_sub(nx), a.a_s[k]);
+                let east_free = i + 1 < nx && !own[(i + 1).min(nx - 1)];
+                let west_free = i > 0 && !own[i.saturating_sub(1)];
+                ae[i] = keep(a.a_e[row.start + i], !own[i] && east_free);
+                aw[i] = keep(a.a_w[row.start + i], !own[i] && west_free);
             }
+            let vertical = |out: &mut [f64], coeff: &[f64], nb: Option<&[bool]>| match nb {
+                Some(nb) => {
+                    for ((o, &v), (&f, &g)) in out.iter_mut().zip(coeff).zip(own.iter().zip(nb)) {
+                        *o = keep(v, !f && !g);
+                    }
+                }
+                None => out.iter_mut().for_each(|o| *o = 0.0),
+            };
+            let north = (j + 1 < ny).then(|| &fixed[row.start + nx..row.end + nx]);
+            let south = (j > 0).then(|| &fixed[row.start - nx..row.end - nx]);
+            vertical(an, &a.a_n[row.clone()], north);
+            vertical(as_, &a.a_s[row], south);
         });
     }
 }
