@@ -400,11 +400,11 @@ impl Op5 {
             // entry over the row's slices (the rows above and below, if any, shifted by nx)
             let own = &fixed[row.clone()];
             let keep = |v: f64, free: bool| if free { v } else { 0.0 };
+            let (ae_in, aw_in) = (&a.a_e[row.clone()], &a.a_w[row.clone()]);
             for i in 0..nx {
-                let east_free = i + 1 < nx && !own[(i + 1).min(nx - 1)];
-                let west_free = i > 0 && !own[i.saturating_sub(1)];
-                ae[i] = keep(a.a_e[row.start + i], !own[i] && east_free);
-                aw[i] = keep(a.a_w[row.start + i], !own[i] && west_free);
+                let free = !own[i];
+                ae[i] = keep(ae_in[i], free && i + 1 < nx && !own[i + 1]);
+                aw[i] = keep(aw_in[i], free && i > 0 && !own[i - 1]);
             }
             let vertical = |out: &mut [f64], coeff: &[f64], nb: Option<&[bool]>| match nb {
                 Some(nb) => {
@@ -591,6 +591,70 @@ pub(crate) fn set_fixed_values(a: &Stencil5, x: &mut [f64]) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The reduced operator keeps a_P everywhere and a link only between two free cells
+    /// inside the block: checked link by link in grid coordinates, on a block with fixed
+    /// cells on its edges and inside, below and above the parallel row threshold.
+    #[test]
+    fn reduced_operator_drops_the_links_of_fixed_cells_and_of_the_edges() {
+        for (nx, ny) in [(6, 5), (150, 120)] {
+            let is_fixed = |i: usize, j: usize| (i * 7 + j * 3) % 5 == 0 || j == 0;
+            let pattern = Pattern::from_fn(nx, ny, |i, j| {
+                if is_fixed(i, j) {
+                    CellKind::Fixed
+                } else {
+                    CellKind::Active
+                }
+            })
+            .unwrap();
+            let mut a = Stencil5::new(pattern);
+            let value = |k: usize, s: f64| 1.0 + (k as f64 * s).sin().abs();
+            for k in 0..nx * ny {
+                (a.a_p[k], a.a_e[k], a.a_w[k]) =
+                    (10.0 + value(k, 0.3), value(k, 0.7), value(k, 1.1));
+                (a.a_n[k], a.a_s[k]) = (value(k, 1.3), value(k, 1.7));
+            }
+            let mut op = Op5::zeros(nx, ny);
+            op.reduce_from(&a);
+            for j in 0..ny {
+                for i in 0..nx {
+                    let k = i + nx * j;
+                    // the link to (ni, nj) survives iff both ends are free cells of the block
+                    let expect = |ni: Option<usize>, nj: Option<usize>, v: f64| match (ni, nj) {
+                        (Some(ni), Some(nj)) if ni < nx && nj < ny => {
+                            if is_fixed(i, j) || is_fixed(ni, nj) {
+                                0.0
+                            } else {
+                                v
+                            }
+                        }
+                        _ => 0.0,
+                    };
+                    assert_eq!(op.ap[k], a.a_p[k]);
+                    assert_eq!(
+                        op.ae[k],
+                        expect(Some(i + 1), Some(j), a.a_e[k]),
+                        "e {i} {j}"
+                    );
+                    assert_eq!(
+                        op.aw[k],
+                        expect(i.checked_sub(1), Some(j), a.a_w[k]),
+                        "w {i} {j}"
+                    );
+                    assert_eq!(
+                        op.an[k],
+                        expect(Some(i), Some(j + 1), a.a_n[k]),
+                        "n {i} {j}"
+                    );
+                    assert_eq!(
+                        op.as_[k],
+                        expect(Some(i), j.checked_sub(1), a.a_s[k]),
+                        "s {i} {j}"
+                    );
+                }
+            }
+        }
+    }
 
     /// The fused residual equals A x followed by b − A x bit for bit, on a grid below and one
     /// above the parallel threshold, with every link non-zero.
