@@ -245,8 +245,35 @@ pub const RELAXATION: Band = Band {
     reason: "MFIX uses 0.5..0.8; below 0.01 the outer iteration cannot converge in its cap",
 };
 
+/// μ(I) friction coefficients `models.friction.MuI.mu_s` and `mu_2`.
+pub const MU_I_FRICTION: Band = Band {
+    what: "μ(I) friction coefficient μ_s or μ_2",
+    lo: 0.01,
+    hi: 2.0,
+    unit: "-",
+    reason: "tan 0.6° to tan 63°: measured grains lie in 0.2..1 (glass beads 0.38/0.64)",
+};
+
+/// μ(I) inertial-number scale `models.friction.MuI.i_0`.
+pub const MU_I_I0: Band = Band {
+    what: "μ(I) inertial-number scale I_0",
+    lo: 1e-3,
+    hi: 10.0,
+    unit: "-",
+    reason: "published fits lie in 0.1..0.5 (glass beads 0.279)",
+};
+
+/// μ(I) regularisation `models.friction.MuI.shear_rate_floor`.
+pub const MU_I_SHEAR_RATE_FLOOR: Band = Band {
+    what: "μ(I) strain-rate floor γ̇_min",
+    lo: 1e-8,
+    hi: 1.0,
+    unit: "1/s",
+    reason: "a deposit creeps at about γ̇_min h: above 1 s⁻¹ it is no deposit, below 1e-8 the viscosity overflows the solves",
+};
+
 /// Every band, in the order of docs/input-validation.md.
-pub const BANDS: [Band; 22] = [
+pub const BANDS: [Band; 25] = [
     DIAMETER,
     PARTICLE_DENSITY,
     GAS_DENSITY,
@@ -269,6 +296,9 @@ pub const BANDS: [Band; 22] = [
     MAX_PACKING,
     TOLERANCE,
     RELAXATION,
+    MU_I_FRICTION,
+    MU_I_I0,
+    MU_I_SHEAR_RATE_FLOOR,
 ];
 
 /// Most cells of a case's grid at any fidelity: 10 million, 110 times the paper's finest

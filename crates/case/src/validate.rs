@@ -91,6 +91,23 @@ fn check_materials(c: &mut Checker, case: &Case) {
         }
         KineticTheory::Algebraic => {}
     }
+    if let FrictionModel::MuI(law) = &case.models.friction {
+        let p = "models.friction.MuI";
+        c.band(format!("{p}.mu_s"), law.mu_s, &MU_I_FRICTION);
+        c.band(format!("{p}.mu_2"), law.mu_2, &MU_I_FRICTION);
+        c.range(
+            format!("{p}.mu_2"),
+            law.mu_2,
+            B::Open(law.mu_s),
+            B::Closed(MU_I_FRICTION.hi),
+        );
+        c.band(format!("{p}.i_0"), law.i_0, &MU_I_I0);
+        c.band(
+            format!("{p}.shear_rate_floor"),
+            law.shear_rate_floor,
+            &MU_I_SHEAR_RATE_FLOOR,
+        );
+    }
     if let Drag::SyamlalOBrien { c1, d1 } = &case.models.drag {
         c.band("models.drag.c1", *c1, &DRAG_C1);
         c.band("models.drag.d1", *d1, &DRAG_D1);

@@ -812,3 +812,44 @@ fn per_axis_coarsening_is_bounded() {
         &["fidelity.smoke.coarsen_y"],
     );
 }
+
+/// μ(I) input: μ_2 ≤ μ_s, I_0 ≤ 0, a negative or NaN value and an unknown parameter are each
+/// refused with the field named (issue 43 item 6); a well-formed μ(I) case loads.
+#[test]
+fn mu_i_parameters_out_of_range() {
+    let with = |law: &str| replace_once(&mslide(), "friction: Princeton", law);
+    let ok = with("friction: MuI(mu_s: 0.38, mu_2: 0.64, i_0: 0.28)");
+    if let Err(e) = load_text("mui-ok.ron", &ok).1 {
+        panic!("{e}");
+    }
+    rejected(
+        "mui-order.ron",
+        &with("friction: MuI(mu_s: 0.5, mu_2: 0.4, i_0: 0.28)"),
+        &["models.friction.MuI.mu_2", "0.4", "(0.5, 2]"],
+    );
+    rejected(
+        "mui-i0.ron",
+        &with("friction: MuI(mu_s: 0.38, mu_2: 0.64, i_0: 0.0)"),
+        &["models.friction.MuI.i_0", "[0.001, 10]"],
+    );
+    rejected(
+        "mui-neg.ron",
+        &with("friction: MuI(mu_s: -0.38, mu_2: 0.64, i_0: 0.28)"),
+        &["models.friction.MuI.mu_s", "-0.38"],
+    );
+    rejected(
+        "mui-nan.ron",
+        &with("friction: MuI(mu_s: 0.38, mu_2: NaN, i_0: 0.28)"),
+        &["models.friction.MuI.mu_2", "NaN"],
+    );
+    rejected(
+        "mui-floor.ron",
+        &with("friction: MuI(mu_s: 0.38, mu_2: 0.64, i_0: 0.28, shear_rate_floor: 10.0)"),
+        &["models.friction.MuI.shear_rate_floor", "[1e-8, 1] 1/s"],
+    );
+    rejected(
+        "mui-unknown.ron",
+        &with("friction: MuI(mu_s: 0.38, mu_2: 0.64, i_0: 0.28, mu_3: 1.0)"),
+        &["mu_3"],
+    );
+}

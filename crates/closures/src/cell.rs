@@ -170,6 +170,7 @@ pub fn evaluate(state: &CellState, params: &ClosureParams) -> ClosureSet {
         eps_s,
         state.theta,
         particles.diameter,
+        particles.density,
         state.tr_d,
         state.s_ddot_s,
         &params.friction,

@@ -5,6 +5,9 @@
 //! - Princeton / Srivastava & Sundaresan (2003), the paper's model (paper Eqs. 9–10 as MFIX
 //!   computes them; docs/model.md §2.4.2 and §3.10; MFIX `calc_mu_s.f` FRICTION_PRINCETON).
 //!
+//! - μ(I), the rate-dependent friction of Jop, Forterre & Pouliquen (2006), not in MFIX
+//!   ([`crate::mu_i`]; docs/model.md §2.4.4).
+//!
 //! Where the paper's printed equations differ, this follows MFIX (docs/model.md §3.10):
 //! the P-Eq. 9 exponent is n − 1 (not 1/(N − 1)); in compaction n = N_Pf = 1.03 (not 0);
 //! with Princeton there is no A(εg* − εg)^10 branch (P* ≡ 0, P_c is linearly extrapolated
@@ -12,6 +15,7 @@
 //! (see [`crate::stress`]).
 
 use crate::guards::{SMALL_NUMBER, THETA_SMALL, TO_SI};
+use crate::mu_i::MuIConstants;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::SQRT_2;
 
@@ -131,6 +135,8 @@ pub struct FrictionalStress {
     pub zeta: f64,
     /// Princeton exponent n [-]
     pub n: f64,
+    /// μ(I) inertial number I [-] (0 for the other models)
+    pub inertial_number: f64,
 }
 
 // ---------------------------------------------------------------- Schaeffer (§2.4.1)
@@ -336,6 +342,7 @@ impl PrincetonConstants {
             pf_over_pc: ratio,
             zeta,
             n,
+            inertial_number: 0.0,
         }
     }
 
@@ -398,10 +405,13 @@ pub enum FrictionModel {
     Schaeffer(SchaefferConstants),
     /// `SRIVASTAVA` (Princeton): [`PrincetonConstants::stress`].
     Princeton(PrincetonConstants),
+    /// μ(I) with the case's μ_s, μ_2, I_0 (not in MFIX): [`MuIConstants::stress`].
+    MuI(MuIConstants),
 }
 
-/// The name of a frictional model as case files write it (`friction: Schaeffer`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+/// The name of a frictional model as case files write it (`friction: Schaeffer`,
+/// `friction: MuI(mu_s: 0.38, mu_2: 0.64, i_0: 0.28)`).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub enum FrictionName {
     /// [`FrictionModel::None`]
@@ -410,6 +420,18 @@ pub enum FrictionName {
     Schaeffer,
     /// [`FrictionModel::Princeton`]
     Princeton,
+    /// [`FrictionModel::MuI`] with its parameters ([`MuIConstants`]'s fields)
+    MuI {
+        /// μ_s [-]
+        mu_s: f64,
+        /// μ_2 [-]
+        mu_2: f64,
+        /// I_0 [-]
+        i_0: f64,
+        /// γ̇_min [1/s], default [`crate::mu_i::DEFAULT_SHEAR_RATE_FLOOR`]
+        #[serde(default = "crate::mu_i::default_shear_rate_floor")]
+        shear_rate_floor: f64,
+    },
 }
 
 impl From<FrictionName> for FrictionModel {
@@ -419,6 +441,17 @@ impl From<FrictionName> for FrictionModel {
             FrictionName::None => Self::None,
             FrictionName::Schaeffer => Self::schaeffer(),
             FrictionName::Princeton => Self::princeton(),
+            FrictionName::MuI {
+                mu_s,
+                mu_2,
+                i_0,
+                shear_rate_floor,
+            } => Self::MuI(MuIConstants {
+                mu_s,
+                mu_2,
+                i_0,
+                shear_rate_floor,
+            }),
         }
     }
 }
@@ -429,6 +462,12 @@ impl From<FrictionModel> for FrictionName {
             FrictionModel::None => Self::None,
             FrictionModel::Schaeffer(_) => Self::Schaeffer,
             FrictionModel::Princeton(_) => Self::Princeton,
+            FrictionModel::MuI(c) => Self::MuI {
+                mu_s: c.mu_s,
+                mu_2: c.mu_2,
+                i_0: c.i_0,
+                shear_rate_floor: c.shear_rate_floor,
+            },
         }
     }
 }
@@ -457,6 +496,7 @@ impl FrictionModel {
             Self::None => "None",
             Self::Schaeffer(_) => "Schaeffer",
             Self::Princeton(_) => "Princeton",
+            Self::MuI(_) => "MuI",
         }
     }
 
@@ -468,7 +508,7 @@ impl FrictionModel {
     pub fn plastic_pressure(&self) -> Option<&SchaefferConstants> {
         match self {
             Self::Schaeffer(c) => Some(c),
-            Self::None | Self::Princeton(_) => None,
+            Self::None | Self::Princeton(_) | Self::MuI(_) => None,
         }
     }
 
@@ -488,11 +528,12 @@ impl FrictionModel {
 
     /// The most solids phases the model is implemented for (`None`: no limit). Schaeffer's
     /// P* of several phases uses the mixture εg and εs/Σε_cp weights, not implemented
-    /// (docs/model.md §2.4.1 last paragraph, departure M11).
+    /// (docs/model.md §2.4.1 last paragraph, departure M11); μ(I)'s inertial number of a
+    /// mixture (which d, which P) is not implemented (§2.4.4).
     #[inline]
     pub fn max_solids_phases(self) -> Option<usize> {
         match self {
-            Self::Schaeffer(_) => Some(1),
+            Self::Schaeffer(_) | Self::MuI(_) => Some(1),
             Self::None | Self::Princeton(_) => None,
         }
     }
@@ -501,18 +542,23 @@ impl FrictionModel {
     /// FRI = tan δ_w (P_f − 2 μ_f S_nn) and μ_f to its slip coefficient, h_w^u =
     /// (COL + FRI)/(μ_k + μ_f), where the fluid cell's εs > εs,min (Princeton only, as MFIX
     /// `calc_grbdry.f`: docs/model.md §3.5 step 3); the stress is then [`FrictionModel::stress`].
+    /// μ(I) adds the same Coulomb wall stress tan δ_w P_f with its own P_f and μ_f
+    /// (docs/model.md §2.4.4), so that a wall holds a deposit as its interior does.
     #[inline]
     pub fn has_wall_friction(self) -> bool {
-        matches!(self, Self::Princeton(_))
+        matches!(self, Self::Princeton(_) | Self::MuI(_))
     }
 
     /// Frictional stresses of the chosen model (docs/model.md §2.4); all zero for `None`.
+    /// ρ_s enters μ(I)'s inertial number only.
     #[inline]
+    #[allow(clippy::too_many_arguments)]
     pub fn stress(
         self,
         eps_s: f64,
         theta: f64,
         d_p: f64,
+        rho_s: f64,
         tr_d: f64,
         s_ddot_s: f64,
         p: &FrictionParams,
@@ -521,12 +567,14 @@ impl FrictionModel {
             Self::None => FrictionalStress::default(),
             Self::Schaeffer(c) => c.stress(eps_s, s_ddot_s, p),
             Self::Princeton(c) => c.stress(eps_s, theta, d_p, tr_d, s_ddot_s, p),
+            Self::MuI(c) => c.stress(eps_s, d_p, rho_s, s_ddot_s, p),
         }
     }
 
     /// K_cp = dP_s/dεs \[Pa\] for the solids volume-fraction correction (docs/model.md §2.5;
     /// MFIX `calc_k_cp.f`): Princeton [`PrincetonConstants::k_cp`], Schaeffer
-    /// [`SchaefferConstants::dp_star_deps`], `None` 0 (no close-packed pressure). The solver
+    /// [`SchaefferConstants::dp_star_deps`], μ(I) [`MuIConstants::k_cp`], `None` 0 (no
+    /// close-packed pressure). The solver
     /// sets K_cp = 0 in wall cells.
     #[inline]
     pub fn k_cp(
@@ -542,6 +590,7 @@ impl FrictionModel {
             Self::None => 0.0,
             Self::Schaeffer(c) => c.dp_star_deps(eps_s, p),
             Self::Princeton(c) => c.k_cp(eps_s, theta, d_p, tr_d, s_ddot_s, p),
+            Self::MuI(c) => c.k_cp(eps_s, p),
         }
     }
 }
@@ -574,6 +623,10 @@ mod tests {
             (None, None, None, true)
         );
         assert_eq!(answers(FrictionModel::None), (None, None, None, false));
+        assert_eq!(
+            answers(FrictionModel::MuI(MuIConstants::glass_beads_jop_2005())),
+            (None, None, Some(1), true)
+        );
     }
 
     /// Case files name the model only; it comes with MFIX's constants and writes back as
@@ -590,5 +643,23 @@ mod tests {
             assert_eq!(serde_json::to_string(&model).unwrap(), json);
             assert_eq!(model.name(), name);
         }
+    }
+
+    /// μ(I) carries its parameters in the case file; the floor defaults to γ̇_min = 1e-3 s⁻¹.
+    #[test]
+    fn mu_i_reads_with_its_parameters() {
+        let json = r#"{"MuI":{"mu_s":0.38,"mu_2":0.64,"i_0":0.28}}"#;
+        let unknown = r#"{"MuI":{"mu_s":0.38,"mu_2":0.64,"i_0":0.28,"mu_3":1}}"#;
+        assert!(serde_json::from_str::<FrictionModel>(unknown).is_err());
+        let model: FrictionModel = serde_json::from_str(json).unwrap();
+        let FrictionModel::MuI(c) = model else {
+            panic!("{model:?}")
+        };
+        assert_eq!((c.mu_s, c.mu_2, c.i_0), (0.38, 0.64, 0.28));
+        assert_eq!(c.shear_rate_floor, crate::mu_i::DEFAULT_SHEAR_RATE_FLOOR);
+        let back: FrictionModel =
+            serde_json::from_str(&serde_json::to_string(&model).unwrap()).unwrap();
+        assert_eq!(back, model);
+        assert!(serde_json::from_str::<FrictionModel>(r#"{"MuI":{"mu_s":0.38}}"#).is_err());
     }
 }

@@ -6,6 +6,7 @@
 //! - [`kinetic`]: Lun et al. (1984) as MFIX/Agrawal code it, α = 1.6, with the gas-modified
 //!   μ*, κ* (§2.2), and the collisional dissipation γ (§1.3);
 //! - [`friction`]: Schaeffer with P* (§2.4.1), Princeton (§2.4.2), K_cp = dP_s/dεs (§2.5);
+//! - [`mu_i`]: the rate-dependent μ(I) friction (§2.4.4; not in MFIX);
 //! - [`drag`]: Syamlal–O'Brien, Gidaspow, blended Gidaspow, Wen–Yu, the wall Wen–Yu estimate
 //!   and the single-particle KT drag (§2.6);
 //! - [`energy`]: the granular-energy sources Π, J_vis, J_slip (§1.3);
@@ -39,6 +40,7 @@ pub mod energy;
 pub mod friction;
 pub mod guards;
 pub mod kinetic;
+pub mod mu_i;
 pub mod radial;
 pub mod stress;
 
@@ -49,5 +51,6 @@ pub use friction::{
     SchaefferConstants,
 };
 pub use kinetic::{GasCoupling, KineticStress, SolidsState};
+pub use mu_i::MuIConstants;
 pub use radial::RadialDistribution;
 pub use stress::SolidsStress;

@@ -52,7 +52,10 @@ fn friction_model() -> impl Strategy<Value = FrictionModel> {
     prop_oneof![
         Just(FrictionModel::None),
         Just(FrictionModel::schaeffer()),
-        Just(FrictionModel::princeton())
+        Just(FrictionModel::princeton()),
+        Just(FrictionModel::MuI(
+            runout_closures::MuIConstants::glass_beads_jop_2005()
+        ))
     ]
 }
 
@@ -228,7 +231,7 @@ proptest! {
         model in friction_model(),
     ) {
         let p = FrictionParams::default();
-        let f = model.stress(eps_s, theta, 5e-4, tr_d, s_ddot_s, &p);
+        let f = model.stress(eps_s, theta, 5e-4, 2000.0, tr_d, s_ddot_s, &p);
         prop_assert_eq!((f.p_fric, f.mu_fric, f.lambda_fric, f.p_star), (0.0, 0.0, 0.0, 0.0));
         prop_assert_eq!(model.k_cp(eps_s, theta, 5e-4, tr_d, s_ddot_s, &p), 0.0);
         prop_assert_eq!(PRINCETON.critical_pressure(eps_s, &p), 0.0);

@@ -520,11 +520,12 @@ fn kinetic_momentum(
     };
     let h = if frictional_branch {
         if state.eps_s > eps_s_min {
-            // the Princeton stress: only Princeton has wall friction
+            // the Princeton or μ(I) stress: the models with wall friction
             let stress = params.friction_model.stress(
                 state.eps_s,
                 theta,
                 params.particles.diameter,
+                params.particles.density,
                 state.tr_d,
                 state.s_ddot_s.max(WALL_S_DDOT_S_FLOOR),
                 &params.friction,
