@@ -99,8 +99,11 @@ enum Command {
     Closures(cmd_closures::ClosuresArgs),
     /// Print a run folder's metrics as JSON: its summary, the station time, the front and
     /// mean u_s there, and the station profile's metrics (air cushion, cushion and flow
-    /// thickness, floor εs, max u_s), h_w^u at the floor probe and the gate speeds
-    /// (definitions: runout-post's metrics module).
+    /// thickness, floor εs, max u_s), h_w^u at the floor probe, the gate speeds
+    /// (definitions: runout-post's metrics module) and the deposit: whether and when the
+    /// solids came to rest (εs-weighted mean u_s ≤ v_rest = 1 % of √(g H∞) and a still
+    /// front from then on), the distal edges at εs ≥ 0.01 and ≥ 0.3, L∞ from the release's
+    /// east edge and H∞, the largest thickness at εs ≥ 0.3 (docs/deposit.md).
     Post {
         /// a run folder (runs/<case>/<fidelity>, or a `.partial` one of a run still going)
         run_dir: PathBuf,
@@ -108,6 +111,13 @@ enum Command {
         /// gate-speed MSE, e.g. cases/flume/gates.csv
         #[arg(long, value_name = "CSV")]
         gates: Option<PathBuf>,
+        /// write the deposit profile along x to this CSV
+        /// (x,thickness_dense,thickness_dilute,solids_height; m)
+        #[arg(long, value_name = "CSV")]
+        deposit_profile: Option<PathBuf>,
+        /// v_rest as a fraction of √(g H∞)
+        #[arg(long, default_value_t = runout_post::deposit::DEFAULT_REST_FRACTION)]
+        rest_fraction: f64,
     },
     /// Print a wall model's Robin coefficients for velocity and granular temperature, with
     /// the diagnostics the paper plots (h_w^u, φ, COL, FRI, slip), as JSON.
@@ -115,7 +125,16 @@ enum Command {
 }
 
 /// `runout post`: the metrics of one run folder as pretty JSON on stdout.
-fn post(run_dir: &std::path::Path, gates: Option<&std::path::Path>) -> ExitCode {
+fn post(
+    run_dir: &std::path::Path,
+    gates: Option<&std::path::Path>,
+    deposit_profile: Option<&std::path::Path>,
+    rest_fraction: f64,
+) -> ExitCode {
+    if !(rest_fraction > 0.0 && rest_fraction < 1.0) {
+        eprintln!("runout post: --rest-fraction {rest_fraction}: allowed (0, 1)");
+        return ExitCode::FAILURE;
+    }
     let described = match gates {
         Some(csv) => {
             let d = runout_post::metrics::described_speeds(csv);
@@ -131,13 +150,32 @@ fn post(run_dir: &std::path::Path, gates: Option<&std::path::Path>) -> ExitCode 
         }
         None => Vec::new(),
     };
-    let metrics = match runout_post::run::run_metrics(run_dir, &described) {
+    let mut metrics = match runout_post::run::run_metrics(run_dir, &described) {
         Ok(m) => m,
         Err(e) => {
             eprintln!("runout post: {e}");
             return ExitCode::FAILURE;
         }
     };
+    if rest_fraction != runout_post::deposit::DEFAULT_REST_FRACTION || deposit_profile.is_some() {
+        let read = runout_post::folder::read_resolved_unvalidated(run_dir)
+            .and_then(|case| runout_post::deposit::read_deposit(run_dir, &case, rest_fraction));
+        let (deposit, profile) = match read {
+            Ok(d) => d,
+            Err(e) => {
+                eprintln!("runout post: deposit: {e}");
+                return ExitCode::FAILURE;
+            }
+        };
+        if let Some(csv) = deposit_profile {
+            let text = runout_post::deposit::profile_csv(&profile);
+            if let Err(e) = std::fs::write(csv, text) {
+                eprintln!("runout post: writing {}: {e}", csv.display());
+                return ExitCode::FAILURE;
+            }
+        }
+        metrics.deposit = Ok(deposit);
+    }
     match serde_json::to_string_pretty(&metrics) {
         Ok(json) => {
             // a closed pipe (`| head`) is not an error of the command
@@ -556,7 +594,17 @@ fn main() -> ExitCode {
                 ExitCode::FAILURE
             }
         },
-        Command::Post { run_dir, gates } => post(&run_dir, gates.as_deref()),
+        Command::Post {
+            run_dir,
+            gates,
+            deposit_profile,
+            rest_fraction,
+        } => post(
+            &run_dir,
+            gates.as_deref(),
+            deposit_profile.as_deref(),
+            rest_fraction,
+        ),
         Command::Wall(args) => match cmd_wall::run(&args) {
             Ok(()) => ExitCode::SUCCESS,
             Err(e) => {

@@ -173,6 +173,7 @@ pub fn evaluate(state: &CellState, params: &ClosureParams) -> ClosureSet {
         particles.density,
         state.tr_d,
         state.s_ddot_s,
+        kinetic.p_kin,
         &params.friction,
     );
     // K_cp (docs/model.md §2.5), reusing the Princeton P_f/P_c just computed

@@ -550,7 +550,7 @@ impl FrictionModel {
     }
 
     /// Frictional stresses of the chosen model (docs/model.md §2.4); all zero for `None`.
-    /// ρ_s enters μ(I)'s inertial number only.
+    /// ρ_s and the kinetic pressure P_kin \[Pa\] enter μ(I) only (its I and total pressure).
     #[inline]
     #[allow(clippy::too_many_arguments)]
     pub fn stress(
@@ -561,13 +561,14 @@ impl FrictionModel {
         rho_s: f64,
         tr_d: f64,
         s_ddot_s: f64,
+        p_kin: f64,
         p: &FrictionParams,
     ) -> FrictionalStress {
         match self {
             Self::None => FrictionalStress::default(),
             Self::Schaeffer(c) => c.stress(eps_s, s_ddot_s, p),
             Self::Princeton(c) => c.stress(eps_s, theta, d_p, tr_d, s_ddot_s, p),
-            Self::MuI(c) => c.stress(eps_s, d_p, rho_s, s_ddot_s, p),
+            Self::MuI(c) => c.stress(eps_s, d_p, rho_s, s_ddot_s, p_kin, p),
         }
     }
 

@@ -6,15 +6,21 @@
 //! γ̇ = √(2 S:S) the second invariant of the strain rate (= |du/dy| in simple shear) and the
 //! frictional stress τ = 2 μ_fric S, μ_fric = μ(I) P/γ̇_r, γ̇_r = √(γ̇² + γ̇_min²).
 //!
-//! **Pressure.** P is the critical-state pressure of εs that the Princeton model already has,
-//! P_c(εs) = Fr (εs − εs,min)²/(εs,max − εs)⁵ (paper Eq. 10; [`PrincetonConstants`] with
-//! MFIX's constants), so the column compacts until P_c carries its weight and K_cp = dP_c/dεs
-//! enters the εs correction as with Princeton. Pressure from density with a rate-independent
-//! μ(I) is the compressible form of Heyman et al. (2017, JFM 830, R1), which regularises the
-//! ill-posedness of incompressible μ(I) (Barker et al. 2015, JFM 779) at high wavenumbers;
-//! the φ(I) dilatancy law of Schaeffer et al. (2019, JFM 874) is not implemented. The kinetic
-//! stresses of Lun et al. are summed with it (docs/model.md §2.3), as with Princeton: they
-//! dominate where θ is high (dilute, fast flow) and vanish in a deposit, where θ decays.
+//! **Pressure.** P is the total solids pressure P_s = P_kin + P_c(εs): the collisional
+//! pressure of the kinetic theory (Lun et al. 1984, §2.2) plus the critical-state pressure
+//! P_c(εs) = Fr (εs − εs,min)²/(εs,max − εs)⁵ that the Princeton model already has (paper
+//! Eq. 10, [`PrincetonConstants`] with MFIX's constants). The μ(I) law was measured on the
+//! grains' total normal stress (GDR MiDi 2004; da Cruz et al. 2005), and Chialvo, Sun &
+//! Sundaresan (2012, Phys. Fluids 24) apply the friction coefficient to the total pressure
+//! when they join the kinetic and frictional regimes. Only P_c is added to the momentum
+//! equation as P_fric (P_kin is already in P_s, §2.3), and K_cp = dP_c/dεs as with
+//! Princeton. With P_c alone the Coulomb stress vanishes wherever a flowing layer dilates
+//! below εs,min, and the collapses of docs/collapse.md did not stop (runout 5.9 L0 at a = 1,
+//! against 2.3 L0 with the total pressure). Pressure from εs and θ with a rate-independent
+//! μ(I) is a compressible form in the sense of Heyman et al. (2017, JFM 830, R1), which
+//! removes the short-wave ill-posedness of incompressible μ(I) (Barker et al. 2015, JFM 779);
+//! the φ(I) dilatancy law of Schaeffer et al. (2019, JFM 874) is not implemented. The
+//! kinetic viscosity μ_kin is still summed with μ_fric (§2.3), as with Princeton.
 //!
 //! **Regularisation.** At γ̇ → 0 the viscosity is capped at μ(0) P/γ̇_min. A layer loaded to
 //! a fraction r < 1 of its static strength (τ = r μ_s P) then creeps at
@@ -75,9 +81,11 @@ impl MuIConstants {
         (self.mu_2 - self.mu_s) * self.i_0 / (denominator * denominator)
     }
 
-    /// Frictional stress at one state (module doc), zero for εs ≤ εs,min:
-    /// P_fric = P_c(εs), γ̇ = √(2 S:S), I = d γ̇/√(P_c/ρ_s), μ_fric = μ(I) P_c/√(γ̇² + γ̇_min²),
-    /// λ_fric = −(2/3) μ_fric (a deviatoric stress, as Princeton's). `zeta` reports γ̇_r.
+    /// Frictional stress at one state (module doc), `p_kin` the kinetic pressure \[Pa\]:
+    /// P_c = P_c(εs) (0 at or below εs,min), P = P_kin + P_c, γ̇ = √(2 S:S),
+    /// I = d γ̇/√(P/ρ_s), μ_fric = μ(I) P/√(γ̇² + γ̇_min²), λ_fric = −(2/3) μ_fric (a
+    /// deviatoric stress, as Princeton's), P_fric = P_c; zero where P = 0. `zeta` reports
+    /// γ̇_r.
     #[inline]
     pub fn stress(
         &self,
@@ -85,22 +93,24 @@ impl MuIConstants {
         d_p: f64,
         rho_s: f64,
         s_ddot_s: f64,
+        p_kin: f64,
         p: &FrictionParams,
     ) -> FrictionalStress {
-        if eps_s <= p.eps_s_min {
+        let p_c = CRITICAL_STATE.critical_pressure(eps_s, p);
+        let pressure = p_kin.max(0.0) + p_c;
+        if pressure <= 0.0 {
             return FrictionalStress::default();
         }
-        let pressure = CRITICAL_STATE.critical_pressure(eps_s, p);
         let rate = shear_rate(s_ddot_s);
         let regularised = rate.hypot(self.shear_rate_floor);
         let inertial = inertial_number(d_p, rate, pressure, rho_s);
         let mu_fric = self.friction_coefficient(inertial) * pressure / regularised;
         FrictionalStress {
-            p_fric: pressure,
+            p_fric: p_c,
             mu_fric,
             lambda_fric: -2.0 / 3.0 * mu_fric,
             p_star: 0.0,
-            p_c: pressure,
+            p_c,
             pf_over_pc: 1.0,
             zeta: regularised,
             n: 0.0,
@@ -184,26 +194,32 @@ mod tests {
         }
     }
 
-    /// In simple shear u(y) = γ̇ y (S:S = γ̇²/2) the shear stress μ_fric γ̇ is μ(I) P_c up to
-    /// the regularisation, and the stress vanishes below εs,min.
+    /// In simple shear u(y) = γ̇ y (S:S = γ̇²/2) the shear stress μ_fric γ̇ is μ(I)(P_kin + P_c)
+    /// up to the regularisation, and the stress vanishes where both pressures do.
     #[test]
     fn simple_shear_gives_the_coulomb_stress() {
         let m = glass();
         let p = FrictionParams::default();
         let (d, rho) = (5e-4, 2500.0);
+        let p_kin = 30.0;
         for rate in [0.1_f64, 10.0, 100.0] {
-            let s = m.stress(0.6, d, rho, 0.5 * rate * rate, &p);
-            let i = d * rate / (s.p_fric / rho).sqrt();
+            let s = m.stress(0.6, d, rho, 0.5 * rate * rate, p_kin, &p);
+            let total = s.p_fric + p_kin;
+            let i = d * rate / (total / rho).sqrt();
             let tau = s.mu_fric * rate;
-            let want = m.friction_coefficient(i) * s.p_fric;
+            let want = m.friction_coefficient(i) * total;
             let regularisation = rate / rate.hypot(m.shear_rate_floor);
             assert!((tau - want * regularisation).abs() <= 1e-12 * want);
             assert!((s.inertial_number - i).abs() <= 1e-15 * i);
         }
         assert_eq!(
-            m.stress(0.5, d, rho, 100.0, &p),
+            m.stress(0.5, d, rho, 100.0, 0.0, &p),
             FrictionalStress::default()
         );
+        // below εs,min the law acts on the kinetic pressure alone, and adds no P_fric
+        let dilated = m.stress(0.4, d, rho, 100.0, p_kin, &p);
+        assert_eq!(dilated.p_fric, 0.0);
+        assert!(dilated.mu_fric > 0.0);
     }
 
     /// The creep of a loaded layer: solving μ(I) P γ̇/γ̇_r = r μ_s P by bisection agrees with
@@ -220,7 +236,7 @@ mod tests {
             let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
             for _ in 0..200 {
                 let mid = 0.5 * (lo + hi);
-                let s = m.stress(eps, d, rho, 0.5 * mid * mid, &p);
+                let s = m.stress(eps, d, rho, 0.5 * mid * mid, 0.0, &p);
                 if s.mu_fric * mid < target {
                     lo = mid
                 } else {

@@ -220,8 +220,8 @@ proptest! {
         }
     }
 
-    /// No frictional pressure, viscosity or K_cp at or below εs,min (Princeton) or at or
-    /// below εs,max (Schaeffer).
+    /// No frictional pressure, viscosity or K_cp at or below εs,min (Princeton; μ(I) without
+    /// kinetic pressure) or at or below εs,max (Schaeffer).
     #[test]
     fn no_friction_below_eps_s_min(
         eps_s in 0.0..=0.5f64,
@@ -231,7 +231,7 @@ proptest! {
         model in friction_model(),
     ) {
         let p = FrictionParams::default();
-        let f = model.stress(eps_s, theta, 5e-4, 2000.0, tr_d, s_ddot_s, &p);
+        let f = model.stress(eps_s, theta, 5e-4, 2000.0, tr_d, s_ddot_s, 0.0, &p);
         prop_assert_eq!((f.p_fric, f.mu_fric, f.lambda_fric, f.p_star), (0.0, 0.0, 0.0, 0.0));
         prop_assert_eq!(model.k_cp(eps_s, theta, 5e-4, tr_d, s_ddot_s, &p), 0.0);
         prop_assert_eq!(PRINCETON.critical_pressure(eps_s, &p), 0.0);

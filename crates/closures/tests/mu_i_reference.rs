@@ -58,11 +58,11 @@ fn mu_i_matches_the_independent_reference() {
         );
     }
     let rows = v["stress"].as_array().unwrap();
-    assert_eq!(rows.len(), 35);
+    assert_eq!(rows.len(), 105);
     for row in rows {
-        let (eps_s, s_ddot_s) = (num(row, "eps_s"), num(row, "s_ddot_s"));
-        let s = law.stress(eps_s, d_p, rho_s, s_ddot_s, &friction);
-        let at = format!("eps_s = {eps_s}, S:S = {s_ddot_s}");
+        let (eps_s, s_ddot_s, p_kin) = (num(row, "eps_s"), num(row, "s_ddot_s"), num(row, "p_kin"));
+        let s = law.stress(eps_s, d_p, rho_s, s_ddot_s, p_kin, &friction);
+        let at = format!("eps_s = {eps_s}, S:S = {s_ddot_s}, P_kin = {p_kin}");
         assert_rel(&format!("P_fric at {at}"), s.p_fric, num(row, "p_fric"));
         assert_rel(&format!("mu_fric at {at}"), s.mu_fric, num(row, "mu_fric"));
         assert_rel(

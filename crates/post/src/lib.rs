@@ -4,13 +4,15 @@
 //! each flow metric the paper's figures use (air cushion, cushion and flow thickness, max
 //! u_s, h_w^u at the floor probe, gate speeds and their MSE), and the convergence tools of
 //! grid studies (error norms, observed order, Richardson extrapolation). `runout post
-//! RUN_DIR` prints [`run::RunMetrics`] as JSON; `cargo xtask` (sweep, report, calibrate,
+//! RUN_DIR` prints [`run::RunMetrics`] as JSON, with the deposit ([`deposit`]: at rest and
+//! when, L∞, H∞, the profile); `cargo xtask` (sweep, report, calibrate,
 //! error-time) uses the same functions.
 
 pub mod bulk;
 pub mod case_data;
 pub mod chosen;
 pub mod convergence;
+pub mod deposit;
 pub mod fields;
 #[cfg(any(test, feature = "fixture"))]
 pub mod fixture;

@@ -6,6 +6,7 @@ use std::path::Path;
 use runout_output::RunSummary;
 use serde::Serialize;
 
+use crate::deposit::{read_deposit, Deposit, DEFAULT_REST_FRACTION};
 use crate::folder::{read_resolved, read_summary};
 use crate::metrics::{flow_metrics, station_time, FlowMetrics};
 use crate::table::Table;
@@ -30,6 +31,9 @@ pub struct RunMetrics {
     pub mean_u_s: Option<f64>,
     /// the station profile's metrics, h_w^u at the probe and gate speeds
     pub flow: FlowMetrics,
+    /// where the solids stopped, or why not read ([`crate::deposit`], v_rest = 1 % of
+    /// √(g H∞))
+    pub deposit: Result<Deposit, String>,
 }
 
 /// Reads the run in `dir`; `described` holds the (gate number, speed) pairs the gate MSE
@@ -54,6 +58,10 @@ pub fn run_metrics(dir: &Path, described: &[(usize, f64)]) -> Result<RunMetrics,
         front_x: bulk.map(|b| b.1),
         mean_u_s: bulk.map(|b| b.2),
         flow: flow_metrics(dir, described),
+        deposit: match &resolved {
+            Some(case) => read_deposit(dir, case, DEFAULT_REST_FRACTION).map(|(d, _)| d),
+            None => Err("no readable resolved.ron".into()),
+        },
     })
 }
 

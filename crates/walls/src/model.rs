@@ -528,6 +528,7 @@ fn kinetic_momentum(
                 params.particles.density,
                 state.tr_d,
                 state.s_ddot_s.max(WALL_S_DDOT_S_FLOOR),
+                kinetic.p_kin,
                 &params.friction,
             );
             diagnostics.fri = frictional(

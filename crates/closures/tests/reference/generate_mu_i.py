@@ -63,13 +63,15 @@ def s_ddot_s(dudx, dudy, dvdx, dvdy):
     return dudx ** 2 + dvdy ** 2 + 2 * dxy ** 2 - tr ** 2 / 3
 
 
-def stress(es, grad):
-    p = p_c(es)
-    if es <= EPS_MIN:
+def stress(es, grad, p_kin):
+    """mu(I) on the total solids pressure P_kin + P_c; only P_c is the added P_fric."""
+    pc = p_c(es)
+    p = p_kin + pc
+    if p == 0.0:
         return dict(p_fric=0.0, mu_fric=0.0, inertial_number=0.0)
     rate = shear_rate(*grad)
     i = 0.0 if rate == 0.0 else D_P * rate * math.sqrt(RHO_S / p)
-    return dict(p_fric=p, mu_fric=mu_of_i(i) * p / math.sqrt(rate ** 2 + FLOOR ** 2),
+    return dict(p_fric=pc, mu_fric=mu_of_i(i) * p / math.sqrt(rate ** 2 + FLOOR ** 2),
                 inertial_number=i)
 
 
@@ -82,8 +84,10 @@ def main():
     for es in [0.45, 0.5, 0.55, 0.6, 0.635, 0.645, 0.66]:
         for grad in [(0.0, 0.0, 0.0, 0.0), (0.0, 1e-4, 0.0, 0.0), (0.0, 3.0, 0.0, 0.0),
                      (0.5, 20.0, -1.0, -2.0), (10.0, -100.0, 5.0, 4.0)]:
-            row = dict(eps_s=es, s_ddot_s=s_ddot_s(*grad), **stress(es, grad))
-            rows.append(row)
+            for p_kin in [0.0, 0.37, 250.0]:
+                row = dict(eps_s=es, s_ddot_s=s_ddot_s(*grad), p_kin=p_kin,
+                           **stress(es, grad, p_kin))
+                rows.append(row)
     out["stress"] = rows
     here = os.path.dirname(os.path.abspath(__file__))
     with open(os.path.join(here, "mu_i_values.json"), "w") as f:
