@@ -188,6 +188,14 @@ enum Task {
         /// reuse finished runs of unchanged cases (collapse only)
         #[arg(long)]
         reuse: bool,
+        /// collapse: the friction law, princeton (the paper's material, the four shipped
+        /// columns) or mu-i (glass beads, cases/collapse/CM-a1.ron as template)
+        #[arg(long, default_value = "princeton")]
+        friction: String,
+        /// collapse: comma-separated aspect ratios a = H0/L0 whose columns are built from the
+        /// friction's template (default with mu-i: 0.5,1,3,6)
+        #[arg(long, value_delimiter = ',')]
+        aspect: Option<Vec<f64>>,
         /// mfix-slope: comma-separated rayon thread counts to time the JJ case with
         #[arg(long, default_value = "1")]
         threads: String,
@@ -305,6 +313,8 @@ fn main() -> Result<()> {
             reuse,
             threads,
             skip_variants,
+            friction,
+            aspect,
         } => verify_task(
             &name,
             report,
@@ -312,6 +322,7 @@ fn main() -> Result<()> {
             reuse,
             &threads,
             skip_variants,
+            (&friction, aspect),
         ),
         Task::Report { what, fidelity } => report_task(&what, fidelity.as_deref()),
         Task::Bench { what, args } => bench_task(&what, &args),
@@ -406,6 +417,7 @@ fn verify_task(
     reuse: bool,
     threads: &str,
     skip_variants: bool,
+    (friction, aspect): (&str, Option<Vec<f64>>),
 ) -> Result<()> {
     match name {
         "mfix-slope" => {
@@ -424,6 +436,8 @@ fn verify_task(
             &root(),
             parse_fidelity(fidelity.unwrap_or("coarse"))?,
             reuse,
+            collapse::Friction::parse(friction)?,
+            aspect,
         ),
         _ => verify::verify(name, report, &root()),
     }

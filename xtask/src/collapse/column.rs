@@ -3,6 +3,58 @@
 
 use anyhow::{bail, Context, Result};
 use runout_case::{Case, Gravity};
+use runout_mesh::Segment;
+use runout_verification::references::LAJEUNESSE;
+
+/// Cell width of a built column as written, in L0 (L0/20; coarse L0/10, smoke L0/5).
+const CELLS_PER_L0: f64 = 20.0;
+/// Cell counts of a built column are multiples of this (the smoke preset coarsens by 4).
+const CELL_MULTIPLE: usize = 4;
+/// A built domain reaches L0 (2 + this × λ(a)), λ(a) Lajeunesse's runout law.
+const DOMAIN_RUNOUTS: f64 = 2.5;
+/// The end time of a built column in √(H0/g): the check's deadline for a deposit at rest.
+pub const REST_DEADLINE: f64 = 10.0;
+
+/// The column of aspect ratio `a` built from `template` (a collapse case): the block's
+/// height H0 = a L0, the domain (x to L0 (2 + 2.5 λ(a)), y to 1.1 H0 + L0/2, uniform cells of
+/// L0/20 rounded up to a multiple of 4 cells) and the end time 10 √(H0/g) at every
+/// fidelity change; the name becomes `<prefix>-a<a>`. Nothing else changes.
+pub fn column_case(template: &Case, a: f64) -> Result<Case> {
+    if !(a.is_finite() && (0.1..=20.0).contains(&a)) {
+        bail!("--aspect {a}: allowed [0.1, 20]");
+    }
+    let column = Column::of(template)?;
+    let (l0, h0) = (column.l0, a * column.l0);
+    let mut case = template.clone();
+    let prefix = template.name.split("-a").next().unwrap_or(&template.name);
+    case.name = format!("{prefix}-a{a}");
+    case.initial.regions[0].y.1 = case.initial.regions[0].y.0 + h0;
+    let cells = |length: f64| {
+        let n = (length / l0 * CELLS_PER_L0).ceil() as usize;
+        n.div_ceil(CELL_MULTIPLE) * CELL_MULTIPLE
+    };
+    let (_, laj_hi) = LAJEUNESSE.runout(a);
+    let x_cells = cells(l0 * (2.0 + DOMAIN_RUNOUTS * laj_hi));
+    let y_cells = cells(1.1 * h0 + 0.5 * l0);
+    let width = l0 / CELLS_PER_L0;
+    case.domain.x.segments = vec![Segment::Uniform {
+        length: x_cells as f64 * width,
+        cells: x_cells,
+    }];
+    case.domain.y.segments = vec![Segment::Uniform {
+        length: y_cells as f64 * width,
+        cells: y_cells,
+    }];
+    let end = REST_DEADLINE * (h0 / column.gravity).sqrt();
+    let end = (end * 1e3).ceil() / 1e3;
+    case.run.end_time = end;
+    case.fidelity.smoke.end_time = end;
+    case.fidelity.coarse.end_time = end;
+    if let Some(wall) = case.fidelity.wall.as_mut() {
+        wall.end_time = end;
+    }
+    Ok(case)
+}
 
 /// The initial column of a collapse case: the first block, standing on the floor against
 /// the west wall.

@@ -41,6 +41,9 @@ pub struct FrontMetrics {
     pub mean_u: f64,
     /// both below 1 %
     pub stopped: bool,
+    /// the earliest sample from which the mean u_s stays below 1 % of √(g H0) and the front
+    /// no longer moves ([`runout_post::deposit::rest_time`]), in √(H0/g)
+    pub rest_time: Option<f64>,
 }
 
 /// The front metrics of a bulk history `rows` of a column whose domain ends at `x_end`.
@@ -71,7 +74,18 @@ pub fn front_metrics(rows: &[BulkRow], column: &Column, x_end: f64) -> FrontMetr
         front_speed,
         mean_u,
         stopped: front_speed.abs() < STOP_FRACTION && mean_u.abs() < STOP_FRACTION,
+        rest_time: rest_time(rows, column),
     }
+}
+
+/// [`runout_post::deposit::rest_time`] with v_rest = 1 % of √(g H0), in √(H0/g).
+fn rest_time(rows: &[BulkRow], column: &Column) -> Option<f64> {
+    let times: Vec<f64> = rows.iter().map(|r| r.t).collect();
+    let fronts: Vec<f64> = rows.iter().map(|r| r.front).collect();
+    let speeds: Vec<f64> = rows.iter().map(|r| r.mean_u).collect();
+    let v_rest = STOP_FRACTION * column.velocity_scale();
+    runout_post::deposit::rest_time(&times, &fronts, &speeds, v_rest)
+        .map(|t| t / column.time_scale())
 }
 
 #[cfg(test)]
