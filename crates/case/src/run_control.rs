@@ -20,6 +20,30 @@ pub struct RunControl {
     /// from the last one); none: only on a signal or `--checkpoint-every`
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub checkpoint_interval: Option<f64>,
+    /// end the run early once its solids are at rest (docs/deposit.md); none (the default):
+    /// run to the end time
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub stop_at_rest: Option<StopAtRest>,
+}
+
+/// When a run counts its solids as at rest and ends (`run.stop_at_rest`): the εs-weighted
+/// mean u_s has stayed at or below `speed` and the front (the furthest floor cell with εs ≥
+/// `front_threshold`, as the bulk monitor's) has not moved, for `duration` of simulated
+/// time. Counted from the start or the restart of a run (not kept in checkpoints).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct StopAtRest {
+    /// largest εs-weighted mean u_s at rest [m/s]
+    pub speed: f64,
+    /// how long the solids must stay at rest [s]
+    pub duration: f64,
+    /// εs of the front [-] (default 0.01)
+    #[serde(default = "default_rest_front_threshold")]
+    pub front_threshold: f64,
+}
+
+fn default_rest_front_threshold() -> f64 {
+    0.01
 }
 
 /// Adaptive time-step control (docs/model.md §4.12).

@@ -302,6 +302,22 @@ fn check_run(c: &mut Checker, case: &Case) {
             (MAX_OUTPUTS, "checkpoints"),
         );
     }
+    if let Some(rest) = &run.stop_at_rest {
+        c.band("run.stop_at_rest.speed", rest.speed, &VELOCITY);
+        c.range("run.stop_at_rest.speed", rest.speed, B::Open(0.0), B::Inf);
+        c.range(
+            "run.stop_at_rest.duration",
+            rest.duration,
+            B::Open(0.0),
+            B::Closed(end),
+        );
+        c.range(
+            "run.stop_at_rest.front_threshold",
+            rest.front_threshold,
+            B::Open(0.0),
+            B::Open(1.0),
+        );
+    }
 
     let r = &case.numerics.relaxation;
     for (name, v) in [

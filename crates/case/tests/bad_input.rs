@@ -853,3 +853,25 @@ fn mu_i_parameters_out_of_range() {
         &["mu_3"],
     );
 }
+
+/// `run.stop_at_rest`: a duration beyond the end time and a speed of 0 are refused.
+#[test]
+fn stop_at_rest_out_of_range() {
+    let with = |rule: &str| {
+        let t = mslide();
+        let at = t
+            .find("output_interval")
+            .expect("the case has an output interval");
+        format!("{}stop_at_rest: {rule}, {}", &t[..at], &t[at..])
+    };
+    rejected(
+        "rest-duration.ron",
+        &with("(speed: 0.01, duration: 100.0)"),
+        &["run.stop_at_rest.duration", "100"],
+    );
+    rejected(
+        "rest-speed.ron",
+        &with("(speed: 0.0, duration: 0.1)"),
+        &["run.stop_at_rest.speed"],
+    );
+}

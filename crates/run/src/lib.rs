@@ -434,8 +434,45 @@ fn tally_step(
     summary.max_eps_s = summary.max_eps_s.max(solver.max_eps_s());
 }
 
+/// Whether the solids have been at rest long enough to end the run (`run.stop_at_rest`):
+/// since when the mean u_s has stayed at or below the rule's speed with the front where
+/// it is.
+#[derive(Default)]
+struct RestWatch {
+    /// (time, front x) of the first step of the current still stretch
+    since: Option<(f64, f64)>,
+}
+
+impl RestWatch {
+    /// Takes the step's bulk values (front x, mean u_s; `None` without solids) at `time`
+    /// and says whether the stretch at rest has lasted the rule's duration.
+    fn at_rest_after(
+        &mut self,
+        bulk: Option<(f64, f64)>,
+        time: f64,
+        rule: &runout_case::StopAtRest,
+    ) -> bool {
+        let Some((front, mean_u)) = bulk else {
+            self.since = None;
+            return false;
+        };
+        if mean_u.abs() > rule.speed {
+            self.since = None;
+            return false;
+        }
+        match self.since {
+            Some((start, at)) if at == front => time - start >= rule.duration * (1.0 - 1e-12),
+            _ => {
+                self.since = Some((time, front));
+                false
+            }
+        }
+    }
+}
+
 /// Stage 3: the time loop, from the standing time to the end time, until the run
-/// diverges, is asked to stop, or cannot write its output (returned).
+/// diverges, is asked to stop, cannot write its output (returned) or, with
+/// `run.stop_at_rest`, its solids are at rest.
 fn time_loop(
     ctx: &RunContext,
     solver: &mut dyn CaseSolver,
@@ -453,6 +490,7 @@ fn time_loop(
         .map_or(f64::INFINITY, |i| next_multiple(standing.time, i));
     let mut last_checkpoint = Instant::now();
     let stop = ctx.options.stop.as_ref();
+    let mut rest = run.stop_at_rest.as_ref().map(|_| RestWatch::default());
     while standing.time < end * (1.0 - 1e-12) {
         if stop.is_some_and(|s| s.load(Ordering::SeqCst)) {
             standing.summary.status = RunStatus::Interrupted;
@@ -500,6 +538,11 @@ fn time_loop(
         standing.dt.converged(step_dt, outcome.iterations, hit_cap);
         if let Err(e) = monitors.after_step(solver, &grid, standing.time, end) {
             return Ok(Some(e));
+        }
+        if let (Some(rule), Some(watch)) = (&run.stop_at_rest, rest.as_mut()) {
+            if watch.at_rest_after(solver.bulk(rule.front_threshold), standing.time, rule) {
+                break;
+            }
         }
         progress(&Progress {
             time: standing.time,

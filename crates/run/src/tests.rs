@@ -148,3 +148,46 @@ fn a_step_cut_to_the_end_time_shrinks_when_it_fails() {
     );
     assert_eq!(s.rejected_steps, 3, "1e-9 → 5e-10 → 2.5e-10 → below dt_min");
 }
+
+/// `run.stop_at_rest`: the still stretch starts at the first slow step, restarts when the
+/// front moves or the speed rises, and ends the run once it has lasted the duration.
+#[test]
+fn rest_watch_counts_one_still_stretch() {
+    let rule = runout_case::StopAtRest {
+        speed: 0.01,
+        duration: 0.1,
+        front_threshold: 0.01,
+    };
+    let mut watch = crate::RestWatch::default();
+    assert!(!watch.at_rest_after(Some((0.3, 0.5)), 0.0, &rule));
+    assert!(!watch.at_rest_after(Some((0.3, 0.005)), 0.1, &rule));
+    assert!(!watch.at_rest_after(Some((0.35, 0.005)), 0.15, &rule)); // the front moved
+    assert!(!watch.at_rest_after(Some((0.35, 0.005)), 0.2, &rule));
+    assert!(!watch.at_rest_after(None, 0.22, &rule)); // no solids: no rest
+    assert!(!watch.at_rest_after(Some((0.35, 0.005)), 0.25, &rule));
+    assert!(watch.at_rest_after(Some((0.35, 0.001)), 0.35, &rule));
+}
+
+/// A μ(I) column at smoke size with a generous rest rule (mean u_s ≤ 0.2 m/s and a still
+/// front for 0.02 s: its front moves a 1 cm cell about every 0.03 s after 0.2 s) ends before
+/// its end time (issue 43 item 4).
+#[test]
+fn a_run_at_rest_ends_itself() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let Loaded::Cases(cases) = load(&root.join("cases/collapse/CM-a1.ron")).unwrap() else {
+        panic!("CM-a1.ron is a case file")
+    };
+    let mut case = cases[0].case.clone();
+    case.fidelity.smoke.end_time = 0.5;
+    case.run.stop_at_rest = Some(runout_case::StopAtRest {
+        speed: 0.2,
+        duration: 0.02,
+        front_threshold: 0.01,
+    });
+    let dir = std::env::temp_dir().join(format!("runout-rest-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let summary = crate::run_case(&case, Fidelity::Smoke, &dir, |_| {}).unwrap();
+    assert_eq!(summary.status, RunStatus::Completed);
+    assert!(summary.simulated_time < 0.45, "{}", summary.simulated_time);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
