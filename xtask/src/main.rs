@@ -219,8 +219,13 @@ enum Task {
     },
 }
 
-/// The workspace root (xtask lives one level below it).
+/// The folder that holds `runs/`, `results/` and `docs/`: `$XTASK_ROOT` if set (the tests
+/// sweep into a temporary folder so), else the workspace root (xtask lives one level below
+/// it).
 fn root() -> PathBuf {
+    if let Some(dir) = std::env::var_os("XTASK_ROOT").filter(|d| !d.is_empty()) {
+        return PathBuf::from(dir);
+    }
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .parent()
         .expect("workspace root")

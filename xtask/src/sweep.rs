@@ -27,8 +27,9 @@ use indicatif::{MultiProgress, ProgressBar, ProgressStyle};
 use runout_case::{case_files, load, Case, Fidelity, Loaded, SourcedCase};
 use runout_output::RunSummary;
 use runout_run::checkpoint::CHECKPOINT_DIR;
+use runout_run::lock::RunLock;
 use runout_run::store::{self, Request, Reuse, Stored};
-use runout_run::{signals, Progress, RunError};
+use runout_run::{seal, signals, Progress, RunError};
 
 use crate::collapse::COLLAPSE_DIR;
 use crate::metrics::{described_speeds, flow_metrics, FlowMetrics};
@@ -121,6 +122,9 @@ pub(crate) enum Outcome {
     /// stopped by a signal with a checkpoint in its `.partial` folder: the next sweep
     /// continues it
     Interrupted(RunSummary),
+    /// another process is writing its folder (the lock's holder: pid, host, since): not
+    /// run, and its row left alone
+    Elsewhere(String),
 }
 
 /// Runs one case into its folder, atomically.
@@ -172,6 +176,7 @@ pub(crate) fn run_into(
         Ok(Stored::Ran(summary)) => Outcome::Done(summary),
         Ok(Stored::Reused(summary)) => Outcome::Skipped(summary),
         Err(RunError::Unsupported { reason, .. }) => Outcome::Unsupported(reason),
+        Err(RunError::Running { holder, .. }) => Outcome::Elsewhere(holder),
         Err(e) => Outcome::Failed(e.to_string()),
     }
 }
@@ -217,27 +222,33 @@ fn duplicates(selected: &[&SourcedCase], fidelity: Fidelity) -> Vec<Option<usize
 /// `from`'s case, and a restart refuses another case).
 fn copy_run(runs: &Path, from: &str, to: &str, fidelity: Fidelity) -> Outcome {
     let done = runs.join(to).join(fidelity.name());
+    let _lock = match RunLock::acquire(&done) {
+        Ok(lock) => lock,
+        Err(RunError::Running { holder, .. }) => return Outcome::Elsewhere(holder),
+        Err(e) => return Outcome::Failed(e.to_string()),
+    };
     if let Some(summary) = store::read_summary(&done) {
         return Outcome::Skipped(summary);
     }
     let source = runs.join(from).join(fidelity.name());
-    let partial = runs.join(to).join(format!("{}.partial", fidelity.name()));
+    let partial = store::partial_dir(&done);
     let copy = || -> Result<RunSummary> {
         let _ = std::fs::remove_dir_all(&partial);
         std::fs::create_dir_all(&partial)?;
         copy_outputs(&source, &partial)?;
-        let mut summary = store::read_summary(&partial)
-            .with_context(|| format!("no summary in {}", source.display()))?;
-        summary.case = to.to_string();
-        summary.write_json(&partial.join("summary.json"))?;
         let resolved = partial.join("resolved.ron");
         if let Ok(text) = std::fs::read_to_string(&resolved) {
             let renamed =
                 text.replacen(&format!("name: \"{from}\""), &format!("name: \"{to}\""), 1);
             std::fs::write(&resolved, renamed)?;
         }
-        let _ = std::fs::remove_dir_all(&done);
-        std::fs::rename(&partial, &done)?;
+        let mut summary = store::read_summary(&partial)
+            .with_context(|| format!("no complete run in {}", source.display()))?;
+        summary.case = to.to_string();
+        // the renamed resolved.ron has another size: the list is made again
+        summary.files = seal::seal(&partial)?;
+        summary.write_json(&partial.join("summary.json"))?;
+        store::move_into_place(&partial, &done)?;
         Ok(summary)
     };
     match copy() {
@@ -313,6 +324,7 @@ fn csv_row(name: &str, fidelity: Fidelity, outcome: &Outcome, flow: &FlowMetrics
                 s.simulated_time
             ))
         ),
+        Outcome::Elsewhere(_) => unreachable!("a run going elsewhere has no row here"),
     }
 }
 
@@ -393,6 +405,10 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
     let mut tally = Tally::default();
     for (k, outcome) in &outcomes {
         let name = &selected[*k].case.name;
+        tally.count(name, outcome);
+        if matches!(outcome, Outcome::Elsewhere(_)) {
+            continue; // its row is the other process's to write
+        }
         let flow = match outcome {
             Outcome::Done(_) | Outcome::Skipped(_) | Outcome::Copied(..) => {
                 flow_metrics(&runs_dir.join(name).join(fidelity.name()), &described)
@@ -400,7 +416,6 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
             _ => FlowMetrics::default(),
         };
         rows.push(csv_row(name, fidelity, outcome, &flow));
-        tally.count(name, outcome);
     }
     let order: Vec<&str> = runs.iter().map(|r| r.case.name.as_str()).collect();
     let total = summary::write_merged(&results, HEADER, &rows, &order, summary::LOCK_TIMEOUT)?;
@@ -411,11 +426,12 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
         unsupported,
         failed,
         interrupted,
+        elsewhere,
     } = tally;
     println!(
         "ran {ran}, copied {copied} (repeats of a run), skipped {skipped} (finished earlier), \
-         unsupported {unsupported}, failed {failed} in {:.1} s; {} row(s) merged into {} ({total} \
-         in all)",
+         unsupported {unsupported}, failed {failed}, running elsewhere {elsewhere} in {:.1} s; \
+         {} row(s) merged into {} ({total} in all)",
         started.elapsed().as_secs_f64(),
         rows.len(),
         results.strip_prefix(root).unwrap_or(&results).display()
@@ -429,6 +445,13 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
     }
     if failed > 0 {
         bail!("{failed} run(s) failed");
+    }
+    if elsewhere > 0 {
+        bail!(
+            "{elsewhere} case(s) running elsewhere were not run here and their rows were left \
+             alone: the process writing them merges them; run the sweep again after it ends \
+             for any it did not finish"
+        );
     }
     if interrupted > 0 || stop.load(Ordering::SeqCst) {
         bail!(
@@ -565,6 +588,7 @@ struct Tally {
     unsupported: usize,
     failed: usize,
     interrupted: usize,
+    elsewhere: usize,
 }
 
 impl Tally {
@@ -595,6 +619,10 @@ impl Tally {
                     "  {name:<34} interrupted at t = {} s with a checkpoint",
                     s.simulated_time
                 );
+            }
+            Outcome::Elsewhere(holder) => {
+                self.elsewhere += 1;
+                println!("  {name:<34} running elsewhere ({holder}): skipped, row left alone");
             }
         }
     }
@@ -775,6 +803,7 @@ mod tests {
             status: RunStatus::Completed,
             profile: Vec::new(),
             linear_iterations: Vec::new(),
+            files: Vec::new(),
         };
         for outcome in [
             Outcome::Done(summary.clone()),

@@ -82,6 +82,21 @@ pub struct RunSummary {
     /// empty otherwise
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub linear_iterations: Vec<(String, u64)>,
+    /// every file a finished run wrote besides `summary.json` (not its checkpoints), with
+    /// its size: a folder that lacks one, or holds it shorter, is damaged. Empty while the
+    /// run goes and in runs made before the list existed. (Always written: a checkpoint
+    /// stores the summary in a format without field names.)
+    #[serde(default)]
+    pub files: Vec<RunFile>,
+}
+
+/// A file of a finished run, as its summary lists it.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct RunFile {
+    /// its name in the run folder
+    pub name: String,
+    /// its size [bytes]
+    pub bytes: u64,
 }
 
 impl RunSummary {

@@ -53,7 +53,7 @@ pub fn choose_run(runs: &Path, case: &str, requested: Option<Fidelity>) -> Resul
         let Some(summary) = read_summary(&dir) else {
             continue;
         };
-        let summary = summary.map_err(|e| format!("unreadable {fidelity} summary.json: {e}"))?;
+        let summary = summary.map_err(|e| format!("{fidelity} run: {e}"))?;
         return Ok(Run {
             fidelity,
             dir,
