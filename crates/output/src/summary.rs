@@ -75,12 +75,13 @@ pub struct RunSummary {
     /// how the run ended
     pub status: RunStatus,
     /// wall time per part of the solver's iteration [s] (closures, walls, each assembly and
-    /// linear solve), where the solver reports it; empty otherwise
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    /// linear solve), where the solver reports it; empty otherwise (always written, as
+    /// [`RunSummary::files`])
+    #[serde(default)]
     pub profile: Vec<(String, f64)>,
     /// linear-solver iterations per equation over the run, where the solver reports them;
-    /// empty otherwise
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    /// empty otherwise (always written)
+    #[serde(default)]
     pub linear_iterations: Vec<(String, u64)>,
     /// every file a finished run wrote besides `summary.json` (not its checkpoints), with
     /// its size: a folder that lacks one, or holds it shorter, is damaged. Empty while the
