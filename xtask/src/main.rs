@@ -35,6 +35,7 @@ mod error_time;
 mod figure;
 mod jobs;
 mod mfix_slope;
+mod repeat;
 mod report;
 mod sensitivity;
 mod stability;

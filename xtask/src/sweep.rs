@@ -12,9 +12,8 @@
 //! Runs go longest first to the first free worker (the length: the case's wall time in the
 //! last results/summary.csv at this fidelity, else its cells × simulated time). A case that
 //! repeats another at this fidelity in everything but its name and description (the base
-//! point shared by several one-factor families) is run once; its folder is copied, with the
-//! name changed in `summary.json` and `resolved.ron`, and the summary's wall time is the
-//! one run's.
+//! point shared by several one-factor families) is run once; its folder is copied
+//! ([`crate::repeat`]), and the summary's wall time is the one run's.
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -22,14 +21,12 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::Instant;
 
-use anyhow::{bail, Context, Result};
+use anyhow::{bail, Result};
 use indicatif::{MultiProgress, ProgressBar, ProgressStyle};
 use runout_case::{case_files, load, Case, Fidelity, Loaded, SourcedCase};
 use runout_output::RunSummary;
-use runout_run::checkpoint::CHECKPOINT_DIR;
-use runout_run::lock::RunLock;
 use runout_run::store::{self, Request, Reuse, Stored};
-use runout_run::{seal, signals, Progress, RunError};
+use runout_run::{signals, Progress, RunError};
 
 use crate::collapse::COLLAPSE_DIR;
 use crate::metrics::{described_speeds, flow_metrics, FlowMetrics};
@@ -216,65 +213,6 @@ fn duplicates(selected: &[&SourcedCase], fidelity: Fidelity) -> Vec<Option<usize
         .collect()
 }
 
-/// Copies the finished run of `from` to the folder of `to` (a repeat of the same case),
-/// with the case name in its summary and resolved case changed to `to`; skipped if `to` is
-/// finished already. The checkpoints stay with the run that wrote them (they restart
-/// `from`'s case, and a restart refuses another case).
-fn copy_run(runs: &Path, from: &str, to: &str, fidelity: Fidelity) -> Outcome {
-    let done = runs.join(to).join(fidelity.name());
-    let _lock = match RunLock::acquire(&done) {
-        Ok(lock) => lock,
-        Err(RunError::Running { holder, .. }) => return Outcome::Elsewhere(holder),
-        Err(e) => return Outcome::Failed(e.to_string()),
-    };
-    if let Some(summary) = store::read_summary(&done) {
-        return Outcome::Skipped(summary);
-    }
-    let source = runs.join(from).join(fidelity.name());
-    let partial = store::partial_dir(&done);
-    let copy = || -> Result<RunSummary> {
-        let _ = std::fs::remove_dir_all(&partial);
-        std::fs::create_dir_all(&partial)?;
-        copy_outputs(&source, &partial)?;
-        let resolved = partial.join("resolved.ron");
-        if let Ok(text) = std::fs::read_to_string(&resolved) {
-            let renamed =
-                text.replacen(&format!("name: \"{from}\""), &format!("name: \"{to}\""), 1);
-            std::fs::write(&resolved, renamed)?;
-        }
-        let mut summary = store::read_summary(&partial)
-            .with_context(|| format!("no complete run in {}", source.display()))?;
-        summary.case = to.to_string();
-        // the renamed resolved.ron has another size: the list is made again
-        summary.files = seal::seal(&partial)?;
-        summary.write_json(&partial.join("summary.json"))?;
-        store::move_into_place(&partial, &done)?;
-        Ok(summary)
-    };
-    match copy() {
-        Ok(summary) => Outcome::Copied(summary, from.to_string()),
-        Err(e) => Outcome::Failed(format!("copying the run of {from}: {e:#}")),
-    }
-}
-
-/// Copies the files of the run folder `source` into `dest`, and its folders (but its
-/// checkpoints) recursively.
-fn copy_outputs(source: &Path, dest: &Path) -> Result<()> {
-    std::fs::create_dir_all(dest)?;
-    for entry in std::fs::read_dir(source)? {
-        let entry = entry?;
-        let (from, to) = (entry.path(), dest.join(entry.file_name()));
-        if entry.file_type()?.is_dir() {
-            if entry.file_name() != CHECKPOINT_DIR {
-                copy_outputs(&from, &to)?;
-            }
-        } else {
-            std::fs::copy(&from, &to).with_context(|| format!("copying {}", from.display()))?;
-        }
-    }
-    Ok(())
-}
-
 pub use runout_run::store::finished_run;
 
 /// CSV field quoting (RFC 4180).
@@ -395,7 +333,7 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
             continue;
         };
         let from = &selected[original].case.name;
-        let outcome = copy_run(&runs_dir, from, &selected[k].case.name, fidelity);
+        let outcome = crate::repeat::copy_run(&runs_dir, from, &selected[k].case.name, fidelity);
         outcomes.push((k, outcome));
     }
     outcomes.sort_by_key(|(k, _)| *k);
@@ -750,33 +688,6 @@ mod tests {
         std::fs::remove_file(tmp.0.join("results").join("summary.csv")).unwrap();
         assert_eq!(sweep_of("S-JJ", Some((2, 2))).len(), 3);
         assert_eq!(sweep_of("S-JJ", Some((1, 2))), names);
-    }
-
-    /// A repeat of a finished `wall` run (which holds a checkpoints folder) is copied with
-    /// its outputs and its name, without the checkpoints (session 17: the copy failed on the
-    /// folder).
-    #[test]
-    fn a_repeat_is_copied_without_the_checkpoints() {
-        use runout_post::fixture::{write_run, TempDir};
-        let tmp = TempDir::new("sweep-copy");
-        let runs = tmp.0.join("runs");
-        write_run(&runs, "a", "wall", 0.4, &[("bulk.csv", "t\n0\n")]);
-        let checkpoints = runs.join("a").join("wall").join(CHECKPOINT_DIR);
-        std::fs::create_dir_all(&checkpoints).unwrap();
-        std::fs::write(checkpoints.join("step_0000000001.ckpt"), "x").unwrap();
-        let outcome = copy_run(&runs, "a", "b", Fidelity::Wall);
-        let Outcome::Copied(summary, from) = outcome else {
-            panic!("not copied");
-        };
-        assert_eq!((summary.case.as_str(), from.as_str()), ("b", "a"));
-        let copy = runs.join("b").join("wall");
-        assert_eq!(
-            std::fs::read_to_string(copy.join("bulk.csv")).unwrap(),
-            "t\n0\n"
-        );
-        assert_eq!(store::read_summary(&copy).unwrap().case, "b");
-        assert!(!copy.join(CHECKPOINT_DIR).exists());
-        assert!(checkpoints.join("step_0000000001.ckpt").exists());
     }
 
     #[test]
