@@ -333,7 +333,15 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
             continue;
         };
         let from = &selected[original].case.name;
-        let outcome = crate::repeat::copy_run(&runs_dir, from, &selected[k].case.name, fidelity);
+        // the repeat of a run going elsewhere waits for it likewise
+        let elsewhere = outcomes.iter().find_map(|(e, o)| match o {
+            Outcome::Elsewhere(holder) if *e == original => Some(holder.clone()),
+            _ => None,
+        });
+        let outcome = match elsewhere {
+            Some(holder) => Outcome::Elsewhere(holder),
+            None => crate::repeat::copy_run(&runs_dir, from, &selected[k].case.name, fidelity),
+        };
         outcomes.push((k, outcome));
     }
     outcomes.sort_by_key(|(k, _)| *k);
