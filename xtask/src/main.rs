@@ -35,6 +35,7 @@ mod error_time;
 mod figure;
 mod jobs;
 mod mfix_slope;
+mod repeat;
 mod report;
 mod sensitivity;
 mod stability;
@@ -227,8 +228,13 @@ enum Task {
     },
 }
 
-/// The workspace root (xtask lives one level below it).
+/// The folder that holds `runs/`, `results/` and `docs/`: `$XTASK_ROOT` if set (the tests
+/// sweep into a temporary folder so), else the workspace root (xtask lives one level below
+/// it).
 fn root() -> PathBuf {
+    if let Some(dir) = std::env::var_os("XTASK_ROOT").filter(|d| !d.is_empty()) {
+        return PathBuf::from(dir);
+    }
     Path::new(env!("CARGO_MANIFEST_DIR"))
         .parent()
         .expect("workspace root")

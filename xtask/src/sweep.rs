@@ -12,9 +12,8 @@
 //! Runs go longest first to the first free worker (the length: the case's wall time in the
 //! last results/summary.csv at this fidelity, else its cells × simulated time). A case that
 //! repeats another at this fidelity in everything but its name and description (the base
-//! point shared by several one-factor families) is run once; its folder is copied, with the
-//! name changed in `summary.json` and `resolved.ron`, and the summary's wall time is the
-//! one run's.
+//! point shared by several one-factor families) is run once; its folder is copied
+//! ([`crate::repeat`]), and the summary's wall time is the one run's.
 
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -22,11 +21,10 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex};
 use std::time::Instant;
 
-use anyhow::{bail, Context, Result};
+use anyhow::{bail, Result};
 use indicatif::{MultiProgress, ProgressBar, ProgressStyle};
 use runout_case::{case_files, load, Case, Fidelity, Loaded, SourcedCase};
 use runout_output::RunSummary;
-use runout_run::checkpoint::CHECKPOINT_DIR;
 use runout_run::store::{self, Request, Reuse, Stored};
 use runout_run::{signals, Progress, RunError};
 
@@ -121,6 +119,9 @@ pub(crate) enum Outcome {
     /// stopped by a signal with a checkpoint in its `.partial` folder: the next sweep
     /// continues it
     Interrupted(RunSummary),
+    /// another process is writing its folder (the lock's holder: pid, host, since): not
+    /// run, and its row left alone
+    Elsewhere(String),
 }
 
 /// Runs one case into its folder, atomically.
@@ -172,6 +173,7 @@ pub(crate) fn run_into(
         Ok(Stored::Ran(summary)) => Outcome::Done(summary),
         Ok(Stored::Reused(summary)) => Outcome::Skipped(summary),
         Err(RunError::Unsupported { reason, .. }) => Outcome::Unsupported(reason),
+        Err(RunError::Running { holder, .. }) => Outcome::Elsewhere(holder),
         Err(e) => Outcome::Failed(e.to_string()),
     }
 }
@@ -209,59 +211,6 @@ fn duplicates(selected: &[&SourcedCase], fidelity: Fidelity) -> Vec<Option<usize
     (0..selected.len())
         .map(|k| (0..k).find(|&e| anonymous[e] == anonymous[k]))
         .collect()
-}
-
-/// Copies the finished run of `from` to the folder of `to` (a repeat of the same case),
-/// with the case name in its summary and resolved case changed to `to`; skipped if `to` is
-/// finished already. The checkpoints stay with the run that wrote them (they restart
-/// `from`'s case, and a restart refuses another case).
-fn copy_run(runs: &Path, from: &str, to: &str, fidelity: Fidelity) -> Outcome {
-    let done = runs.join(to).join(fidelity.name());
-    if let Some(summary) = store::read_summary(&done) {
-        return Outcome::Skipped(summary);
-    }
-    let source = runs.join(from).join(fidelity.name());
-    let partial = runs.join(to).join(format!("{}.partial", fidelity.name()));
-    let copy = || -> Result<RunSummary> {
-        let _ = std::fs::remove_dir_all(&partial);
-        std::fs::create_dir_all(&partial)?;
-        copy_outputs(&source, &partial)?;
-        let mut summary = store::read_summary(&partial)
-            .with_context(|| format!("no summary in {}", source.display()))?;
-        summary.case = to.to_string();
-        summary.write_json(&partial.join("summary.json"))?;
-        let resolved = partial.join("resolved.ron");
-        if let Ok(text) = std::fs::read_to_string(&resolved) {
-            let renamed =
-                text.replacen(&format!("name: \"{from}\""), &format!("name: \"{to}\""), 1);
-            std::fs::write(&resolved, renamed)?;
-        }
-        let _ = std::fs::remove_dir_all(&done);
-        std::fs::rename(&partial, &done)?;
-        Ok(summary)
-    };
-    match copy() {
-        Ok(summary) => Outcome::Copied(summary, from.to_string()),
-        Err(e) => Outcome::Failed(format!("copying the run of {from}: {e:#}")),
-    }
-}
-
-/// Copies the files of the run folder `source` into `dest`, and its folders (but its
-/// checkpoints) recursively.
-fn copy_outputs(source: &Path, dest: &Path) -> Result<()> {
-    std::fs::create_dir_all(dest)?;
-    for entry in std::fs::read_dir(source)? {
-        let entry = entry?;
-        let (from, to) = (entry.path(), dest.join(entry.file_name()));
-        if entry.file_type()?.is_dir() {
-            if entry.file_name() != CHECKPOINT_DIR {
-                copy_outputs(&from, &to)?;
-            }
-        } else {
-            std::fs::copy(&from, &to).with_context(|| format!("copying {}", from.display()))?;
-        }
-    }
-    Ok(())
 }
 
 pub use runout_run::store::finished_run;
@@ -313,6 +262,7 @@ fn csv_row(name: &str, fidelity: Fidelity, outcome: &Outcome, flow: &FlowMetrics
                 s.simulated_time
             ))
         ),
+        Outcome::Elsewhere(_) => unreachable!("a run going elsewhere has no row here"),
     }
 }
 
@@ -383,7 +333,15 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
             continue;
         };
         let from = &selected[original].case.name;
-        let outcome = copy_run(&runs_dir, from, &selected[k].case.name, fidelity);
+        // the repeat of a run going elsewhere waits for it likewise
+        let elsewhere = outcomes.iter().find_map(|(e, o)| match o {
+            Outcome::Elsewhere(holder) if *e == original => Some(holder.clone()),
+            _ => None,
+        });
+        let outcome = match elsewhere {
+            Some(holder) => Outcome::Elsewhere(holder),
+            None => crate::repeat::copy_run(&runs_dir, from, &selected[k].case.name, fidelity),
+        };
         outcomes.push((k, outcome));
     }
     outcomes.sort_by_key(|(k, _)| *k);
@@ -393,6 +351,10 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
     let mut tally = Tally::default();
     for (k, outcome) in &outcomes {
         let name = &selected[*k].case.name;
+        tally.count(name, outcome);
+        if matches!(outcome, Outcome::Elsewhere(_)) {
+            continue; // its row is the other process's to write
+        }
         let flow = match outcome {
             Outcome::Done(_) | Outcome::Skipped(_) | Outcome::Copied(..) => {
                 flow_metrics(&runs_dir.join(name).join(fidelity.name()), &described)
@@ -400,7 +362,6 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
             _ => FlowMetrics::default(),
         };
         rows.push(csv_row(name, fidelity, outcome, &flow));
-        tally.count(name, outcome);
     }
     let order: Vec<&str> = runs.iter().map(|r| r.case.name.as_str()).collect();
     let total = summary::write_merged(&results, HEADER, &rows, &order, summary::LOCK_TIMEOUT)?;
@@ -411,11 +372,12 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
         unsupported,
         failed,
         interrupted,
+        elsewhere,
     } = tally;
     println!(
         "ran {ran}, copied {copied} (repeats of a run), skipped {skipped} (finished earlier), \
-         unsupported {unsupported}, failed {failed} in {:.1} s; {} row(s) merged into {} ({total} \
-         in all)",
+         unsupported {unsupported}, failed {failed}, running elsewhere {elsewhere} in {:.1} s; \
+         {} row(s) merged into {} ({total} in all)",
         started.elapsed().as_secs_f64(),
         rows.len(),
         results.strip_prefix(root).unwrap_or(&results).display()
@@ -429,6 +391,13 @@ pub fn sweep(root: &Path, cases_dir: &Path, opts: &SweepOptions) -> Result<()> {
     }
     if failed > 0 {
         bail!("{failed} run(s) failed");
+    }
+    if elsewhere > 0 {
+        bail!(
+            "{elsewhere} case(s) running elsewhere were not run here and their rows were left \
+             alone: the process writing them merges them; run the sweep again after it ends \
+             for any it did not finish"
+        );
     }
     if interrupted > 0 || stop.load(Ordering::SeqCst) {
         bail!(
@@ -565,6 +534,7 @@ struct Tally {
     unsupported: usize,
     failed: usize,
     interrupted: usize,
+    elsewhere: usize,
 }
 
 impl Tally {
@@ -595,6 +565,10 @@ impl Tally {
                     "  {name:<34} interrupted at t = {} s with a checkpoint",
                     s.simulated_time
                 );
+            }
+            Outcome::Elsewhere(holder) => {
+                self.elsewhere += 1;
+                println!("  {name:<34} running elsewhere ({holder}): skipped, row left alone");
             }
         }
     }
@@ -724,33 +698,6 @@ mod tests {
         assert_eq!(sweep_of("S-JJ", Some((1, 2))), names);
     }
 
-    /// A repeat of a finished `wall` run (which holds a checkpoints folder) is copied with
-    /// its outputs and its name, without the checkpoints (session 17: the copy failed on the
-    /// folder).
-    #[test]
-    fn a_repeat_is_copied_without_the_checkpoints() {
-        use runout_post::fixture::{write_run, TempDir};
-        let tmp = TempDir::new("sweep-copy");
-        let runs = tmp.0.join("runs");
-        write_run(&runs, "a", "wall", 0.4, &[("bulk.csv", "t\n0\n")]);
-        let checkpoints = runs.join("a").join("wall").join(CHECKPOINT_DIR);
-        std::fs::create_dir_all(&checkpoints).unwrap();
-        std::fs::write(checkpoints.join("step_0000000001.ckpt"), "x").unwrap();
-        let outcome = copy_run(&runs, "a", "b", Fidelity::Wall);
-        let Outcome::Copied(summary, from) = outcome else {
-            panic!("not copied");
-        };
-        assert_eq!((summary.case.as_str(), from.as_str()), ("b", "a"));
-        let copy = runs.join("b").join("wall");
-        assert_eq!(
-            std::fs::read_to_string(copy.join("bulk.csv")).unwrap(),
-            "t\n0\n"
-        );
-        assert_eq!(store::read_summary(&copy).unwrap().case, "b");
-        assert!(!copy.join(CHECKPOINT_DIR).exists());
-        assert!(checkpoints.join("step_0000000001.ckpt").exists());
-    }
-
     #[test]
     fn every_row_has_the_header_width() {
         let width = columns(HEADER);
@@ -775,6 +722,7 @@ mod tests {
             status: RunStatus::Completed,
             profile: Vec::new(),
             linear_iterations: Vec::new(),
+            files: Vec::new(),
         };
         for outcome in [
             Outcome::Done(summary.clone()),

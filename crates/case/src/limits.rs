@@ -302,7 +302,7 @@ pub const BANDS: [Band; 25] = [
 ];
 
 /// Most cells of a case's grid at any fidelity: 10 million, 110 times the paper's finest
-/// grid (1000 × 90) and ≈ 18 GiB for the two-fluid solver at the measured bytes per cell
+/// grid (1000 × 90) and ≈ 23 GiB for the two-fluid solver at the measured bytes per cell
 /// ([`crate::estimated_memory_bytes`]). A 40 000 × 25 000 grid (1e9 cells, ~1.8 TiB) used
 /// to pass `check` and be killed for memory a second into `run`.
 pub const MAX_CELLS: usize = 10_000_000;

@@ -8,15 +8,17 @@ use crate::schema::Case;
 /// Peak memory per cell of the gas (single-phase) solver [bytes]. Measured as the peak
 /// resident set (`/usr/bin/time -f %M`, the kernel's VmHWM) of `runout run --end-time 0.02`
 /// on examples/cavity-re100.ron at 64², 256² and 512² cells: 9 960, 64 056 and 236 612 KiB,
-/// slopes of 902 and 899 B per cell; with a 5 % margin.
-const GAS_BYTES_PER_CELL: u64 = 950;
+/// slopes of 902 and 899 B per cell; a run that writes a checkpoint (SIGINT, the sweep's
+/// every 10 min) peaks higher: 69 796 KiB at 256², 930 B per cell above 10 MiB
+/// (docs/input-validation.md, issue 44); with a margin.
+const GAS_BYTES_PER_CELL: u64 = 1050;
 
-/// Peak memory per cell added by each solids phase [bytes]. Measured likewise with
-/// `runout run --end-time 2e-4` on cases/mfix-slope/jj.ron (one phase) at 200 × 50,
-/// 400 × 100 and 800 × 200 cells: 26 880, 80 340 and 299 608 KiB, slopes of 1 825 and
-/// 1 871 B per cell for the two-fluid solver, 925..971 B above the gas solver's; with a
-/// margin (the two-fluid estimate is 1 950 B per cell).
-const SOLIDS_PHASE_BYTES_PER_CELL: u64 = 1000;
+/// Peak memory per cell added by each solids phase [bytes]. Measured likewise on every
+/// shipped two-fluid case (docs/input-validation.md, issue 44): a run that writes a
+/// checkpoint peaks at up to 2 300 B per cell above 10 MiB (S-JJ-phi at the paper grid,
+/// 90 000 cells: 212 448 KiB; the stiff cases at `wall` fidelity 2 293); with a margin,
+/// the one-phase estimate is 2 600 B per cell (C-a1 at `wall`, 4 000 cells: 2 476 B).
+const SOLIDS_PHASE_BYTES_PER_CELL: u64 = 1550;
 
 /// Memory independent of the grid [bytes]: the measured intercepts are 6.2 MiB (gas) and
 /// 8.4 MiB (two-fluid); rounded up.
@@ -69,7 +71,7 @@ pub(crate) fn bytes_for_cells(cells: u64, phases: u64) -> u64 {
 }
 
 /// Estimated peak memory of `runout run` on `case` as written [bytes]: 10 MiB plus, per
-/// cell, 950 B for the gas and 1000 B per solids phase (measured, see the constants);
+/// cell, 1050 B for the gas and 1550 B per solids phase (measured, see the constants);
 /// `u64::MAX` when the grid is invalid (it cannot be run).
 pub fn estimated_memory_bytes(case: &Case) -> u64 {
     case_size(case).map_or(u64::MAX, |s| s.memory_bytes)

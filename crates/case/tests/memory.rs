@@ -23,8 +23,9 @@ fn estimate_follows_cells_and_phases() {
     let s = case_size(&slide).unwrap();
     assert_eq!((s.nx, s.ny, s.cells), (200, 50, 10_000));
     assert_eq!(s.unknowns, 10_000 * 7);
-    // measured peak 26 880 KiB (27.5 MB) for this grid: the estimate is within 15 % above
-    let measured = 26_880.0 * 1024.0;
+    // measured peak 32 504 KiB for this grid with a checkpoint written (issue 44; 26 880
+    // KiB without): the estimate is within 15 % above
+    let measured = 32_504.0 * 1024.0;
     let ratio = s.memory_bytes as f64 / measured;
     assert!((1.0..1.15).contains(&ratio), "{ratio}");
     assert_eq!(estimated_memory_bytes(&slide), s.memory_bytes);
@@ -37,8 +38,8 @@ fn estimate_follows_cells_and_phases() {
     };
     let smoke = case_size(&slide.at_fidelity(Fidelity::Smoke)).unwrap();
     let cavity_smoke = case_size(&cavity.at_fidelity(Fidelity::Smoke)).unwrap();
-    assert!(per_cell(&s, &smoke) > 1.9 * 1000.0);
-    assert!(per_cell(&c, &cavity_smoke) < 1000.0);
+    assert!(per_cell(&s, &smoke) > 2.2 * 1000.0);
+    assert!(per_cell(&c, &cavity_smoke) < 1100.0);
 }
 
 #[test]

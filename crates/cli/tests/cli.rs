@@ -50,7 +50,7 @@ fn check_prints_cells_unknowns_and_memory() {
     assert!(o.status.success(), "{}", text(&o));
     let t = text(&o);
     assert!(
-        t.contains("paper 200x50 = 10000 cells, 70000 unknowns, ~2") && t.contains(" MiB"),
+        t.contains("paper 200x50 = 10000 cells, 70000 unknowns, ~3") && t.contains(" MiB"),
         "{t}"
     );
     assert!(t.contains("smoke 40x10 = 400 cells"), "{t}");

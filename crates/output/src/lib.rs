@@ -18,7 +18,7 @@ mod summary;
 mod vtk;
 
 pub use csv_series::CsvSeries;
-pub use summary::{DtStats, RunStatus, RunSummary};
+pub use summary::{DtStats, RunFile, RunStatus, RunSummary};
 pub use vtk::{read_pvd, read_vtr_array, read_vtr_cells, write_vtr, CellField, PvdSeries};
 
 use std::io::Write;

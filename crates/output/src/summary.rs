@@ -75,13 +75,29 @@ pub struct RunSummary {
     /// how the run ended
     pub status: RunStatus,
     /// wall time per part of the solver's iteration [s] (closures, walls, each assembly and
-    /// linear solve), where the solver reports it; empty otherwise
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    /// linear solve), where the solver reports it; empty otherwise (always written, as
+    /// [`RunSummary::files`])
+    #[serde(default)]
     pub profile: Vec<(String, f64)>,
     /// linear-solver iterations per equation over the run, where the solver reports them;
-    /// empty otherwise
-    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    /// empty otherwise (always written)
+    #[serde(default)]
     pub linear_iterations: Vec<(String, u64)>,
+    /// every file a finished run wrote besides `summary.json` (not its checkpoints), with
+    /// its size: a folder that lacks one, or holds it shorter, is damaged. Empty while the
+    /// run goes and in runs made before the list existed. (Always written: a checkpoint
+    /// stores the summary in a format without field names.)
+    #[serde(default)]
+    pub files: Vec<RunFile>,
+}
+
+/// A file of a finished run, as its summary lists it.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct RunFile {
+    /// its name in the run folder
+    pub name: String,
+    /// its size [bytes]
+    pub bytes: u64,
 }
 
 impl RunSummary {

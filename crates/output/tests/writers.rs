@@ -149,6 +149,7 @@ fn summary_round_trips() {
         },
         profile: vec![("closures".into(), 0.25), ("pressure_solve".into(), 0.5)],
         linear_iterations: Vec::new(),
+        files: Vec::new(),
     };
     let path = tmp("summary.json");
     s.write_json(&path).unwrap();

@@ -53,7 +53,7 @@ pub fn choose_run(runs: &Path, case: &str, requested: Option<Fidelity>) -> Resul
         let Some(summary) = read_summary(&dir) else {
             continue;
         };
-        let summary = summary.map_err(|e| format!("unreadable {fidelity} summary.json: {e}"))?;
+        let summary = summary.map_err(|e| format!("{fidelity} run: {e}"))?;
         return Ok(Run {
             fidelity,
             dir,
@@ -101,6 +101,36 @@ mod tests {
         assert_eq!(
             choose_run(&runs, "A", None).unwrap().fidelity,
             Fidelity::Paper
+        );
+    }
+
+    #[test]
+    fn a_folder_that_lacks_a_file_its_summary_lists_is_reported_damaged() {
+        let tmp = TempDir::new("damaged");
+        let runs = tmp.0.join("runs");
+        write_run(&runs, "A", "coarse", 1.25, &[("bulk.csv", "t\n0\n")]);
+        let dir = runs.join("A").join("coarse");
+        let mut summary = read_summary(&dir).unwrap().unwrap();
+        summary.files = vec![
+            runout_output::RunFile {
+                name: "bulk.csv".into(),
+                bytes: 4,
+            },
+            runout_output::RunFile {
+                name: "fields.pvd".into(),
+                bytes: 10,
+            },
+        ];
+        summary.write_json(&dir.join("summary.json")).unwrap();
+        let err = choose_run(&runs, "A", None).unwrap_err();
+        assert!(err.contains("damaged run: fields.pvd missing"), "{err}");
+        std::fs::write(dir.join("fields.pvd"), "short").unwrap();
+        let err = choose_run(&runs, "A", None).unwrap_err();
+        assert!(err.contains("fields.pvd has 5 bytes, listed 10"), "{err}");
+        std::fs::write(dir.join("fields.pvd"), "0123456789").unwrap();
+        assert_eq!(
+            choose_run(&runs, "A", None).unwrap().fidelity,
+            Fidelity::Coarse
         );
     }
 }

@@ -49,6 +49,7 @@ pub fn write_run(runs: &Path, case: &str, fidelity: &str, end_time: f64, files: 
         status: RunStatus::Completed,
         profile: Vec::new(),
         linear_iterations: Vec::new(),
+        files: Vec::new(),
     };
     summary
         .write_json(&dir.join("summary.json"))

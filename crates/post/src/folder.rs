@@ -29,11 +29,72 @@ pub fn first_csv(dir: &Path, prefix: &str) -> Option<PathBuf> {
     csv_files(dir, prefix).into_iter().next()
 }
 
-/// The run's `summary.json`: `None` without the file (a run still going, or killed), the
-/// parse error if it cannot be read as a [`RunSummary`].
-pub fn read_summary(dir: &Path) -> Option<Result<RunSummary, serde_json::Error>> {
+/// Why a run folder's summary is not a result.
+#[derive(Debug, thiserror::Error)]
+pub enum SummaryError {
+    /// `summary.json` does not parse
+    #[error("{}: unreadable summary.json: {source}", dir.display())]
+    Unreadable {
+        /// the run folder
+        dir: PathBuf,
+        /// the parse error
+        source: serde_json::Error,
+    },
+    /// files the summary lists are missing or of another size
+    #[error(
+        "{}: damaged run: {} (another process wrote into the folder, or files were removed); \
+         run the case again (the sweep does so by itself)",
+        dir.display(),
+        damage.join(", ")
+    )]
+    Damaged {
+        /// the run folder
+        dir: PathBuf,
+        /// each missing or short file, described
+        damage: Vec<String>,
+    },
+}
+
+/// The run's `summary.json`: `None` without the file (a run still going, or killed), an
+/// error if it does not parse or the folder lacks a file it lists ([`damage`]).
+pub fn read_summary(dir: &Path) -> Option<Result<RunSummary, SummaryError>> {
     let text = std::fs::read_to_string(dir.join("summary.json")).ok()?;
-    Some(serde_json::from_str(&text))
+    let summary: RunSummary = match serde_json::from_str(&text) {
+        Ok(s) => s,
+        Err(source) => {
+            return Some(Err(SummaryError::Unreadable {
+                dir: dir.to_path_buf(),
+                source,
+            }))
+        }
+    };
+    let damage = damage(dir, &summary);
+    if !damage.is_empty() {
+        return Some(Err(SummaryError::Damaged {
+            dir: dir.to_path_buf(),
+            damage,
+        }));
+    }
+    Some(Ok(summary))
+}
+
+/// The files `summary` lists that `dir` lacks or holds at another size, each described
+/// ("bulk.csv missing", "fields.pvd has 120 bytes, listed 400").
+pub fn damage(dir: &Path, summary: &RunSummary) -> Vec<String> {
+    summary
+        .files
+        .iter()
+        .filter_map(|f| match std::fs::metadata(dir.join(&f.name)) {
+            Err(_) => Some(format!("{} missing", f.name)),
+            Ok(m) if m.len() != f.bytes => Some(format!(
+                "{} has {} bytes, listed {}",
+                f.name,
+                m.len(),
+                f.bytes
+            )),
+            Ok(_) => None,
+        })
+        .collect()
 }
 
 /// The run's `resolved.ron` (the case as it ran), if it can be read.

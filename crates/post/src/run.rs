@@ -45,9 +45,7 @@ pub fn run_metrics(dir: &Path, described: &[(usize, f64)]) -> Result<RunMetrics,
             dir.display()
         ));
     }
-    let summary = read_summary(dir)
-        .transpose()
-        .map_err(|e| format!("{}: unreadable summary.json: {e}", dir.display()))?;
+    let summary = read_summary(dir).transpose().map_err(|e| e.to_string())?;
     let resolved = read_resolved(dir);
     let at = station_time(resolved.as_ref());
     let bulk = bulk_at(dir, at);

@@ -24,8 +24,10 @@ use runout_solver::state::SolverState;
 /// The folder of a run's checkpoints.
 pub const CHECKPOINT_DIR: &str = "checkpoints";
 
-/// The format version; a reader refuses any other.
-pub const FORMAT_VERSION: u32 = 1;
+/// The format version; a reader refuses any other (2: the summary lists the run's files and
+/// always writes its lists, so a single-phase run's checkpoint, whose empty lists were left
+/// out, reads back).
+pub const FORMAT_VERSION: u32 = 2;
 
 const MAGIC: &[u8; 16] = b"runout-ckpt\0\0\0\0\0";
 

@@ -5,8 +5,9 @@
 //! One concept per file: [`build`] turns a case into a solver, [`explain`] says what it
 //! computes and costs, [`case_solver`] is the loop's view of a solver, [`dt_controller`]
 //! the Δt rule, [`monitors`] the scheduled hooks, [`checkpoint`] the restart files,
-//! [`out_dir`] the run folder's protection, [`store`] the folders of finished runs,
-//! [`signals`] the stop on SIGINT/SIGTERM.
+//! [`out_dir`] the run folder's protection, [`lock`] its one writer, [`runs_folder`] the
+//! links below `runs/`, [`seal`] a finished run's file list, [`store`] the folders of
+//! finished runs, [`signals`] the stop on SIGINT/SIGTERM.
 
 #![deny(missing_docs)]
 
@@ -15,8 +16,11 @@ mod case_solver;
 pub mod checkpoint;
 mod dt_controller;
 pub mod explain;
+pub mod lock;
 mod monitors;
 pub mod out_dir;
+pub mod runs_folder;
+pub mod seal;
 mod sidewalls;
 pub mod signals;
 pub mod store;
@@ -63,6 +67,18 @@ pub enum RunError {
         case: String,
         /// the solver error
         source: SolverError,
+    },
+    /// Another run is writing the folder now (it holds the folder's lock).
+    #[error(
+        "{}: a run is running in this folder ({holder}); wait for it to end or stop it, or \
+         choose another folder (--overwrite does not replace a running run)",
+        dir.display()
+    )]
+    Running {
+        /// the folder
+        dir: std::path::PathBuf,
+        /// who holds the lock: pid, host and since when
+        holder: String,
     },
     /// The output folder cannot take the run.
     #[error("{dir}: {reason}")]
@@ -268,7 +284,10 @@ fn start_fresh(
             };
             return Err(RunError::OutDir {
                 dir: out_dir.to_path_buf(),
-                reason: format!("holds an earlier run ({}): {restart}", earlier.join(", ")),
+                reason: format!(
+                    "holds an earlier run, not running now ({}): {restart}",
+                    earlier.join(", ")
+                ),
             });
         }
         out_dir::clear_run(out_dir).map_err(|e| RunError::OutDir {
@@ -308,6 +327,7 @@ fn start_fresh(
         status: RunStatus::Running,
         profile: Vec::new(),
         linear_iterations: Vec::new(),
+        files: Vec::new(),
     };
     let standing = Standing {
         time: 0.0,
@@ -575,8 +595,23 @@ fn time_loop(
 /// ([`RunOptions::stop`]) ends the run after the current step with a checkpoint; an output
 /// error ends it with status `Failed` in the summary where the summary can still be written.
 ///
-/// The run executes on a thread of the current rayon pool ([`on_the_pool`]).
+/// The run holds its folder's lock ([`lock::RunLock`]) while it writes: a folder another
+/// run writes is refused with [`RunError::Running`], whatever `options` say. A run that
+/// ends (but interrupted) lists its synced files in the summary ([`seal`]). The run
+/// executes on a thread of the current rayon pool ([`on_the_pool`]).
 pub fn run_case_with(
+    case: &Case,
+    fidelity: Fidelity,
+    out_dir: &Path,
+    options: &RunOptions,
+    progress: impl FnMut(&Progress) + Send,
+) -> Result<RunSummary, RunError> {
+    let _lock = lock::RunLock::acquire(out_dir)?;
+    run_locked(case, fidelity, out_dir, options, progress)
+}
+
+/// [`run_case_with`] for a caller that holds the folder's lock ([`lock::RunLock`]).
+pub(crate) fn run_locked(
     case: &Case,
     fidelity: Fidelity,
     out_dir: &Path,
@@ -636,7 +671,21 @@ fn run_solver(
     if failure.is_none() {
         failure = monitors.finish().err();
     }
+    // a run that ends (not one stopped to continue) lists its synced files
+    let mut files = Vec::new();
+    if failure.is_none() && standing.summary.status != RunStatus::Interrupted {
+        match seal::seal(out_dir) {
+            Ok(sealed) => files = sealed,
+            Err(source) => {
+                failure = Some(OutputError::Io {
+                    path: out_dir.to_path_buf(),
+                    source,
+                })
+            }
+        }
+    }
     let mut raw = ctx.tallied(&standing, solver);
+    raw.files = files;
     raw.status = match (&failure, raw.status) {
         (Some(e), _) => RunStatus::Failed {
             reason: format!("writing output at t = {} s: {e}", standing.time),
@@ -650,7 +699,14 @@ fn run_solver(
         solver.solids_mass(),
         standing.initial_solids_mass,
     );
-    let written = summary.write_json(&out_dir.join("summary.json"));
+    let written = summary
+        .write_json(&out_dir.join("summary.json"))
+        .and_then(|()| {
+            seal::sync_folder(out_dir).map_err(|source| OutputError::Io {
+                path: out_dir.to_path_buf(),
+                source,
+            })
+        });
     if let Some(e) = failure {
         return Err(ctx.out_err(e));
     }

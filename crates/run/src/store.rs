@@ -7,7 +7,12 @@
 //! with its checkpoint, and the next request continues it (when the checkpoint is of the
 //! same case and solver version; otherwise it starts again). A finished run is reused
 //! when the case it ran, as resolved at its fidelity, is the case asked for
-//! ([`finished_run`]).
+//! ([`finished_run`]), and only when it holds every file its summary lists: a damaged
+//! folder is run again.
+//!
+//! A request holds the folder's lock ([`RunLock`]) from before it looks at the folder until
+//! the run is in place: a folder another process is writing (the same folder, or its
+//! `.partial`) is refused with [`RunError::Running`] and left alone.
 
 use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicBool;
@@ -17,7 +22,8 @@ use std::time::Duration;
 use runout_case::{Case, Fidelity};
 use runout_output::{RunStatus, RunSummary};
 
-use crate::{checkpoint, run_case_with, Progress, RunError, RunOptions};
+use crate::lock::RunLock;
+use crate::{checkpoint, run_locked, seal, Progress, RunError, RunOptions};
 
 /// The folder a run is written into before it is finished: `<done>.partial`.
 pub fn partial_dir(done: &Path) -> PathBuf {
@@ -27,9 +33,16 @@ pub fn partial_dir(done: &Path) -> PathBuf {
     done.with_file_name(format!("{name}.partial"))
 }
 
-/// The summary in `dir`, if it holds one that reads.
+/// The summary in `dir`, if it holds one that reads and every file it lists (a damaged
+/// folder is logged as a warning and taken as none).
 pub fn read_summary(dir: &Path) -> Option<RunSummary> {
-    runout_post::folder::read_summary(dir)?.ok()
+    match runout_post::folder::read_summary(dir)? {
+        Ok(summary) => Some(summary),
+        Err(e) => {
+            tracing::warn!("{e}");
+            None
+        }
+    }
 }
 
 /// The finished run in `dir` if it ran exactly `resolved`: its `resolved.ron` is read back
@@ -110,9 +123,22 @@ impl Stored {
 }
 
 /// The run of `case` at `fidelity` in folder `done`: reused, continued or made, as
-/// `request` says. A run the solver cannot make leaves no folder; a run that fails to
+/// `request` says, under the folder's lock (refused with [`RunError::Running`] while another
+/// process holds it). A run the solver cannot make leaves no folder; a run that fails to
 /// write keeps its `.partial` folder for inspection.
 pub fn obtain(
+    done: &Path,
+    case: &Case,
+    fidelity: Fidelity,
+    request: &Request,
+    progress: impl FnMut(&Progress) + Send,
+) -> Result<Stored, RunError> {
+    let _lock = RunLock::acquire(done)?;
+    obtain_locked(done, case, fidelity, request, progress)
+}
+
+/// [`obtain`] with the folder's lock held.
+fn obtain_locked(
     done: &Path,
     case: &Case,
     fidelity: Fidelity,
@@ -137,13 +163,13 @@ pub fn obtain(
     if !options.restart {
         let _ = std::fs::remove_dir_all(&partial);
     }
-    let mut result = run_case_with(case, fidelity, &partial, &options, &mut progress);
+    let mut result = run_locked(case, fidelity, &partial, &options, &mut progress);
     if let (true, Err(RunError::Checkpoint { source, .. })) = (options.restart, &result) {
         // another case or another runout wrote that checkpoint: start again
         tracing::warn!("{}: starting again ({source})", case.name);
         options.restart = false;
         let _ = std::fs::remove_dir_all(&partial);
-        result = run_case_with(case, fidelity, &partial, &options, &mut progress);
+        result = run_locked(case, fidelity, &partial, &options, &mut progress);
     }
     let mut summary = match result {
         Err(e @ RunError::Unsupported { .. }) => {
@@ -168,13 +194,23 @@ pub fn obtain(
     Ok(Stored::Ran(summary))
 }
 
-/// Replaces `done` (an earlier run, if any) by the finished run in `partial`.
-fn move_into_place(partial: &Path, done: &Path) -> Result<(), RunError> {
-    let _ = std::fs::remove_dir_all(done);
-    std::fs::rename(partial, done).map_err(|e| RunError::OutDir {
+/// Replaces `done` (an earlier run, if any) by the finished run in `partial`, whose files
+/// and summary are synced ([`seal`]); the rename itself is synced too.
+pub fn move_into_place(partial: &Path, done: &Path) -> Result<(), RunError> {
+    let failed = |what: String| RunError::OutDir {
         dir: done.to_path_buf(),
-        reason: format!("renaming {} to it: {e}", partial.display()),
-    })
+        reason: what,
+    };
+    seal::sync_folder(partial)
+        .map_err(|e| failed(format!("syncing {}: {e}", partial.display())))?;
+    let _ = std::fs::remove_dir_all(done);
+    std::fs::rename(partial, done)
+        .map_err(|e| failed(format!("renaming {} to it: {e}", partial.display())))?;
+    match done.parent() {
+        Some(parent) if !parent.as_os_str().is_empty() => seal::sync_folder(parent)
+            .map_err(|e| failed(format!("syncing {}: {e}", parent.display()))),
+        _ => Ok(()),
+    }
 }
 
 #[cfg(test)]

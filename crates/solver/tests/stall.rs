@@ -64,7 +64,7 @@ fn a_step_that_cannot_meet_its_tolerance_stops_as_stalled_and_is_undone() {
     let failure = out.failure.as_deref().unwrap_or("");
     assert!(failure.starts_with("stalled"), "failure: {failure:?}");
     assert!(
-        out.iterations >= 15 && out.iterations % 5 == 0 && out.iterations < cap,
+        out.iterations >= 15 && out.iterations.is_multiple_of(5) && out.iterations < cap,
         "stopped at outer iteration {}",
         out.iterations
     );

@@ -181,6 +181,10 @@ impl Model for CaseModel<'_> {
                     "interrupted at t = {} s ({shown}); run the same command again to continue",
                     s.simulated_time
                 ),
+                RunOutcome::Elsewhere(holder) => bail!(
+                    "{shown_dir}: running elsewhere ({holder}); run the same command again \
+                     after it ends"
+                ),
                 RunOutcome::Unsupported(why) | RunOutcome::Failed(why) => {
                     println!("  {shown}: no misfit: {why}");
                     return Ok(Outcome {

@@ -118,6 +118,7 @@ fn nan_or_a_panic_fails_the_suite_and_a_diagnosed_stop_does_not() {
         status: RunStatus::Completed,
         profile: Vec::new(),
         linear_iterations: Vec::new(),
+        files: Vec::new(),
     };
     assert!(row_from_summary(row(Outcome::Completed), &s).violates());
     s.solids_mass_change = 0.0;

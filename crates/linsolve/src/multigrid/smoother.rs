@@ -23,12 +23,16 @@ impl Level {
         let op = &self.op;
         let (nx, n) = (op.nx, op.len());
         let x_lines = |(inv, up, low): (&mut [f64], &mut [f64], &mut [f64])| {
-            let west = |k: usize| (k % nx > 0).then(|| k - 1);
+            let west = |k: usize| (!k.is_multiple_of(nx)).then(|| k - 1);
             factor_recurrence(&op.ap, &op.aw, &op.ae, 0..n, west, inv, up)?;
             // the forward sweep's multiplier a_W/d, so that its recurrence is one
             // multiply-add per cell (`x_line`)
             for (k, l) in low.iter_mut().enumerate() {
-                *l = if k % nx > 0 { op.aw[k] * inv[k] } else { 0.0 };
+                *l = if !k.is_multiple_of(nx) {
+                    op.aw[k] * inv[k]
+                } else {
+                    0.0
+                };
             }
             Ok(())
         };

@@ -133,7 +133,7 @@ impl Convergence {
     /// iteration after the 10th, a sum not below its value 5 iterations before is a stall;
     /// returns that earlier value.
     pub fn stalled(&mut self, nit: usize, sum: f64) -> Option<f64> {
-        if nit % 5 == 0 {
+        if nit.is_multiple_of(5) {
             if nit > 10 && self.sum5 <= sum {
                 return Some(self.sum5);
             }
