@@ -271,8 +271,8 @@ mod tests {
             ("phi0.3".into(), one(0.3, 0.005, None)),
             ("phi0.3".into(), one(0.3, 0.002, None)),
             ("phi0.3-noise".into(), one(0.3, 0.005, Some(1))),
-            ("phi0.1".into(), one(0.1, 0.005, None)),
-            ("phi0.1-noise".into(), one(0.1, 0.005, Some(2))),
+            ("phi0.15".into(), one(0.15, 0.005, None)),
+            ("phi0.15-noise".into(), one(0.15, 0.005, Some(2))),
         ];
         println!("| truth | σ [mm] | noise | optimum | error | range Δχ² ≤ 1 | contains | runs |");
         for (tag, study) in rows {
