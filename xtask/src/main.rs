@@ -119,18 +119,48 @@ enum Task {
         /// parallel runs in the scan
         #[arg(long, default_value_t = 1)]
         jobs: usize,
-        /// the reported range: misfit ≤ (1 + tol) × the minimum
-        #[arg(long, default_value_t = 0.1)]
-        tol: f64,
-        /// Brent's absolute tolerance, as a fraction of the bounds (or log bounds)
-        #[arg(long, default_value_t = 0.01)]
+        /// the measurement error σ of every point, in the measurement's unit (overrides the
+        /// file's `sigma` column or `# sigma:` line)
+        #[arg(long)]
+        sigma: Option<f64>,
+        /// Brent's and the range edges' absolute tolerance, as a fraction of the bounds (or
+        /// log bounds)
+        #[arg(long, default_value_t = 0.002)]
         xtol: f64,
+        /// Nelder–Mead (2-D) stops when the standard deviation of its simplex's χ² is below this
+        #[arg(long, default_value_t = 0.05)]
+        ftol: f64,
+        /// at most this many runs per side pinning the edges of the range Δχ² ≤ 1 (1-D)
+        #[arg(long, default_value_t = 2)]
+        profile: usize,
         /// study name: the folder under runs/calibrate/ (default: the case name)
         #[arg(long)]
         name: Option<String>,
         /// check the input and print the plan; run nothing
         #[arg(long)]
         dry_run: bool,
+    },
+    /// Write synthetic measurements from a finished run (docs/calibrate.md, "Synthetic
+    /// truths"): its interpolated front at given times, or its gate speeds, with a stated σ
+    /// and optionally Gaussian noise of that σ; a calibration against them has a known truth.
+    SyntheticMeasurements {
+        /// the run folder (runs/<case>/<fidelity>/)
+        run_dir: PathBuf,
+        /// the front x at these times [s], comma-separated (else --gates)
+        #[arg(long, value_delimiter = ',', required_unless_present = "gates")]
+        times: Vec<f64>,
+        /// the front speed at every gate the run crossed
+        #[arg(long, conflicts_with = "times")]
+        gates: bool,
+        /// the measurement error σ of every point (written as `# sigma:`)
+        #[arg(long)]
+        sigma: f64,
+        /// add Gaussian noise of σ, from this seed
+        #[arg(long)]
+        noise: Option<u64>,
+        /// the file to write
+        #[arg(long)]
+        out: PathBuf,
     },
     /// Run the stiff and extreme cases of cases/stability/ (issue 7) and write their table to
     /// docs/stability.md and docs/stability/summary.csv; fails if a run writes a NaN or an
@@ -271,8 +301,10 @@ fn main() -> Result<()> {
             scan,
             refine,
             jobs,
-            tol,
+            sigma,
             xtol,
+            ftol,
+            profile,
             name,
             dry_run,
         } => calibrate::run(
@@ -286,12 +318,33 @@ fn main() -> Result<()> {
                 scan,
                 refine,
                 jobs,
-                tol,
+                sigma,
                 xtol,
+                ftol,
+                profile,
                 name,
                 dry_run,
             },
         ),
+        Task::SyntheticMeasurements {
+            run_dir,
+            times,
+            gates,
+            sigma,
+            noise,
+            out,
+        } => {
+            use calibrate::synthetic::{measurements_from_run, Measured};
+            let what = if gates {
+                Measured::GateSpeeds
+            } else {
+                Measured::Front(times)
+            };
+            let text = measurements_from_run(&run_dir, &what, sigma, noise)?;
+            std::fs::write(&out, &text).with_context(|| format!("writing {}", out.display()))?;
+            print!("{text}");
+            Ok(())
+        }
         Task::Stability {
             fidelity,
             only,

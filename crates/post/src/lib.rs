@@ -17,6 +17,7 @@ pub mod fields;
 #[cfg(any(test, feature = "fixture"))]
 pub mod fixture;
 pub mod folder;
+pub mod front;
 pub mod gates;
 pub mod metrics;
 pub mod profile;

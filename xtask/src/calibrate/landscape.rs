@@ -1,106 +1,15 @@
-//! The tolerance range of a calibration and its outputs: the evaluations as CSV, the misfit
-//! landscape as SVG, and a Markdown and a JSON summary.
+//! The outputs of a calibration: the evaluations as CSV, the χ² landscape as SVG with the
+//! range Δχ² ≤ 1 ([`super::uncertainty`]), and a Markdown and a JSON summary.
 
 use std::path::Path;
 
 use anyhow::{Context, Result};
 use serde::Serialize;
 
-use super::optimise::{Calibration, Evaluation, Param};
+use super::optimise::{Calibration, Param};
+use super::uncertainty::Range;
 use crate::report::plots::{self, HeatCell, Heatmap, Mark, Panel, Series, BLACK_INDEX};
 use crate::sweep::csv_field;
-
-/// The parameters whose misfit is within (1 + tol) × the minimum.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct ToleranceRange {
-    /// the misfit threshold, (1 + tol) × min
-    pub threshold: f64,
-    /// per parameter: (low, high)
-    pub bounds: Vec<(f64, f64)>,
-    /// 1-D: whether each end was found between an evaluation inside and one outside
-    /// (else it is the last evaluated point: the range may go further); 2-D: false
-    pub bracketed: (bool, bool),
-    /// evaluations within the threshold outside the range (another valley, 1-D)
-    pub elsewhere: usize,
-    /// how the range was found
-    pub method: String,
-}
-
-/// The tolerance range of `c`: in 1-D, the interval around the optimum where the misfit,
-/// interpolated linearly between neighbouring evaluations (in the parameter's scale), stays
-/// below the threshold; in 2-D, the bounding box of the evaluations below it.
-pub fn tolerance_range(c: &Calibration, tol: f64) -> ToleranceRange {
-    let best = c.optimum();
-    let threshold = (1.0 + tol) * best.misfit;
-    let finite: Vec<&Evaluation> = c
-        .evaluations
-        .iter()
-        .filter(|e| e.misfit.is_finite())
-        .collect();
-    if c.params.len() == 2 {
-        let inside: Vec<&&Evaluation> = finite.iter().filter(|e| e.misfit <= threshold).collect();
-        let bounds = (0..2)
-            .map(|d| {
-                inside
-                    .iter()
-                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), e| {
-                        (l.min(e.x[d]), h.max(e.x[d]))
-                    })
-            })
-            .collect();
-        return ToleranceRange {
-            threshold,
-            bounds,
-            bracketed: (false, false),
-            elsewhere: 0,
-            method: format!(
-                "the bounding box of the {} evaluations within the threshold",
-                inside.len()
-            ),
-        };
-    }
-    let p = &c.params[0];
-    let mut pts: Vec<(f64, f64)> = finite.iter().map(|e| (p.unit(e.x[0]), e.misfit)).collect();
-    pts.sort_by(|a, b| a.0.total_cmp(&b.0));
-    pts.dedup_by(|a, b| a.0 == b.0);
-    let k = pts
-        .iter()
-        .position(|q| q.0 == p.unit(best.x[0]))
-        .expect("the optimum is an evaluation");
-    let crossing = |inside: (f64, f64), outside: (f64, f64)| {
-        inside.0 + (threshold - inside.1) / (outside.1 - inside.1) * (outside.0 - inside.0)
-    };
-    let mut lo = k;
-    while lo > 0 && pts[lo - 1].1 <= threshold {
-        lo -= 1;
-    }
-    let mut hi = k;
-    while hi + 1 < pts.len() && pts[hi + 1].1 <= threshold {
-        hi += 1;
-    }
-    let low = if lo > 0 {
-        crossing(pts[lo], pts[lo - 1])
-    } else {
-        pts[0].0
-    };
-    let high = if hi + 1 < pts.len() {
-        crossing(pts[hi], pts[hi + 1])
-    } else {
-        pts[hi].0
-    };
-    let elsewhere = pts
-        .iter()
-        .enumerate()
-        .filter(|(j, q)| (*j < lo || *j > hi) && q.1 <= threshold)
-        .count();
-    ToleranceRange {
-        threshold,
-        bounds: vec![(p.value(low), p.value(high))],
-        bracketed: (lo > 0, hi + 1 < pts.len()),
-        elsewhere,
-        method: "linear interpolation of the misfit between neighbouring evaluations".into(),
-    }
-}
 
 /// What the outputs say about the study besides the calibration.
 pub struct StudyInfo<'a> {
@@ -108,10 +17,12 @@ pub struct StudyInfo<'a> {
     pub title: String,
     /// the measurements: file and what it holds
     pub measurements: String,
-    /// the misfit's unit
+    /// the measurement's unit
     pub unit: &'a str,
-    /// the relative tolerance of the range
-    pub tol: f64,
+    /// where σ came from
+    pub sigma: String,
+    /// the number of measured points
+    pub points: usize,
     /// the command that made it
     pub command: String,
     /// per parameter: the case fields it sets
@@ -132,18 +43,25 @@ pub fn write_csv(path: &Path, c: &Calibration) -> Result<()> {
     for p in &c.params {
         text.push_str(&format!(",{}", csv_field(&p.name)));
     }
-    text.push_str(",misfit,note\n");
+    text.push_str(",chi2,rms,note\n");
+    let cell = |v: f64| {
+        if v.is_finite() {
+            format!("{v:e}")
+        } else {
+            String::new()
+        }
+    };
     for (k, e) in c.evaluations.iter().enumerate() {
         text.push_str(&format!("{k},{}", e.stage.name()));
         for x in &e.x {
             text.push_str(&format!(",{x:e}"));
         }
-        let m = if e.misfit.is_finite() {
-            format!("{:e}", e.misfit)
-        } else {
-            String::new()
-        };
-        text.push_str(&format!(",{m},{}\n", csv_field(&e.note)));
+        text.push_str(&format!(
+            ",{},{},{}\n",
+            cell(e.chi2),
+            cell(e.rms),
+            csv_field(&e.note)
+        ));
     }
     std::fs::write(path, text).with_context(|| format!("writing {}", path.display()))
 }
@@ -154,12 +72,14 @@ struct Summary<'a> {
     title: &'a str,
     command: &'a str,
     measurements: &'a str,
+    sigma: &'a str,
     misfit: String,
     params: Vec<ParamSummary<'a>>,
     optimum: Vec<f64>,
-    min_misfit: f64,
-    tolerance: f64,
-    range: &'a ToleranceRange,
+    min_chi2: f64,
+    rms_at_optimum: f64,
+    reduced_chi2: f64,
+    range: &'a Range,
     evaluations: usize,
     evaluations_without_misfit: usize,
 }
@@ -174,19 +94,29 @@ struct ParamSummary<'a> {
     scale: &'a str,
 }
 
+/// χ²_min / (n − p): near 1 if the model fits within σ.
+fn reduced_chi2(c: &Calibration, points: usize) -> f64 {
+    let dof = points.saturating_sub(c.params.len());
+    if dof == 0 {
+        f64::NAN
+    } else {
+        c.optimum().chi2 / dof as f64
+    }
+}
+
 /// Writes summary.json and summary.md; returns the Markdown.
-pub fn write_summary(
-    dir: &Path,
-    c: &Calibration,
-    r: &ToleranceRange,
-    cx: &StudyInfo,
-) -> Result<String> {
+pub fn write_summary(dir: &Path, c: &Calibration, r: &Range, cx: &StudyInfo) -> Result<String> {
     let best = c.optimum();
-    let misfit = format!("RMS of simulated − measured [{}]", cx.unit);
+    let misfit = format!(
+        "χ² = Σ (simulated − measured)²/σ² over {} points; RMS of simulated − measured [{}]",
+        cx.points, cx.unit
+    );
+    let reduced = reduced_chi2(c, cx.points);
     let summary = Summary {
         title: &cx.title,
         command: &cx.command,
         measurements: &cx.measurements,
+        sigma: &cx.sigma,
         misfit: misfit.clone(),
         params: c
             .params
@@ -202,15 +132,12 @@ pub fn write_summary(
             })
             .collect(),
         optimum: best.x.clone(),
-        min_misfit: best.misfit,
-        tolerance: cx.tol,
+        min_chi2: best.chi2,
+        rms_at_optimum: best.rms,
+        reduced_chi2: reduced,
         range: r,
         evaluations: c.evaluations.len(),
-        evaluations_without_misfit: c
-            .evaluations
-            .iter()
-            .filter(|e| !e.misfit.is_finite())
-            .count(),
+        evaluations_without_misfit: c.evaluations.iter().filter(|e| !e.chi2.is_finite()).count(),
     };
     let json = dir.join("summary.json");
     std::fs::write(&json, serde_json::to_string_pretty(&summary)? + "\n")
@@ -218,12 +145,13 @@ pub fn write_summary(
     let mut md = format!("# Calibration: {}\n\n", cx.title);
     md.push_str(&format!("Command: `{}`\n\n", cx.command));
     md.push_str(&format!(
-        "Measurements: {}. Misfit: {misfit}.\n\n",
-        cx.measurements
+        "Measurements: {}; {}. Misfit: {misfit}.\n\n",
+        cx.measurements, cx.sigma
     ));
-    md.push_str(
-        "| parameter | case fields | bounds | start | optimum | range within tolerance |\n",
-    );
+    md.push_str(&format!(
+        "| parameter | case fields | bounds | start | optimum | range Δχ² ≤ {} |\n",
+        r.delta_chi2
+    ));
     md.push_str("|---|---|---|---|---|---|\n");
     for (d, p) in c.params.iter().enumerate() {
         let (lo, hi) = r.bounds[d];
@@ -250,10 +178,12 @@ pub fn write_summary(
         ));
     }
     md.push_str(&format!(
-        "\nMinimum misfit {} {}; tolerance range: misfit ≤ (1 + {}) × min = {} ({}).{}\n",
-        number(best.misfit),
+        "\nχ²_min {} (RMS {} {}), χ²_min/(n − p) = {}; the range: χ² ≤ χ²_min + {} = {} ({}).{}\n",
+        number(best.chi2),
+        number(best.rms),
         cx.unit,
-        cx.tol,
+        number(reduced),
+        r.delta_chi2,
         number(r.threshold),
         r.method,
         if r.elsewhere > 0 {
@@ -266,6 +196,13 @@ pub fn write_summary(
             String::new()
         }
     ));
+    if reduced > 2.0 {
+        md.push_str(&format!(
+            "\nχ²_min/(n − p) = {reduced:.1} > 2: the model does not fit the measurements within \
+             σ, and the range understates the uncertainty (with σ scaled by √{reduced:.1} it \
+             would be wider).\n"
+        ));
+    }
     for (p, x) in c.params.iter().zip(&best.x) {
         if *x == p.lo || *x == p.hi {
             md.push_str(&format!(
@@ -301,23 +238,23 @@ fn axis_label(p: &Param) -> String {
     }
 }
 
-/// Draws the misfit landscape: misfit against the parameter (1-D) or a heat map of the scan
-/// grid (2-D).
-pub fn draw(path: &Path, c: &Calibration, r: &ToleranceRange, cx: &StudyInfo) -> Result<()> {
+/// Draws the landscape: χ² against the parameter with the range (1-D) or a heat map of the
+/// scan grid's χ² (2-D).
+pub fn draw(path: &Path, c: &Calibration, r: &Range, cx: &StudyInfo) -> Result<()> {
     let best = c.optimum();
     if c.params.len() == 1 {
         let p = &c.params[0];
         let mut pts: Vec<(f64, f64)> = c
             .evaluations
             .iter()
-            .filter(|e| e.misfit.is_finite())
-            .map(|e| (axis(p, e.x[0]), e.misfit))
+            .filter(|e| e.chi2.is_finite())
+            .map(|e| (axis(p, e.x[0]), e.chi2))
             .collect();
         pts.sort_by(|a, b| a.0.total_cmp(&b.0));
         let panel = Panel {
             title: cx.title.clone(),
             x_label: axis_label(p),
-            y_label: format!("misfit [{}]", cx.unit),
+            y_label: format!("χ² ({})", cx.sigma),
             series: vec![
                 Series {
                     label: "evaluations".into(),
@@ -327,7 +264,7 @@ pub fn draw(path: &Path, c: &Calibration, r: &ToleranceRange, cx: &StudyInfo) ->
                 },
                 Series {
                     label: "optimum".into(),
-                    points: vec![(axis(p, best.x[0]), best.misfit)],
+                    points: vec![(axis(p, best.x[0]), best.chi2)],
                     colour: BLACK_INDEX,
                     mark: Mark::Squares,
                 },
@@ -336,7 +273,7 @@ pub fn draw(path: &Path, c: &Calibration, r: &ToleranceRange, cx: &StudyInfo) ->
                 (axis(p, r.bounds[0].0), "range".into()),
                 (axis(p, r.bounds[0].1), String::new()),
             ],
-            horizontal: vec![(r.threshold, format!("(1 + {}) min", cx.tol))],
+            horizontal: vec![(r.threshold, format!("min + {}", r.delta_chi2))],
             y_from_zero: true,
         };
         return plots::draw(path, &[panel], 1);
@@ -357,7 +294,7 @@ pub fn draw(path: &Path, c: &Calibration, r: &ToleranceRange, cx: &StudyInfo) ->
     ys.reverse();
     let cell = |x: f64, y: f64| {
         let e = c.evaluations.iter().find(|e| e.x == [x, y]);
-        let value = e.map(|e| e.misfit).filter(|m| m.is_finite());
+        let value = e.map(|e| e.chi2).filter(|m| m.is_finite());
         HeatCell {
             value,
             label: value.map_or("—".into(), |m| format!("{m:.3}")),
@@ -365,8 +302,8 @@ pub fn draw(path: &Path, c: &Calibration, r: &ToleranceRange, cx: &StudyInfo) ->
     };
     let map = Heatmap {
         title: format!(
-            "{}: misfit [{}], columns: {}",
-            cx.title, cx.unit, c.params[0].name
+            "{}: χ² ({}), columns: {}",
+            cx.title, cx.sigma, c.params[0].name
         ),
         rows: ys
             .iter()
@@ -378,8 +315,8 @@ pub fn draw(path: &Path, c: &Calibration, r: &ToleranceRange, cx: &StudyInfo) ->
             .map(|&y| xs.iter().map(|&x| cell(x, y)).collect())
             .collect(),
         note: format!(
-            "optimum ({:.4}, {:.4}): {:.4}",
-            best.x[0], best.x[1], best.misfit
+            "optimum ({:.4}, {:.4}): χ² {:.4}",
+            best.x[0], best.x[1], best.chi2
         ),
     };
     plots::draw_heatmap(path, &map)
@@ -401,32 +338,6 @@ mod tests {
     }
 
     #[test]
-    fn the_tolerance_range_of_a_known_parabola() {
-        // misfit 1 + (x − 2)²: within 10 % of the minimum for |x − 2| ≤ √0.1
-        let f = |x: &[f64]| 1.0 + (x[0] - 2.0).powi(2);
-        let s = Settings {
-            scan: 81,
-            refine: 0,
-            jobs: 1,
-            xtol: 1e-6,
-            ftol: 1e-12,
-        };
-        let c = calibrate(&[param(0.0, 4.0)], &f, &s).unwrap();
-        let r = tolerance_range(&c, 0.1);
-        assert!((r.threshold - 1.1).abs() < 1e-12);
-        let (lo, hi) = r.bounds[0];
-        assert!((lo - (2.0 - 0.1f64.sqrt())).abs() < 2e-3, "{lo}");
-        assert!((hi - (2.0 + 0.1f64.sqrt())).abs() < 2e-3, "{hi}");
-        assert_eq!(r.bracketed, (true, true));
-        assert_eq!(r.elsewhere, 0);
-        // a range that reaches a bound is not bracketed there
-        let c = calibrate(&[param(1.9, 4.0)], &f, &s).unwrap();
-        let r = tolerance_range(&c, 0.1);
-        assert_eq!(r.bounds[0].0, 1.9);
-        assert_eq!(r.bracketed, (false, true));
-    }
-
-    #[test]
     fn the_2d_range_is_a_box_and_outputs_are_written() {
         let f = |x: &[f64]| 1.0 + x[0].powi(2) + (x[1] / 2.0).powi(2);
         let mut b = param(-2.0, 2.0);
@@ -437,9 +348,10 @@ mod tests {
             jobs: 2,
             xtol: 1e-6,
             ftol: 1e-12,
+            profile: 0,
         };
         let c = calibrate(&[param(-1.0, 1.0), b], &f, &s).unwrap();
-        let r = tolerance_range(&c, 0.3);
+        let r = super::super::uncertainty::range(&c);
         assert!(r.bounds[0].0 <= 0.0 && r.bounds[0].1 >= 0.0);
         assert!(r.bounds[1].0 >= -2.0 && r.bounds[1].1 <= 2.0);
         let dir = std::env::temp_dir().join(format!("runout-calibrate-{}", std::process::id()));
@@ -448,7 +360,8 @@ mod tests {
             title: "test".into(),
             measurements: "none".into(),
             unit: "m/s",
-            tol: 0.3,
+            sigma: "σ = 1".into(),
+            points: 6,
             command: "cargo xtask calibrate".into(),
             fields: vec![vec!["a".into()], vec!["b".into()]],
         };

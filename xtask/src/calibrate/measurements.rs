@@ -10,16 +10,20 @@
 //!   profile file (`profile_x<x>_t<t>.csv`; a run with several needs a comment line
 //!   `# profile: <file name>`), interpolated linearly in y.
 //!
-//! Other columns are ignored. The misfit is the RMS of simulated − measured over every
-//! measured point; a point the run does not reach (a gate never crossed, a time after the
-//! run's end) leaves the misfit undefined (infinite).
+//! The measurement error σ of each point comes from a `sigma` column (per row), else a line
+//! `# sigma: <value>` (every point), else `--sigma` (which overrides both). Other columns are
+//! ignored. The misfit is χ² = Σ (s_i − m_i)²/σ_i² over every measured point, reported with
+//! the RMS of s_i − m_i; a point the run does not reach (a gate never crossed, a time after
+//! the run's end) leaves the misfit undefined (infinite). The run's front is the
+//! interpolated one ([`runout_post::front`]).
 
 use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
 
-use crate::metrics::{gate_speeds, mse_vs_described};
+use crate::metrics::gate_speeds;
 use runout_post::folder::csv_files;
+use runout_post::front::{front_series, FrontDefinition};
 use runout_post::table::Table;
 
 /// The profile columns a measured profile may compare.
@@ -50,30 +54,45 @@ pub struct Measurements {
     pub path: PathBuf,
     /// its data
     pub kind: Kind,
+    /// the measurement error σ of each point, in the order of the points
+    pub sigma: Vec<f64>,
+    /// where σ came from, for the summary
+    pub sigma_source: String,
 }
 
 /// The misfit of one run.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Misfit {
+    /// χ² = Σ (s_i − m_i)²/σ_i²; infinite if a point is missing
+    pub chi2: f64,
     /// RMS of simulated − measured; infinite if a point is missing
     pub rms: f64,
     /// points compared
     pub compared: usize,
     /// the points the run has no value for
     pub missing: Vec<String>,
+    /// what the run's front is (front measurements)
+    pub front: Option<FrontDefinition>,
 }
 
 impl Misfit {
-    fn from_squares(squares: &[f64], missing: Vec<String>) -> Misfit {
-        let rms = if missing.is_empty() && !squares.is_empty() {
-            (squares.iter().sum::<f64>() / squares.len() as f64).sqrt()
+    /// From the differences s_i − m_i and the σ_i of the points compared.
+    fn from_differences(diffs: &[(f64, f64)], missing: Vec<String>) -> Misfit {
+        let n = diffs.len();
+        let (rms, chi2) = if missing.is_empty() && n > 0 {
+            (
+                (diffs.iter().map(|(d, _)| d * d).sum::<f64>() / n as f64).sqrt(),
+                diffs.iter().map(|(d, s)| (d / s).powi(2)).sum(),
+            )
         } else {
-            f64::INFINITY
+            (f64::INFINITY, f64::INFINITY)
         };
         Misfit {
+            chi2,
             rms,
-            compared: squares.len(),
+            compared: n,
             missing,
+            front: None,
         }
     }
 }
@@ -101,14 +120,28 @@ fn split(text: &str) -> (Lines, Vec<(String, String)>) {
 }
 
 impl Measurements {
-    /// Reads and checks `path`: an error names the file, the line and the column.
-    pub fn read(path: &Path) -> Result<Measurements> {
+    /// Reads and checks `path`, σ from the file or `sigma` (`--sigma`, which overrides the
+    /// file's): an error names the file, the line and the column.
+    pub fn read(path: &Path, sigma: Option<f64>) -> Result<Measurements> {
         let text = std::fs::read_to_string(path)
             .with_context(|| format!("{}: cannot read the measurements", path.display()))?;
-        let kind = parse(&text).with_context(|| format!("{}", path.display()))?;
+        let (kind, in_file) = parse(&text).with_context(|| format!("{}", path.display()))?;
+        let n = kind.len();
+        let (sigma, sigma_source) = match (sigma, in_file) {
+            (Some(s), _) if s > 0.0 && s.is_finite() => (vec![s; n], format!("σ = {s} (--sigma)")),
+            (Some(s), _) => bail!("--sigma {s}: a measurement error is a finite number > 0"),
+            (None, Some((sigma, source))) => (sigma, source),
+            (None, None) => bail!(
+                "{}: no measurement error σ: give a column `sigma`, a line `# sigma: <value>` \
+                 or --sigma <value> (in the measurement's unit)",
+                path.display()
+            ),
+        };
         Ok(Measurements {
             path: path.to_path_buf(),
             kind,
+            sigma,
+            sigma_source,
         })
     }
 
@@ -142,27 +175,21 @@ impl Measurements {
             Kind::GateSpeeds(measured) => {
                 let simulated =
                     gate_speeds(dir).with_context(|| format!("{}: no gates.csv", dir.display()))?;
-                let missing: Vec<String> = measured
-                    .iter()
-                    .filter(|(g, _)| !simulated.iter().any(|(s, _)| s == g))
-                    .map(|(g, _)| format!("gate L{g} not crossed"))
-                    .collect();
-                let (mse, compared) =
-                    mse_vs_described(&simulated, measured).unwrap_or((f64::INFINITY, 0));
-                let rms = if missing.is_empty() {
-                    mse.sqrt()
-                } else {
-                    f64::INFINITY
-                };
-                Ok(Misfit {
-                    rms,
-                    compared,
-                    missing,
-                })
+                let mut diffs = Vec::new();
+                let mut missing = Vec::new();
+                for ((g, v), s) in measured.iter().zip(&self.sigma) {
+                    match simulated.iter().find(|(k, _)| k == g) {
+                        Some((_, speed)) => diffs.push((speed - v, *s)),
+                        None => missing.push(format!("gate L{g} not crossed")),
+                    }
+                }
+                Ok(Misfit::from_differences(&diffs, missing))
             }
             Kind::Front(measured) => {
-                let simulated = front(dir)?;
-                Ok(compare(measured, &simulated, false, "t"))
+                let (definition, simulated) = front_series(dir).map_err(anyhow::Error::msg)?;
+                let mut m = compare(measured, &self.sigma, &simulated, false, "t");
+                m.front = Some(definition);
+                Ok(m)
             }
             Kind::Profile {
                 column,
@@ -170,25 +197,42 @@ impl Measurements {
                 points,
             } => {
                 let simulated = profile(dir, column, file.as_deref())?;
-                Ok(compare(points, &simulated, true, "y"))
+                Ok(compare(points, &self.sigma, &simulated, true, "y"))
             }
         }
     }
 }
 
-/// Squares of simulated − measured at each measured abscissa, the simulation interpolated
-/// linearly; outside the simulated range a point is missing, unless `clamp` (then the end
-/// value is used).
-fn compare(measured: &[(f64, f64)], simulated: &[(f64, f64)], clamp: bool, what: &str) -> Misfit {
-    let mut squares = Vec::new();
+impl Kind {
+    /// The number of measured points.
+    pub fn len(&self) -> usize {
+        match self {
+            Kind::GateSpeeds(v) => v.len(),
+            Kind::Front(v) => v.len(),
+            Kind::Profile { points, .. } => points.len(),
+        }
+    }
+}
+
+/// Simulated − measured at each measured abscissa, the simulation interpolated linearly;
+/// outside the simulated range a point is missing, unless `clamp` (then the end value is
+/// used).
+fn compare(
+    measured: &[(f64, f64)],
+    sigma: &[f64],
+    simulated: &[(f64, f64)],
+    clamp: bool,
+    what: &str,
+) -> Misfit {
+    let mut diffs = Vec::new();
     let mut missing = Vec::new();
-    for &(a, v) in measured {
+    for (&(a, v), &s) in measured.iter().zip(sigma) {
         match interpolate(simulated, a, clamp) {
-            Some(s) => squares.push((s - v).powi(2)),
+            Some(sim) => diffs.push((sim - v, s)),
             None => missing.push(format!("{what} = {a}: outside the run")),
         }
     }
-    Misfit::from_squares(&squares, missing)
+    Misfit::from_differences(&diffs, missing)
 }
 
 /// Linear interpolation in `points` (sorted by abscissa).
@@ -215,16 +259,6 @@ fn columns(file: &Path, x: &str, y: &str) -> Result<Vec<(f64, f64)>> {
         .into_iter()
         .filter(|(a, b)| !a.is_nan() && !b.is_nan())
         .collect())
-}
-
-/// The run's front position against time.
-fn front(dir: &Path) -> Result<Vec<(f64, f64)>> {
-    let f = dir.join("front.csv");
-    if f.exists() {
-        columns(&f, "t", "front_x")
-    } else {
-        columns(&dir.join("bulk.csv"), "t", "front_x")
-    }
 }
 
 /// The run's profile `column` against y.
@@ -259,8 +293,26 @@ fn number(fields: &[String], index: usize, name: &str, line: usize) -> Result<Op
     }
 }
 
-/// Parses the text of a measurements file.
-pub fn parse(text: &str) -> Result<Kind> {
+/// σ of the file: per point from the `sigma` column (an empty cell takes the `# sigma:`
+/// line's value), or the `# sigma:` value for every point; `None` if the file gives none.
+type FileSigma = Option<(Vec<f64>, String)>;
+
+/// The file's σ from each point's own (`sigma` column, if `column`) or common (`# sigma:`)
+/// value; `None` if the file gives neither.
+fn file_sigma(column: bool, common: Option<f64>, sigmas: Vec<Option<f64>>) -> Result<FileSigma> {
+    let source = match (column, common) {
+        (false, None) => return Ok(None),
+        (true, _) => "σ per point (the file's `sigma` column)".to_string(),
+        (false, Some(s)) => format!("σ = {s} (the file's `# sigma:` line)"),
+    };
+    let all: Option<Vec<f64>> = sigmas.into_iter().collect();
+    let all =
+        all.context("column `sigma`: a point without σ (an empty cell and no `# sigma:` line)")?;
+    Ok(Some((all, source)))
+}
+
+/// Parses the text of a measurements file: its points and its σ.
+pub fn parse(text: &str) -> Result<(Kind, FileSigma)> {
     let (lines, directives) = split(text);
     let Some(((_, header), rows)) = lines.split_first() else {
         bail!("no header line");
@@ -274,20 +326,41 @@ pub fn parse(text: &str) -> Result<Kind> {
             )
         })
     };
-    let pairs = |a: usize, an: &str, b: usize, bn: &str| -> Result<Vec<(f64, f64)>> {
-        let mut out = Vec::new();
-        for (line, f) in rows {
-            let x = number(f, a, an, *line)?
-                .with_context(|| format!("line {line}: column `{an}` is empty"))?;
-            if let Some(y) = number(f, b, bn, *line)? {
-                out.push((x, y));
-            }
-        }
-        Ok(out)
+    let common_sigma = match directives.iter().find(|(k, _)| k == "sigma") {
+        Some((_, v)) => match v.parse::<f64>() {
+            Ok(s) if s > 0.0 && s.is_finite() => Some(s),
+            _ => bail!("`# sigma: {v}`: a measurement error is a finite number > 0"),
+        },
+        None => None,
     };
-    let kind = if let Some(g) = col("gate") {
+    let sigma_col = col("sigma");
+    // σ of one row: its `sigma` cell, else the common value
+    let row_sigma = |f: &[String], line: usize| -> Result<Option<f64>> {
+        let own = match sigma_col {
+            Some(k) => number(f, k, "sigma", line)?,
+            None => None,
+        };
+        match own.or(common_sigma) {
+            Some(s) if s <= 0.0 => bail!("line {line}: column `sigma`: {s} is not > 0"),
+            s => Ok(s),
+        }
+    };
+    let triples =
+        |a: usize, an: &str, b: usize, bn: &str| -> Result<Vec<(f64, f64, Option<f64>)>> {
+            let mut out = Vec::new();
+            for (line, f) in rows {
+                let x = number(f, a, an, *line)?
+                    .with_context(|| format!("line {line}: column `{an}` is empty"))?;
+                if let Some(y) = number(f, b, bn, *line)? {
+                    out.push((x, y, row_sigma(f, *line)?));
+                }
+            }
+            Ok(out)
+        };
+    let (kind, sigmas): (Kind, Vec<Option<f64>>) = if let Some(g) = col("gate") {
         let s = need("speed_m_s", "gate speeds")?;
         let mut out = Vec::new();
+        let mut sigmas = Vec::new();
         for (line, f) in rows {
             let name = f.get(g).map_or("", |s| s.as_str());
             let gate: usize = name.trim_start_matches('L').parse().ok().with_context(|| {
@@ -295,13 +368,17 @@ pub fn parse(text: &str) -> Result<Kind> {
             })?;
             if let Some(v) = number(f, s, "speed_m_s", *line)? {
                 out.push((gate, v));
+                sigmas.push(row_sigma(f, *line)?);
             }
         }
-        Kind::GateSpeeds(out)
+        (Kind::GateSpeeds(out), sigmas)
     } else if let Some(t) = col("t") {
-        let mut p = pairs(t, "t", need("x", "front positions")?, "x")?;
+        let mut p = triples(t, "t", need("x", "front positions")?, "x")?;
         p.sort_by(|a, b| a.0.total_cmp(&b.0));
-        Kind::Front(p)
+        (
+            Kind::Front(p.iter().map(|q| (q.0, q.1)).collect()),
+            p.iter().map(|q| q.2).collect(),
+        )
     } else if let Some(y) = col("y") {
         let name = PROFILE_COLUMNS
             .iter()
@@ -317,11 +394,15 @@ pub fn parse(text: &str) -> Result<Kind> {
             .iter()
             .find(|(k, _)| k == "profile")
             .map(|(_, v)| v.clone());
-        Kind::Profile {
-            column: name.to_string(),
-            file,
-            points: pairs(y, "y", col(name).expect("found"), name)?,
-        }
+        let p = triples(y, "y", col(name).expect("found"), name)?;
+        (
+            Kind::Profile {
+                column: name.to_string(),
+                file,
+                points: p.iter().map(|q| (q.0, q.1)).collect(),
+            },
+            p.iter().map(|q| q.2).collect(),
+        )
     } else {
         bail!(
             "header `{}`: expected the columns gate,speed_m_s (gate speeds), t,x (front \
@@ -330,15 +411,11 @@ pub fn parse(text: &str) -> Result<Kind> {
             PROFILE_COLUMNS.join(", ")
         );
     };
-    let n = match &kind {
-        Kind::GateSpeeds(v) => v.len(),
-        Kind::Front(v) => v.len(),
-        Kind::Profile { points, .. } => points.len(),
-    };
-    if n == 0 {
+    if kind.len() == 0 {
         bail!("no measured values (every value cell is empty)");
     }
-    Ok(kind)
+    let sigma = file_sigma(sigma_col.is_some(), common_sigma, sigmas)?;
+    Ok((kind, sigma))
 }
 
 #[cfg(test)]
@@ -348,7 +425,8 @@ mod tests {
     #[test]
     fn the_shipped_gate_speeds_are_read() {
         let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases/flume/gates.csv");
-        let m = Measurements::read(&file).unwrap();
+        let m = Measurements::read(&file, Some(0.3)).unwrap();
+        assert_eq!(m.sigma, [0.3; 6]);
         assert_eq!(
             m.kind,
             Kind::GateSpeeds(vec![
@@ -365,17 +443,42 @@ mod tests {
     #[test]
     fn fronts_and_profiles_are_read() {
         assert_eq!(
-            parse("# a comment\nt,x\n0.2,1.5\n0.1,1.0\n").unwrap(),
+            parse("# a comment\nt,x\n0.2,1.5\n0.1,1.0\n").unwrap().0,
             Kind::Front(vec![(0.1, 1.0), (0.2, 1.5)])
         );
         assert_eq!(
-            parse("# profile: profile_x11_t1.25.csv\ny,u_s,note\n0.01,2.0,a\n0.02,,b\n").unwrap(),
+            parse("# profile: profile_x11_t1.25.csv\ny,u_s,note\n0.01,2.0,a\n0.02,,b\n")
+                .unwrap()
+                .0,
             Kind::Profile {
                 column: "u_s".into(),
                 file: Some("profile_x11_t1.25.csv".into()),
                 points: vec![(0.01, 2.0)],
             }
         );
+    }
+
+    #[test]
+    fn sigma_comes_per_row_from_a_line_or_from_the_command_line() {
+        // per row, sorted with the points; an empty cell takes the `# sigma:` line's value
+        let (kind, sigma) = parse("# sigma: 0.01\nt,x,sigma\n0.2,1.5,0.02\n0.1,1.0,\n").unwrap();
+        assert_eq!(kind, Kind::Front(vec![(0.1, 1.0), (0.2, 1.5)]));
+        assert_eq!(sigma.unwrap().0, [0.01, 0.02]);
+        let (_, sigma) = parse("# sigma: 0.2\ngate,speed_m_s\nL2,4\nL3,4\n").unwrap();
+        assert_eq!(sigma.unwrap().0, [0.2, 0.2]);
+        assert_eq!(parse("t,x\n0.1,1\n").unwrap().1, None);
+        let err = |text: &str| format!("{:#}", parse(text).unwrap_err());
+        assert!(err("t,x,sigma\n0.1,1,\n").contains("a point without σ"));
+        assert!(err("t,x,sigma\n0.1,1,-1\n").contains("not > 0"));
+        assert!(err("# sigma: none\nt,x\n0.1,1\n").contains("finite number > 0"));
+        let dir = std::env::temp_dir().join(format!("runout-sigma-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let file = dir.join("m.csv");
+        std::fs::write(&file, "t,x\n0.1,1\n").unwrap();
+        let e = format!("{:#}", Measurements::read(&file, None).unwrap_err());
+        assert!(e.contains("--sigma"), "{e}");
+        assert_eq!(Measurements::read(&file, Some(0.5)).unwrap().sigma, [0.5]);
+        std::fs::remove_dir_all(&dir).unwrap();
     }
 
     #[test]
@@ -391,7 +494,7 @@ mod tests {
         assert!(err("y,rho\n0.1,1\n").contains("one of eps_s"));
         assert!(err("# only comments\n").contains("no header"));
         let missing = Path::new("/nonexistent/m.csv");
-        let e = format!("{:#}", Measurements::read(missing).unwrap_err());
+        let e = format!("{:#}", Measurements::read(missing, Some(1.0)).unwrap_err());
         assert!(e.contains("/nonexistent/m.csv"), "{e}");
     }
 
@@ -405,18 +508,24 @@ mod tests {
         )
         .unwrap();
         std::fs::write(dir.join("front.csv"), "t,front_x\n0,0\n1,2\n").unwrap();
-        let gates = |text: &str| Measurements {
-            path: "m.csv".into(),
-            kind: parse(text).unwrap(),
+        let gates = |text: &str| {
+            let kind = parse(text).unwrap().0;
+            Measurements {
+                path: "m.csv".into(),
+                sigma: vec![0.5; kind.len()],
+                sigma_source: String::new(),
+                kind,
+            }
         };
-        // RMS of (3 − 4, 5 − 4) = 1, the report's MSE under a square root
+        // RMS of (3 − 4, 5 − 4) = 1, the report's MSE under a square root; χ² = 2 × 1/0.5²
         let m = gates("gate,speed_m_s\nL1,4\nL2,4\n").misfit(&dir).unwrap();
-        assert_eq!((m.rms, m.compared), (1.0, 2));
+        assert_eq!((m.rms, m.chi2, m.compared), (1.0, 8.0, 2));
         let m = gates("gate,speed_m_s\nL1,4\nL3,4\n").misfit(&dir).unwrap();
         assert!(m.rms.is_infinite());
         assert_eq!(m.missing, ["gate L3 not crossed"]);
         let m = gates("t,x\n0.5,1.5\n").misfit(&dir).unwrap();
-        assert!((m.rms - 0.5).abs() < 1e-12);
+        assert!((m.rms - 0.5).abs() < 1e-12 && (m.chi2 - 1.0).abs() < 1e-12);
+        assert_eq!(m.front, Some(FrontDefinition::Interpolated));
         assert!(
             gates("y,u_s\n0.1,1\n").misfit(&dir).is_err(),
             "no profile file"
@@ -430,9 +539,10 @@ mod tests {
         assert_eq!(interpolate(&sim, 0.5, false), Some(1.0));
         assert_eq!(interpolate(&sim, 3.0, false), None);
         assert_eq!(interpolate(&sim, 3.0, true), Some(2.0));
-        let m = compare(&[(0.5, 2.0), (1.5, 2.0)], &sim, false, "t");
+        let m = compare(&[(0.5, 2.0), (1.5, 2.0)], &[1.0, 2.0], &sim, false, "t");
         assert!((m.rms - (0.5f64).sqrt()).abs() < 1e-12);
-        let m = compare(&[(0.5, 2.0), (5.0, 2.0)], &sim, false, "t");
+        assert!((m.chi2 - 1.0).abs() < 1e-12);
+        let m = compare(&[(0.5, 2.0), (5.0, 2.0)], &[1.0; 2], &sim, false, "t");
         assert!(m.rms.is_infinite());
         assert_eq!(m.missing.len(), 1);
     }

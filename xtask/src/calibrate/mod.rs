@@ -1,5 +1,6 @@
 //! `cargo xtask calibrate`: fits one or two numeric fields of a case to measurements by
-//! minimising the RMS misfit (docs/calibrate.md).
+//! minimising χ² = Σ (simulated − measured)²/σ², and states the range Δχ² ≤ 1 of the
+//! parameters consistent with them (docs/calibrate.md).
 //!
 //! Everything is checked before the first run: the case file, each `--param` (its path in
 //! the case, its bounds and start, the case valid at every corner of the bounds) and the
@@ -9,10 +10,15 @@
 //! when the same command is run again. The outputs go to the study folder: evaluations.csv,
 //! landscape.svg, summary.md and summary.json.
 
+pub mod brent;
 pub mod landscape;
 pub mod measurements;
 pub mod optimise;
 pub mod path;
+#[cfg(test)]
+pub mod recovery;
+pub mod synthetic;
+pub mod uncertainty;
 
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -29,6 +35,7 @@ use crate::sweep::{finished_run, progress_style, run_into, Outcome as RunOutcome
 use measurements::Measurements;
 use optimise::{calibrate, Model, Outcome, Param, Settings};
 use path::{set_all, CasePath};
+use runout_post::front::FrontDefinition;
 
 /// Options of `cargo xtask calibrate`.
 pub struct Options {
@@ -48,10 +55,14 @@ pub struct Options {
     pub refine: usize,
     /// parallel runs in the scan
     pub jobs: usize,
-    /// relative misfit tolerance of the reported range
-    pub tol: f64,
-    /// Brent's tolerance in unit coordinates
+    /// the measurement error σ of every point (overrides the file's)
+    pub sigma: Option<f64>,
+    /// Brent's and the range edges' tolerance in unit coordinates
     pub xtol: f64,
+    /// Nelder–Mead's tolerance: the standard deviation of its simplex's χ²
+    pub ftol: f64,
+    /// evaluations per side pinning the edges of the range (1-D)
+    pub profile: usize,
     /// study name (default: the case name)
     pub name: Option<String>,
     /// check the input and print the plan, run nothing
@@ -153,7 +164,8 @@ impl Model for CaseModel<'_> {
             Ok(case) => case,
             Err(e) => {
                 return Ok(Outcome {
-                    misfit: f64::NAN,
+                    chi2: f64::NAN,
+                    rms: f64::NAN,
                     note: format!("{e:#}"),
                 })
             }
@@ -188,30 +200,39 @@ impl Model for CaseModel<'_> {
                 RunOutcome::Unsupported(why) | RunOutcome::Failed(why) => {
                     println!("  {shown}: no misfit: {why}");
                     return Ok(Outcome {
-                        misfit: f64::NAN,
+                        chi2: f64::NAN,
+                        rms: f64::NAN,
                         note: format!("{shown_dir}: {why}"),
                     });
                 }
             }
         };
-        let (misfit, note) = match self.measurements.misfit(&done) {
-            Ok(m) if m.missing.is_empty() => (m.rms, format!("{shown_dir} ({how})")),
+        let (chi2, rms, note) = match self.measurements.misfit(&done) {
+            Ok(m) if m.missing.is_empty() => {
+                let front = match m.front {
+                    Some(FrontDefinition::WholeCell) => {
+                        ", whole-cell front: a run older than bulk.csv's interpolated front"
+                    }
+                    _ => "",
+                };
+                (m.chi2, m.rms, format!("{shown_dir} ({how}{front})"))
+            }
             Ok(m) => (
+                f64::INFINITY,
                 f64::INFINITY,
                 format!("{shown_dir} ({how}): {}", m.missing.join("; ")),
             ),
-            Err(e) => (f64::NAN, format!("{shown_dir} ({how}): {e:#}")),
+            Err(e) => (f64::NAN, f64::NAN, format!("{shown_dir} ({how}): {e:#}")),
         };
         println!(
-            "  {shown}: misfit {} {} ({how})",
-            if misfit.is_finite() {
-                format!("{misfit:.4}")
+            "  {shown}: {} ({how})",
+            if chi2.is_finite() {
+                format!("χ² {chi2:.4}, RMS {rms:.4} {}", self.measurements.unit())
             } else {
-                "none".into()
+                "no misfit".into()
             },
-            self.measurements.unit()
         );
-        Ok(Outcome { misfit, note })
+        Ok(Outcome { chi2, rms, note })
     }
 }
 
@@ -299,12 +320,12 @@ fn command_line() -> String {
 pub fn run(root: &Path, opts: &Options) -> Result<()> {
     let file = locate(root, &opts.case_file);
     let case = select_case(&file, opts.case.as_deref())?;
-    let measurements = Measurements::read(&locate(root, &opts.measurements))?;
+    let measurements = Measurements::read(&locate(root, &opts.measurements), opts.sigma)?;
     if !(1..=2).contains(&opts.params.len()) {
         bail!("give one or two --param, found {}", opts.params.len());
     }
-    if !(opts.tol >= 0.0 && opts.tol.is_finite()) {
-        bail!("--tol {}: a finite relative tolerance ≥ 0", opts.tol);
+    if !(opts.xtol > 0.0 && opts.xtol < 0.5) {
+        bail!("--xtol {}: a fraction of the bounds in (0, 0.5)", opts.xtol);
     }
     let (paths, params): (Vec<CasePath>, Vec<Param>) = opts
         .params
@@ -325,14 +346,20 @@ pub fn run(root: &Path, opts: &Options) -> Result<()> {
     }
     let runs = 1 + opts.scan.pow(params.len() as u32);
     println!(
-        "calibrating `{}` at {} against {} ({}): {runs} start and scan run(s) on {} job(s), \
-         then at most {} refinement run(s); runs in {}",
+        "calibrating `{}` at {} against {} ({}, {}): {runs} start and scan run(s) on {} \
+         job(s), then at most {} refinement run(s){}; runs in {}",
         case.name,
         opts.fidelity,
         measurements.path.display(),
         measurements.describe(),
+        measurements.sigma_source,
         opts.jobs,
         opts.refine,
+        if params.len() == 1 {
+            format!(" and {} per side for the range's edges", opts.profile)
+        } else {
+            String::new()
+        },
         study.strip_prefix(root).unwrap_or(&study).display()
     );
     for (path, p) in paths.iter().zip(&params) {
@@ -371,10 +398,11 @@ pub fn run(root: &Path, opts: &Options) -> Result<()> {
         refine: opts.refine,
         jobs: opts.jobs,
         xtol: opts.xtol,
-        ftol: 1e-6,
+        ftol: opts.ftol,
+        profile: opts.profile,
     };
     let c = calibrate(&params, &model, &settings)?;
-    let range = landscape::tolerance_range(&c, opts.tol);
+    let range = uncertainty::range(&c);
     let info = landscape::StudyInfo {
         title: format!("{} at {}", case.name, opts.fidelity),
         measurements: format!(
@@ -387,7 +415,8 @@ pub fn run(root: &Path, opts: &Options) -> Result<()> {
             measurements.describe()
         ),
         unit: measurements.unit(),
-        tol: opts.tol,
+        sigma: measurements.sigma_source.clone(),
+        points: measurements.kind.len(),
         command: command_line(),
         fields: paths.iter().map(CasePath::fields).collect(),
     };

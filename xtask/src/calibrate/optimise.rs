@@ -1,24 +1,30 @@
-//! The calibration core, independent of runout: a [`Model`] maps parameter values to a
-//! misfit (a case run in production, a closed form in the tests).
+//! The calibration core, independent of runout: a [`Model`] maps parameter values to
+//! χ² = Σ (s_i − m_i)²/σ_i² (a case run in production, a closed form in the tests).
 //!
 //! 1. the start point and a landscape scan (N points in 1-D, an N × N grid in 2-D, evenly
 //!    spaced in each parameter's scale), evaluated in parallel on `jobs` workers;
-//! 2. refinement from the best scan point with argmin: Brent's method in 1-D on the
-//!    bracket of the best point's scan neighbours, Nelder–Mead in 2-D from a simplex of
-//!    half a scan step; at most `refine` more evaluations;
-//! 3. the optimum is the best evaluation of all, and the tolerance range the parameters
-//!    whose misfit is within (1 + tol) × the minimum ([`tolerance_range`]).
+//! 2. refinement from where the scan found the minimum, at most `refine` more evaluations,
+//!    none repeated: in 1-D Brent's method ([`super::brent`]) from the bracket of the best
+//!    evaluation and its neighbours with their known χ², until the bracket is narrower than
+//!    2 `xtol`; in 2-D Nelder–Mead (argmin) from the simplex of the best scan point and its
+//!    better grid neighbour along each parameter (all three known), until the standard
+//!    deviation of the simplex's χ² is below `ftol`;
+//! 3. in 1-D, the edges of the range Δχ² ≤ 1 pinned by at most `profile` more evaluations
+//!    per side ([`super::uncertainty`]).
 //!
-//! The optimiser works in unit coordinates u ∈ [0, 1] per parameter (linear or log scale);
-//! a point outside the box, or one whose misfit is not finite, costs a penalty above every
-//! scanned misfit, so neither method leaves the box or stops on a failed run.
+//! The optimum is the best evaluation of all. The optimiser works in unit coordinates
+//! u ∈ [0, 1] per parameter (linear or log scale); a point outside the box, or one whose χ²
+//! is not finite, costs a penalty above every scanned χ², so neither method leaves the box
+//! or stops on a failed run.
 
 use std::sync::Mutex;
 
 use anyhow::{bail, Result};
 use argmin::core::{CostFunction, Error as ArgminError, Executor};
-use argmin::solver::brent::BrentOpt;
 use argmin::solver::neldermead::NelderMead;
+
+use super::brent::{self, Bracket};
+use super::uncertainty;
 
 /// One calibrated parameter: bounds, start and scale.
 #[derive(Clone, Debug, PartialEq)]
@@ -108,23 +114,27 @@ fn snap(v: f64) -> f64 {
 /// What one evaluation gave.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Outcome {
-    /// the misfit; not finite if the evaluation has none (a failed run, a missing point)
-    pub misfit: f64,
+    /// χ² = Σ (s_i − m_i)²/σ_i²; not finite if the evaluation has none (a failed run, a
+    /// missing point)
+    pub chi2: f64,
+    /// the RMS of s_i − m_i in the measurement's unit (NaN if the model has none)
+    pub rms: f64,
     /// what to note beside it (the run folder, why it has no misfit)
     pub note: String,
 }
 
-/// The thing calibrated: parameter values → misfit. An `Err` stops the calibration (an
+/// The thing calibrated: parameter values → χ². An `Err` stops the calibration (an
 /// interrupt); a failed evaluation is an [`Outcome`] with a non-finite misfit.
 pub trait Model: Sync {
-    /// The misfit at `x` (one value per parameter).
+    /// χ² at `x` (one value per parameter).
     fn evaluate(&self, x: &[f64]) -> Result<Outcome>;
 }
 
 impl<F: Fn(&[f64]) -> f64 + Sync> Model for F {
     fn evaluate(&self, x: &[f64]) -> Result<Outcome> {
         Ok(Outcome {
-            misfit: self(x),
+            chi2: self(x),
+            rms: f64::NAN,
             note: String::new(),
         })
     }
@@ -139,6 +149,8 @@ pub enum Stage {
     Scan,
     /// the refinement (Brent or Nelder–Mead)
     Refine,
+    /// pinning an edge of the range Δχ² ≤ 1
+    Profile,
 }
 
 impl Stage {
@@ -148,6 +160,7 @@ impl Stage {
             Stage::Start => "start",
             Stage::Scan => "scan",
             Stage::Refine => "refine",
+            Stage::Profile => "profile",
         }
     }
 }
@@ -157,8 +170,10 @@ impl Stage {
 pub struct Evaluation {
     /// parameter values
     pub x: Vec<f64>,
-    /// misfit (not finite: none)
-    pub misfit: f64,
+    /// χ² (not finite: none)
+    pub chi2: f64,
+    /// RMS of simulated − measured [the measurement's unit]
+    pub rms: f64,
     /// the stage that asked for it first
     pub stage: Stage,
     /// the model's note
@@ -174,10 +189,12 @@ pub struct Settings {
     pub refine: usize,
     /// parallel evaluations in the scan
     pub jobs: usize,
-    /// Brent's absolute tolerance in unit coordinates
+    /// Brent's absolute tolerance in unit coordinates (and the profile's edge tolerance)
     pub xtol: f64,
-    /// Nelder–Mead stops when the standard deviation of its simplex's misfits is below this
+    /// Nelder–Mead stops when the standard deviation of its simplex's χ² is below this
     pub ftol: f64,
+    /// at most this many evaluations per side pinning the edges of the range (1-D)
+    pub profile: usize,
 }
 
 /// A finished calibration.
@@ -212,7 +229,7 @@ struct Evaluator<'a> {
 impl Evaluator<'_> {
     fn cached(&self, x: &[f64]) -> Option<f64> {
         let done = self.done.lock().expect("no poisoned lock");
-        done.iter().find(|e| e.x == x).map(|e| e.misfit)
+        done.iter().find(|e| e.x == x).map(|e| e.chi2)
     }
 
     fn evaluate(&self, x: Vec<f64>, stage: Stage) -> Result<f64> {
@@ -223,11 +240,12 @@ impl Evaluator<'_> {
         let mut done = self.done.lock().expect("no poisoned lock");
         done.push(Evaluation {
             x,
-            misfit: outcome.misfit,
+            chi2: outcome.chi2,
+            rms: outcome.rms,
             stage,
             note: outcome.note,
         });
-        Ok(outcome.misfit)
+        Ok(outcome.chi2)
     }
 
     /// The refinement's cost at unit coordinates `u`.
@@ -259,15 +277,6 @@ impl Evaluator<'_> {
 
 /// The error that ends the refinement when its evaluations are spent.
 const BUDGET: &str = "the refinement's evaluations are spent";
-
-struct Brent<'a, 'b>(&'a Evaluator<'b>);
-impl CostFunction for Brent<'_, '_> {
-    type Param = f64;
-    type Output = f64;
-    fn cost(&self, u: &f64) -> Result<f64, ArgminError> {
-        self.0.cost(&[*u])
-    }
-}
 
 struct Simplex<'a, 'b>(&'a Evaluator<'b>);
 impl CostFunction for Simplex<'_, '_> {
@@ -306,56 +315,142 @@ fn evaluate_all(ev: &Evaluator, points: Vec<Vec<f64>>, stage: Stage, jobs: usize
     }
 }
 
-/// Index of the lowest finite misfit.
-fn best_index(evaluations: &[Evaluation]) -> Option<usize> {
+/// Index of the lowest finite χ².
+pub fn best_index(evaluations: &[Evaluation]) -> Option<usize> {
     (0..evaluations.len())
-        .filter(|&k| evaluations[k].misfit.is_finite())
-        .min_by(|&a, &b| evaluations[a].misfit.total_cmp(&evaluations[b].misfit))
+        .filter(|&k| evaluations[k].chi2.is_finite())
+        .min_by(|&a, &b| evaluations[a].chi2.total_cmp(&evaluations[b].chi2))
 }
 
-/// Refines from `u0` (unit coordinates) until the budget is spent or the method converges:
-/// Brent on [u0 − step, u0 + step] in 1-D, Nelder–Mead from a simplex of half a step in 2-D.
-fn refine(ev: &Evaluator, u0: Vec<f64>, step: f64, settings: &Settings) -> Result<()> {
-    let result = if u0.len() == 1 {
-        let (a, b) = ((u0[0] - step).max(0.0), (u0[0] + step).min(1.0));
-        let solver = BrentOpt::new(a, b).set_tolerance(1e-8, settings.xtol);
-        Executor::new(Brent(ev), solver)
-            .configure(|s| s.max_iters(settings.refine as u64))
-            .run()
-            .map(|_| ())
-    } else {
-        let mut simplex = vec![u0.clone()];
-        for d in 0..2 {
-            let mut v = u0.clone();
-            v[d] += if u0[d] + 0.5 * step <= 1.0 {
-                0.5 * step
+/// The evaluations so far as (u, χ²) in the order of u, a point without χ² at the penalty.
+fn known_1d(ev: &Evaluator) -> Vec<(f64, f64)> {
+    let done = ev.done.lock().expect("no poisoned lock");
+    let mut pts: Vec<(f64, f64)> = done
+        .iter()
+        .map(|e| {
+            let f = if e.chi2.is_finite() {
+                e.chi2
             } else {
-                -0.5 * step
+                ev.penalty
             };
-            simplex.push(v);
-        }
-        // evaluated here, not in argmin's initialisation (which cannot stop cleanly)
-        for v in &simplex {
-            match ev.cost(v) {
-                Ok(_) => {}
-                Err(e) if e.to_string() == BUDGET => return Ok(()),
-                Err(e) => return Err(e),
-            }
-        }
-        NelderMead::new(simplex)
-            .with_sd_tolerance(settings.ftol)
-            .map_err(|e| anyhow::anyhow!("{e}"))
-            .and_then(|solver| {
-                Executor::new(Simplex(ev), solver)
-                    .configure(|s| s.max_iters(settings.refine as u64))
-                    .run()
-                    .map(|_| ())
-            })
+            (ev.params[0].unit(e.x[0]), f)
+        })
+        .collect();
+    pts.sort_by(|a, b| a.0.total_cmp(&b.0));
+    pts.dedup_by(|a, b| a.0 == b.0);
+    pts
+}
+
+/// Brent from the best evaluation and its neighbours (all known).
+fn refine_1d(ev: &Evaluator, settings: &Settings) -> Result<()> {
+    let pts = known_1d(ev);
+    let k = (0..pts.len())
+        .min_by(|&a, &b| pts[a].1.total_cmp(&pts[b].1))
+        .expect("the scan has points");
+    let bracket = Bracket {
+        a: pts[k.saturating_sub(1)],
+        x: pts[k],
+        b: pts[(k + 1).min(pts.len() - 1)],
     };
+    brent::minimise(bracket, settings.xtol, |u| match ev.cost(&[u]) {
+        Ok(f) => Ok(Some(f)),
+        Err(e) if e.to_string() == BUDGET => Ok(None),
+        Err(e) => Err(e),
+    })
+}
+
+/// argmin's Nelder–Mead from `simplex` (unit coordinates) until the standard deviation of
+/// its χ² is below `ftol` or the budget is spent.
+fn nelder_mead(ev: &Evaluator, simplex: Vec<Vec<f64>>, settings: &Settings) -> Result<()> {
+    let result = NelderMead::new(simplex)
+        .with_sd_tolerance(settings.ftol)
+        .map_err(|e| anyhow::anyhow!("{e}"))
+        .and_then(|solver| {
+            Executor::new(Simplex(ev), solver)
+                .configure(|s| s.max_iters(settings.refine as u64))
+                .run()
+                .map(|_| ())
+        });
     match result {
         Err(e) if e.to_string() != BUDGET => Err(e),
         _ => Ok(()),
     }
+}
+
+/// Nelder–Mead from the best scan point `best` (grid indices) and its better grid
+/// neighbour along each parameter: three known vertices.
+fn refine_2d(ev: &Evaluator, axis: &[f64], best: [usize; 2], settings: &Settings) -> Result<()> {
+    let value = |i: usize, j: usize| {
+        let u = vec![axis[i], axis[j]];
+        let f = ev.cost(&u).unwrap_or(f64::INFINITY);
+        (u, f)
+    };
+    let [i, j] = best;
+    let neighbours = |k: usize| [k.checked_sub(1), (k + 1 < axis.len()).then_some(k + 1)];
+    let mut simplex = vec![value(i, j).0];
+    for (d, &at) in best.iter().enumerate() {
+        let along = |k: usize| if d == 0 { value(k, j) } else { value(i, k) };
+        let (u, _) = neighbours(at)
+            .into_iter()
+            .flatten()
+            .map(along)
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+            .expect("a scan of two or more points per axis");
+        simplex.push(u);
+    }
+    nelder_mead(ev, simplex, settings)
+}
+
+/// Nelder–Mead from the start point when there is no scan grid: a simplex of a quarter of
+/// the box along each parameter.
+fn refine_2d_without_scan(ev: &Evaluator, u0: Vec<f64>, settings: &Settings) -> Result<()> {
+    let mut simplex = vec![u0.clone()];
+    for d in 0..2 {
+        let mut v = u0.clone();
+        v[d] += if u0[d] <= 0.75 { 0.25 } else { -0.25 };
+        simplex.push(v);
+    }
+    for v in &simplex {
+        match ev.cost(v) {
+            Ok(_) => {}
+            Err(e) if e.to_string() == BUDGET => return Ok(()),
+            Err(e) => return Err(e),
+        }
+    }
+    nelder_mead(ev, simplex, settings)
+}
+
+/// Pins the edges of the range Δχ² ≤ 1 (1-D): at most `settings.profile` rounds, each
+/// evaluating (in parallel) the next estimate of every edge not yet known to `xtol`.
+fn pin_edges(ev: &Evaluator, settings: &Settings) -> Result<()> {
+    for _ in 0..settings.profile {
+        let proposals: Vec<Vec<f64>> =
+            uncertainty::edge_proposals(&known_1d(ev), uncertainty::DELTA_CHI2_1D, settings.xtol)
+                .into_iter()
+                .map(|u| vec![ev.params[0].value(u)])
+                .filter(|x| ev.cached(x).is_none())
+                .collect();
+        if proposals.is_empty() {
+            break;
+        }
+        evaluate_all(ev, proposals, Stage::Profile, settings.jobs)?;
+    }
+    Ok(())
+}
+
+/// The grid indices of evaluation `best` if it is a scan point (of a scan of two or more
+/// points per parameter).
+fn grid_cell(
+    done: &[Evaluation],
+    best: usize,
+    params: &[Param],
+    axis: &[f64],
+) -> Option<[usize; 2]> {
+    if axis.len() < 2 {
+        return None;
+    }
+    let index = |d: usize| (0..axis.len()).find(|&k| params[d].value(axis[k]) == done[best].x[d]);
+    Some([index(0)?, index(1)?])
 }
 
 /// Calibrates the one or two `params` of `model`.
@@ -394,7 +489,7 @@ pub fn calibrate(params: &[Param], model: &dyn Model, settings: &Settings) -> Re
     };
     let worst = done
         .iter()
-        .map(|e| e.misfit)
+        .map(|e| e.chi2)
         .filter(|m| m.is_finite())
         .fold(0.0, f64::max);
     ev.penalty = 2.0 * worst.max(f64::MIN_POSITIVE) + 1.0;
@@ -403,14 +498,17 @@ pub fn calibrate(params: &[Param], model: &dyn Model, settings: &Settings) -> Re
         .zip(&done[best].x)
         .map(|(p, &x)| p.unit(x))
         .collect();
-    // half a scan step (a quarter of the box without a scan)
-    let step = if axis.len() >= 2 {
-        1.0 / (axis.len() - 1) as f64
-    } else {
-        0.5
-    };
     if settings.refine > 0 {
-        refine(&ev, u0, step, settings)?;
+        if params.len() == 1 {
+            refine_1d(&ev, settings)?;
+        } else if let Some(cell) = grid_cell(&done, best, params, &axis) {
+            refine_2d(&ev, &axis, cell, settings)?;
+        } else {
+            refine_2d_without_scan(&ev, u0, settings)?;
+        }
+    }
+    if params.len() == 1 {
+        pin_edges(&ev, settings)?;
     }
     let evaluations = ev.done.into_inner().expect("no poisoned lock");
     let best = best_index(&evaluations).expect("the scan had one");
@@ -442,6 +540,7 @@ mod tests {
             jobs: 2,
             xtol: 1e-6,
             ftol: 1e-12,
+            profile: 0,
         }
     }
 
@@ -452,7 +551,7 @@ mod tests {
         let c = calibrate(&[param("a", 0.0, 2.0, 1.3)], &f, &settings(9, 40)).unwrap();
         let best = c.optimum();
         assert!((best.x[0] - 0.37).abs() < 1e-4, "{best:?}");
-        assert!((best.misfit - 0.2).abs() < 1e-8);
+        assert!((best.chi2 - 0.2).abs() < 1e-8);
         assert_eq!(c.evaluations[0].stage, Stage::Start);
         assert_eq!(
             c.evaluations
@@ -518,8 +617,8 @@ mod tests {
                 .count(),
             3
         );
-        assert!(c.optimum().misfit.is_finite());
-        assert!(c.evaluations.iter().any(|e| e.misfit.is_nan()));
+        assert!(c.optimum().chi2.is_finite());
+        assert!(c.evaluations.iter().any(|e| e.chi2.is_nan()));
     }
 
     #[test]
