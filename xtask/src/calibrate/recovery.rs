@@ -132,6 +132,7 @@ pub fn recover(root: &Path, study: &TruthStudy, dir: &Path) -> Result<Recovered>
     ) {
         RunOutcome::Done(_) | RunOutcome::Skipped(_) | RunOutcome::Copied(..) => {}
         RunOutcome::Interrupted(_) => bail!("the truth run was interrupted"),
+        RunOutcome::Elsewhere(holder) => bail!("the truth run is running elsewhere ({holder})"),
         RunOutcome::Unsupported(why) | RunOutcome::Failed(why) => {
             bail!("the truth run failed: {why}")
         }
