@@ -30,6 +30,9 @@ pub(crate) fn copy_run(runs: &Path, from: &str, to: &str, fidelity: Fidelity) ->
     let source = runs.join(from).join(fidelity.name());
     let partial = store::partial_dir(&done);
     let copy = || -> Result<RunSummary> {
+        // the source's summary, checked against its own file list before anything changes
+        let mut summary = store::read_summary(&source)
+            .with_context(|| format!("no complete run in {}", source.display()))?;
         let _ = std::fs::remove_dir_all(&partial);
         std::fs::create_dir_all(&partial)?;
         copy_outputs(&source, &partial)?;
@@ -39,8 +42,6 @@ pub(crate) fn copy_run(runs: &Path, from: &str, to: &str, fidelity: Fidelity) ->
                 text.replacen(&format!("name: \"{from}\""), &format!("name: \"{to}\""), 1);
             std::fs::write(&resolved, renamed)?;
         }
-        let mut summary = store::read_summary(&partial)
-            .with_context(|| format!("no complete run in {}", source.display()))?;
         summary.case = to.to_string();
         // the renamed resolved.ron has another size: the list is made again
         summary.files = seal::seal(&partial)?;
@@ -84,7 +85,21 @@ mod tests {
         use runout_post::fixture::{write_run, TempDir};
         let tmp = TempDir::new("sweep-copy");
         let runs = tmp.0.join("runs");
-        write_run(&runs, "a", "wall", 0.4, &[("bulk.csv", "t\n0\n")]);
+        write_run(
+            &runs,
+            "a",
+            "wall",
+            0.4,
+            &[
+                ("bulk.csv", "t\n0\n"),
+                ("resolved.ron", "Case(name: \"a\")"),
+            ],
+        );
+        // a finished run lists its files with their sizes (issue 44): seal the source
+        let source = runs.join("a").join("wall");
+        let mut sealed = store::read_summary(&source).unwrap();
+        sealed.files = seal::seal(&source).unwrap();
+        sealed.write_json(&source.join("summary.json")).unwrap();
         let checkpoints = runs.join("a").join("wall").join(CHECKPOINT_DIR);
         std::fs::create_dir_all(&checkpoints).unwrap();
         std::fs::write(checkpoints.join("step_0000000001.ckpt"), "x").unwrap();
@@ -99,6 +114,10 @@ mod tests {
             "t\n0\n"
         );
         assert_eq!(store::read_summary(&copy).unwrap().case, "b");
+        assert_eq!(
+            std::fs::read_to_string(copy.join("resolved.ron")).unwrap(),
+            "Case(name: \"b\")"
+        );
         assert!(!copy.join(CHECKPOINT_DIR).exists());
         assert!(checkpoints.join("step_0000000001.ckpt").exists());
     }

@@ -100,14 +100,20 @@ pub(super) fn document(
          front moves by whole cells, so its speed resolves only (cell width)/(window). \
          *wall time*: of this run on the machine that generated the file.\n\n",
     );
-    laws_section(&mut s, outcomes);
+    laws_section(
+        &mut s,
+        outcomes,
+        "The laws come from dry-grain experiments; this set-up has air, the paper's \
+         Johnson–Jackson floor (δ_w = 11°, below δ_int = 35°) and 0.5 mm grains, so the match \
+         need not be close, but the deposit should stop within a few √(H0/g).",
+    );
     runs_section(&mut s, outcomes);
     s
 }
 
 /// The laboratory laws as a table, what they can be expected to say here, and the columns
 /// whose grid holds an aspect ratio off the nominal one.
-fn laws_section(s: &mut String, outcomes: &[Outcome]) {
+fn laws_section(s: &mut String, outcomes: &[Outcome], setup_note: &str) {
     s.push_str("**Laboratory laws** (verification-notes.md §2f, compiled from Lagrée, Staron & Popinet 2011 Eqs. 3.1–3.2; not re-checked against the originals):\n\n");
     s.push_str("| source | material | λ1 | λ2 | a0 |\n|---|---|---|---|---|\n");
     for law in [LAJEUNESSE, LUBE] {
@@ -122,12 +128,9 @@ fn laws_section(s: &mut String, outcomes: &[Outcome]) {
             law.name, law.material, law.lambda1, law.lambda2
         );
     }
-    s.push_str(
-        "\nThe laws come from dry-grain experiments; this set-up has air, the paper's \
-         Johnson–Jackson floor (δ_w = 11°, below δ_int = 35°) and 0.5 mm grains, so the match \
-         need not be close, but the deposit should stop within a few √(H0/g). The laws are \
-         evaluated at the nominal a.",
-    );
+    s.push('\n');
+    s.push_str(setup_note);
+    s.push_str(" The laws are evaluated at the nominal a.");
     for o in outcomes {
         let a = o.column.aspect();
         if (o.a_gridded / a - 1.0).abs() > 0.01 {
@@ -228,7 +231,16 @@ pub(super) fn document_mu_i(
          sample from which the mean u_s stays below 1 % of √(g H0) and the front no longer \
          moves, in √(H0/g).\n\n",
     );
-    laws_section(&mut s, outcomes);
+    laws_section(
+        &mut s,
+        outcomes,
+        "Lajeunesse et al. used glass beads of 1.15 mm in air on a rough floor; this set-up \
+         has glass beads of 0.53 mm with Jop et al.'s μ(I) fit, in air, on a no-slip floor, \
+         in a plane 2-D flow. For comparison, the 2-D μ(I) continuum of Lagrée, Staron & \
+         Popinet (2011) gives 2.2 a below a ≈ 7 and 3.9 a^0.7 above it (verification-notes.md \
+         §2f, not re-checked against the original): 1.1, 2.2, 6.6 and 13.2 at a = 0.5, 1, 3 \
+         and 6.",
+    );
     s.push_str("**What the runs show:**\n\n");
     for o in outcomes {
         let f = &o.front;
