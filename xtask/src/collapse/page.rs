@@ -234,7 +234,8 @@ pub(super) fn document_mu_i(
     laws_section(
         &mut s,
         outcomes,
-        "Lajeunesse et al. used glass beads of 1.15 mm in air on a rough floor; this set-up \
+        "Lajeunesse et al. used glass beads of about 1 mm in air (floor and size not re-checked \
+         against the original); this set-up \
          has glass beads of 0.53 mm with Jop et al.'s μ(I) fit, in air, on a no-slip floor, \
          in a plane 2-D flow. For comparison, the 2-D μ(I) continuum of Lagrée, Staron & \
          Popinet (2011) gives 2.2 a below a ≈ 7 and 3.9 a^0.7 above it (verification-notes.md \
