@@ -212,7 +212,7 @@ enum Task {
         /// also write error against run time (CSV/SVG/Markdown) into docs/verification/
         #[arg(long)]
         report: bool,
-        /// fidelity of the runs (collapse: smoke or coarse, default coarse; mfix-slope:
+        /// fidelity of the runs (collapse: smoke or coarse, default coarse; mu-i also paper, L0/20; mfix-slope:
         /// default paper, MFIX's 200 × 50 grid)
         #[arg(long)]
         fidelity: Option<String>,
