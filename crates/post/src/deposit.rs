@@ -251,6 +251,11 @@ mod tests {
         assert_eq!(distal_edge(&eps[..3], &xf, DILUTE_EPS_S), 2.0);
         assert_eq!(distal_edge(&eps[..3], &xf, DENSE_EPS_S), 1.0);
         assert_eq!(distal_edge(&eps[..3], &xf, 0.9), 0.0);
+        // only the floor row counts: the dense row above does not move the edge
+        let two_rows = [0.6, 0.4, 0.005, 0.0, 0.6, 0.6, 0.6, 0.6];
+        let faces = [0.0, 0.1, 0.2, 0.3, 0.4];
+        assert_eq!(distal_edge(&two_rows[..4], &faces, DILUTE_EPS_S), 0.2);
+        assert_eq!(distal_edge(&two_rows[..4], &faces, 0.5), 0.1);
         assert!(
             profile_csv(&p).starts_with("x,thickness_dense,thickness_dilute,solids_height\n5e-1,")
         );

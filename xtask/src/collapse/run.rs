@@ -11,12 +11,9 @@ use runout_output::{RunStatus, RunSummary};
 use runout_run::store::{self, finished_run, Request, Reuse, Stored};
 
 use super::column::Column;
-use super::fields::{floor_front, last_fields, median};
+use super::fields::{last_fields, median};
 use super::front::{front_metrics, read_bulk, FrontMetrics};
-
-/// εs threshold of the dense-deposit front read from the last field file [-] (the bulk
-/// monitor's front uses the case's threshold, 0.01).
-const DENSE_FRONT_EPS_S: f64 = 0.3;
+use runout_post::deposit::{distal_edge, DENSE_EPS_S};
 
 /// One collapse run and what it says.
 pub(super) struct Outcome {
@@ -116,7 +113,7 @@ pub(super) fn run_one(
         a_gridded,
         cells: (grid.nx(), grid.ny()),
         front,
-        dense_runout: column.runout(floor_front(&eps, grid.x.faces(), DENSE_FRONT_EPS_S)),
+        dense_runout: column.runout(distal_edge(&eps[..grid.nx()], grid.x.faces(), DENSE_EPS_S)),
         deposit_theta,
         fringe_theta,
         diameter: solids.diameter,
