@@ -29,6 +29,7 @@
 mod analytic;
 mod bench_two_fluid;
 mod calibrate;
+mod case_reference;
 mod chute;
 mod collapse;
 mod error_time;
@@ -256,6 +257,13 @@ enum Task {
         #[arg(trailing_var_arg = true, allow_hyphen_values = true)]
         args: Vec<String>,
     },
+    /// Writes docs/guide/case-reference.md from the case schema's reference table; `--check`
+    /// fails when the checked-in page differs (CI).
+    CaseReference {
+        /// compare instead of writing
+        #[arg(long)]
+        check: bool,
+    },
 }
 
 /// The folder that holds `runs/`, `results/` and `docs/`: `$XTASK_ROOT` if set (the tests
@@ -385,6 +393,7 @@ fn main() -> Result<()> {
         ),
         Task::Report { what, fidelity } => report_task(&what, fidelity.as_deref()),
         Task::Bench { what, args } => bench_task(&what, &args),
+        Task::CaseReference { check } => case_reference::run(&root(), check),
     }
 }
 

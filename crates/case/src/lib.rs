@@ -15,6 +15,7 @@ pub mod limits;
 mod load;
 mod name;
 mod read;
+pub mod reference;
 mod ron_error;
 mod run_control;
 mod schema;

@@ -301,6 +301,63 @@ pub const BANDS: [Band; 25] = [
     MU_I_SHEAR_RATE_FLOOR,
 ];
 
+/// Where validation applies each band, by the field paths of the case-file reference
+/// ([`crate::reference`], docs/guide/case-reference.md). A band added to [`BANDS`] without
+/// an entry here fails a test; so does an entry whose field validation does not check.
+#[rustfmt::skip]
+pub const BAND_FIELDS: &[(&str, Band)] = &[
+    ("solids[].diameter", DIAMETER),
+    ("solids[].density", PARTICLE_DENSITY),
+    ("gas.density", GAS_DENSITY),
+    ("gas.viscosity", GAS_VISCOSITY),
+    ("gas.reference_pressure", PRESSURE),
+    ("initial.gas_pressure", PRESSURE),
+    ("Boundary.PressureOutlet.pressure.Uniform", PRESSURE),
+    ("Boundary.PressureOutlet.pressure.Hydrostatic", PRESSURE),
+    ("AxisSpec.segments", DOMAIN_LENGTH),
+    ("AxisSpec.origin", COORDINATE),
+    ("AxisSpec.segments", CELL_WIDTH),
+    ("AxisSpec.segments", ADJACENT_WIDTH_RATIO),
+    ("gravity.Constant.magnitude", GRAVITY),
+    ("gravity.TiltOnImpact.magnitude", GRAVITY),
+    ("initial.theta", THETA),
+    ("initial.regions[].solids[].theta", THETA),
+    ("SolidsWall.PartialSlip.theta_w", THETA),
+    ("initial.gas_velocity", VELOCITY),
+    ("initial.regions[].solids[].velocity", VELOCITY),
+    ("Boundary.Wall.gas.Moving.u_w", VELOCITY),
+    ("Boundary.Wall.gas.PartialSlip.u_w", VELOCITY),
+    ("SolidsWall.PartialSlip.u_w", VELOCITY),
+    ("SolidsWall.JohnsonJackson.u_w", VELOCITY),
+    ("SolidsWall.RevisitedJohnsonJackson.u_w", VELOCITY),
+    ("SolidsWall.Jenkins.u_w", VELOCITY),
+    ("run.stop_at_rest.speed", VELOCITY),
+    ("run.end_time", TIME),
+    ("Preset.end_time", TIME),
+    ("run.dt.initial", TIME_STEP),
+    ("run.dt.min", TIME_STEP),
+    ("run.dt.max", TIME_STEP),
+    ("Boundary.Wall.gas.PartialSlip.h_u", SLIP_COEFFICIENT),
+    ("SolidsWall.PartialSlip.h_u", SLIP_COEFFICIENT),
+    ("SolidsWall.PartialSlip.h_theta", SLIP_COEFFICIENT),
+    ("SolidsWall.PartialSlip.c", THETA_FLUX),
+    ("models.kinetic_theory.Lun1984.alpha", KT_ALPHA),
+    ("models.drag.SyamlalOBrien.c1", DRAG_C1),
+    ("models.drag.SyamlalOBrien.d1", DRAG_D1),
+    ("solids[].max_packing", MAX_PACKING),
+    ("run.tolerances.residual", TOLERANCE),
+    ("run.tolerances.theta_residual", TOLERANCE),
+    ("numerics.relaxation.pressure", RELAXATION),
+    ("numerics.relaxation.eps_s", RELAXATION),
+    ("numerics.relaxation.velocity", RELAXATION),
+    ("numerics.relaxation.theta", RELAXATION),
+    ("numerics.relaxation.wall_closures", RELAXATION),
+    ("models.friction.MuI.mu_s", MU_I_FRICTION),
+    ("models.friction.MuI.mu_2", MU_I_FRICTION),
+    ("models.friction.MuI.i_0", MU_I_I0),
+    ("models.friction.MuI.shear_rate_floor", MU_I_SHEAR_RATE_FLOOR),
+];
+
 /// Most cells of a case's grid at any fidelity: 10 million, 110 times the paper's finest
 /// grid (1000 × 90) and ≈ 23 GiB for the two-fluid solver at the measured bytes per cell
 /// ([`crate::estimated_memory_bytes`]). A 40 000 × 25 000 grid (1e9 cells, ~1.8 TiB) used
