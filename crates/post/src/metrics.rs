@@ -1,7 +1,7 @@
 //! The flow quantities of results/summary.csv and `runout post`, read from a run's monitor
 //! files.
 //!
-//! Definitions (issue 8; documented in docs/status.md):
+//! Definitions (issue 8; documented in docs/history/status-log.md, "Sweep, report, error against run time"):
 //! - **air cushion**: at the station, the floor cell's εs is below 0.8 × the profile's peak εs;
 //!   its **thickness** is the height of the top face of the highest cell below the peak whose
 //!   εs is below 0.8 × peak;

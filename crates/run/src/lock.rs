@@ -14,7 +14,7 @@
 //! the server with a lease: a holder on another host that dies without unlocking keeps it
 //! until the lease expires (90 s by default). On NFS v3 mounted with `nolock`, or a
 //! filesystem without locks, it only excludes writers on the same host: run the runs of
-//! one folder from one host there (docs/status.md, "Issue 44").
+//! one folder from one host there (docs/history/status-log.md, "Issue 44").
 
 use std::fs::{File, OpenOptions, TryLockError};
 use std::io::Write;

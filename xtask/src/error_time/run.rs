@@ -34,12 +34,12 @@ pub(super) struct Run {
 /// cycle (`numerics.relaxation.wall_closures` = 1, which the sensitivity base sets to 0.5 at
 /// cycling nodes for the sweep's speed). The relaxation changes the path of the outer
 /// iterations, not the converged step (S-JJ-phi φ = 0.1 at coarse: mean u_s at 1.25 s
-/// 4.108170 against 4.108188 m/s with it, docs/performance.md session 6); fixing it keeps
+/// 4.108170 against 4.108188 m/s with it, docs/history/performance-log.md session 6); fixing it keeps
 /// the study's runs, made before the sensitivity base relaxed, one solver configuration.
 /// Likewise every θ row is classified dilute or dense by the current εs at every outer
 /// iteration (`numerics.dilute_cells`), and Δt follows MFIX's controller (a change per 5
 /// converged steps, × `factor` after a failed one), which the sensitivity and flume bases
-/// change for speed (docs/performance.md, session 7).
+/// change for speed (docs/history/performance-log.md, session 7).
 fn mfix_iteration(case: &mut Case) {
     case.numerics.relaxation.wall_closures = 1.0;
     case.numerics.relaxation.wall_closures_at = WallRelaxationScope::Everywhere;

@@ -635,7 +635,7 @@ impl TwoFluid {
                 }
             };
             // the gas residual's normaliser is at least GAS_RESIDUAL_FLOOR of the gas a mean
-            // cell holds per step ([`Convergence::sum`], S-JJ-phi coarse, docs/status.md)
+            // cell holds per step ([`Convergence::sum`], S-JJ-phi coarse, docs/history/status-log.md)
             let gas_floor = GAS_RESIDUAL_FLOOR * self.model.gas.density * mean_volume / dt;
             let (sum, g, s) = convergence.sum(&r, gas_floor);
             out.residual = sum;
