@@ -153,20 +153,22 @@ pub struct SensitivityArgs {
     /// the rows of this fidelity
     #[arg(long, default_value = "coarse", value_parser = parse_fidelity)]
     pub fidelity: Fidelity,
-    /// the folder of the sweep: reads `results/summary.csv`, writes
-    /// `results/elasticities.csv`
+    /// the folder of the sweep: reads `results/summary.csv` and the runs' `bulk.csv`,
+    /// writes `results/elasticities.csv`
     #[arg(long, value_name = "DIR", default_value = ".")]
     pub out: PathBuf,
 }
 
-/// Prints the elasticity of every numeric column of the summary over every one-factor
+/// Prints the elasticity of every numeric column of the summary (and of the front and mean
+/// u_s at each run's end) over every one-factor
 /// family of the sweeps under PATH, and writes every pair with its points to
 /// results/elasticities.csv.
 pub fn sensitivity(args: &SensitivityArgs) -> Result<()> {
-    use runout_study::elasticities::{compute, csv, read_rows, table};
+    use runout_study::elasticities::{add_bulk_outputs, compute, csv, read_rows, table};
     let cases = matrix(&args.path)?;
     let results = args.out.join("results");
-    let rows = read_rows(&results.join("summary.csv"), args.fidelity)?;
+    let mut rows = read_rows(&results.join("summary.csv"), args.fidelity)?;
+    add_bulk_outputs(&mut rows, &args.out.join("runs"), args.fidelity);
     let all = compute(&cases, &args.path, &rows)?;
     if all.is_empty() {
         anyhow::bail!(

@@ -136,8 +136,9 @@ enum Command {
     /// Nelder–Mead (2-D); every evaluation is a run in `DIR/runs/calibrate/<study>/`, reused
     /// when the command is run again.
     Calibrate(cmd_study::CalibrateArgs),
-    /// Elasticities ∂ln y/∂ln p of every numeric column of `DIR/results/summary.csv` over
-    /// every one-factor family of the sweeps under PATH; writes `DIR/results/elasticities.csv`.
+    /// Elasticities ∂ln y/∂ln p of every numeric column of `DIR/results/summary.csv` and of
+    /// the front and mean u_s at each run's end over every one-factor family of the sweeps
+    /// under PATH; writes `DIR/results/elasticities.csv`.
     Sensitivity(cmd_study::SensitivityArgs),
 }
 

@@ -94,6 +94,7 @@ fn a_sweep_and_its_sensitivity_run_in_a_folder_of_the_users() {
         "{pairs}"
     );
     assert!(pairs.contains("M-JJ-phi: φ,φ,-,max_u_s,"), "{pairs}");
+    assert!(pairs.contains("M-JJ-phi: φ,φ,-,front_x_end_m,"), "{pairs}");
 }
 
 /// Shard 2 of 2 runs every second case; shard 1 the others; the summary holds all four.

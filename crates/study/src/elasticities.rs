@@ -1,6 +1,7 @@
-//! `runout sensitivity`: the elasticity of every numeric column of `results/summary.csv`
-//! over every one-factor family of the sweeps in a case matrix ([`crate::families`]), from
-//! the rows of one fidelity. The computation is [`crate::sensitivity`]'s: the least-squares
+//! `runout sensitivity`: the elasticity of every numeric column of `results/summary.csv`,
+//! and of the front and the mean u_s at each run's end (its `bulk.csv`), over every
+//! one-factor family of the sweeps in a case matrix ([`crate::families`]), from the rows of
+//! one fidelity. The computation is [`crate::sensitivity`]'s: the least-squares
 //! slope of ln y against ln p over a family's points (an arc elasticity where p ≤ 0).
 
 use std::collections::HashMap;
@@ -63,6 +64,43 @@ pub fn read_rows(path: &Path, fidelity: Fidelity) -> Result<Rows> {
     })
 }
 
+/// The columns of a run's `bulk.csv` whose last value is an output: (column, name in the
+/// table).
+const BULK_OUTPUTS: [(&str, &str); 2] = [
+    ("front_x_interpolated", "front_x_end_m"),
+    ("mean_u_s", "mean_u_s_end_m_s"),
+];
+
+/// Adds the [`BULK_OUTPUTS`] to `rows`: the last row of `runs/<case>/<fidelity>/bulk.csv` of
+/// every case (empty where a run has none).
+pub fn add_bulk_outputs(rows: &mut Rows, runs: &Path, fidelity: Fidelity) {
+    rows.columns
+        .extend(BULK_OUTPUTS.iter().map(|(_, name)| name.to_string()));
+    for (case, values) in rows.values.iter_mut() {
+        let file = runs.join(case).join(fidelity.name()).join("bulk.csv");
+        let last = last_values(&file);
+        values.extend(
+            BULK_OUTPUTS
+                .iter()
+                .map(|(column, _)| last.as_ref().and_then(|l| l.get(*column).copied())),
+        );
+    }
+}
+
+/// The numeric values of the last record of a CSV file, by column name.
+fn last_values(file: &Path) -> Option<HashMap<String, f64>> {
+    let mut reader = csv::Reader::from_path(file).ok()?;
+    let header = reader.headers().ok()?.clone();
+    let last = reader.records().filter_map(|r| r.ok()).last()?;
+    Some(
+        header
+            .iter()
+            .zip(last.iter())
+            .filter_map(|(h, v)| Some((h.to_string(), v.trim().parse().ok()?)))
+            .collect(),
+    )
+}
+
 /// One family's summary elasticity of each output column.
 pub struct FamilyElasticities {
     /// the family
@@ -111,13 +149,28 @@ fn shown(s: &Summary) -> String {
     }
 }
 
-/// The table of every family (rows) and output column (columns), as Markdown.
+/// The table of every family (rows) and output column with a value for at least one
+/// family (columns), as Markdown; the columns without any are named below it.
 pub fn table(columns: &[String], all: &[FamilyElasticities]) -> String {
-    let mut md = format!("| family | {} |\n", columns.join(" | "));
-    let _ = writeln!(md, "|---{}|", "|---:".repeat(columns.len()));
+    let (shown_columns, empty): (Vec<usize>, Vec<usize>) =
+        (0..columns.len()).partition(|&c| all.iter().any(|f| f.summaries[c].elasticity.is_ok()));
+    let names =
+        |list: &[usize]| -> Vec<&str> { list.iter().map(|&c| columns[c].as_str()).collect() };
+    let mut md = format!("| family | {} |\n", names(&shown_columns).join(" | "));
+    let _ = writeln!(md, "|---{}|", "|---:".repeat(shown_columns.len()));
     for f in all {
-        let cells: Vec<String> = f.summaries.iter().map(shown).collect();
+        let cells: Vec<String> = shown_columns
+            .iter()
+            .map(|&c| shown(&f.summaries[c]))
+            .collect();
         let _ = writeln!(md, "| {} | {} |", f.family.label(), cells.join(" | "));
+    }
+    if !empty.is_empty() {
+        let _ = writeln!(
+            md,
+            "\nno value (no two usable points): {}",
+            names(&empty).join(", ")
+        );
     }
     md
 }
@@ -202,8 +255,28 @@ mod tests {
             assert!((e - expected).abs() < 1e-12, "{}: {e}", f.family.label());
             assert!(f.summaries[1].elasticity.is_err());
         }
-        let md = table(&rows.columns, &all);
-        assert!(md.contains("| T: d (φ = 0.1) | 0.50 | — |"), "{md}");
+        let mut rows = rows;
+        let runs = dir.join("runs");
+        let run = runs.join("T_d=0.0001_phi=0.1").join("smoke");
+        std::fs::create_dir_all(&run).unwrap();
+        std::fs::write(
+            run.join("bulk.csv"),
+            "t,front_x_interpolated,mean_u_s\n0,1,0\n1,2,0.5\n",
+        )
+        .unwrap();
+        add_bulk_outputs(&mut rows, &runs, Fidelity::Smoke);
+        assert_eq!(rows.columns[2..], ["front_x_end_m", "mean_u_s_end_m_s"]);
+        assert_eq!(
+            rows.values["T_d=0.0001_phi=0.1"][2..],
+            [Some(2.0), Some(0.5)]
+        );
+        assert_eq!(rows.values["T_d=0.0004_phi=0.1"][2..], [None, None]);
+        let md = table(&rows.columns[..2], &all);
+        assert!(md.contains("| T: d (φ = 0.1) | 0.50 |\n"), "{md}");
+        assert!(
+            md.contains("no value (no two usable points): flow_thickness_m"),
+            "{md}"
+        );
         assert_eq!(csv(&rows.columns, &all).lines().count(), 1 + 4 * 2);
         std::fs::remove_dir_all(&dir).unwrap();
     }

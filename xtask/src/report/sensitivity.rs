@@ -309,7 +309,7 @@ pub fn section(
 fn method(md: &mut String) {
     let _ = writeln!(
         md,
-        "**How it is computed** (xtask/src/sensitivity.rs). A one-factor family is the runs of \
+        "**How it is computed** (crates/study/src/sensitivity.rs). A one-factor family is the runs of \
          one sweep of cases/{SENSITIVITY_DIR}/ that differ in one parameter p only (φ, d, h_w^u, \
          h_w^θ, c_w or the slope; a sweep's other varied parameter is held, and named in \
          brackets). For each output y the elasticity E = ∂ln y/∂ln p (the % change of y per % \
