@@ -29,8 +29,5 @@ pub const LINE_COLOURS: [RGBColor; 6] = [
     RGBColor(0, 0, 0),
 ];
 
-/// A drawing error of plotters (whose error types are not `std::error::Error` for every
-/// backend) as an `anyhow` error.
-pub fn plot_error<E: std::fmt::Debug>(e: E) -> anyhow::Error {
-    anyhow::anyhow!("plotting a figure: {e:?}")
-}
+/// The error of a failed drawing (defined with the study engine's plots).
+pub use runout_study::plots::plot_error;

@@ -2,7 +2,7 @@
 //!
 //! - `sweep`: the paper's case matrix (every sweep and stand-alone case under `cases/`),
 //!   expanded, validated and run in parallel into `runs/`, its rows merged into
-//!   `results/summary.csv` ([`summary`]);
+//!   `results/summary.csv` (the study engine, [`runout_study`]);
 //!   cases that need the two-fluid model (issue 7) are reported as unsupported.
 //! - `bench linsolve`: the linear-solver timing table of docs/performance.md;
 //! - `bench two-fluid`: the two-fluid solver's cost table (issue 22).
@@ -16,7 +16,7 @@
 //!   in docs/analytic/;
 //! - `report [results] [--fidelity F]`: the runs of the sweep beside the paper, in
 //!   docs/results.md with SVG figures in docs/results/, and the elasticities of family S's
-//!   one-factor families ([`sensitivity`]) as a table, a heat map and a CSV;
+//!   one-factor families ([`runout_study::sensitivity`]) as a table, a heat map and a CSV;
 //! - `error-time`: issue 8's discretisation error of the station profiles and gate speeds
 //!   against wall time over a ladder of grids, for upwind and Superbee ([`error_time`]), in
 //!   docs/error-time.md;
@@ -28,24 +28,21 @@
 
 mod analytic;
 mod bench_two_fluid;
-mod calibrate;
 mod case_reference;
 mod chute;
 mod collapse;
 mod error_time;
 mod figure;
-mod jobs;
 mod mfix_slope;
-mod repeat;
 mod report;
-mod sensitivity;
 mod stability;
-mod summary;
 mod sweep;
 mod verify;
 
 /// The flow metrics live in the post-processing library (`runout post` reads the same).
 use runout_post::metrics;
+/// The study engine: sweeps, calibration and sensitivity (`runout sweep` and friends).
+use runout_study::{calibrate, jobs};
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -279,16 +276,6 @@ fn root() -> PathBuf {
         .to_path_buf()
 }
 
-/// Parses `i/n` (1-based).
-fn parse_shard(s: &str) -> Result<(usize, usize)> {
-    let (i, n) = s.split_once('/').context("--shard must look like i/n")?;
-    let (i, n): (usize, usize) = (i.trim().parse()?, n.trim().parse()?);
-    if n == 0 || i == 0 || i > n {
-        bail!("--shard {s}: need 1 <= i <= n");
-    }
-    Ok((i, n))
-}
-
 fn main() -> Result<()> {
     match Cli::parse().task {
         Task::Sweep {
@@ -332,6 +319,7 @@ fn main() -> Result<()> {
                 profile,
                 name,
                 dry_run,
+                program: "cargo xtask",
             },
         ),
         Task::SyntheticMeasurements {
@@ -429,16 +417,17 @@ fn sweep_task(
         fidelity: parse_fidelity(&fidelity)?,
         only,
         jobs: jobs.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get())),
-        shard: shard.as_deref().map(parse_shard).transpose()?,
+        shard: shard.as_deref().map(sweep::parse_shard).transpose()?,
         list,
-        study,
+        gates: None,
+        program: "cargo xtask",
     };
     let dir = if cases.is_absolute() {
         cases
     } else {
         root().join(cases)
     };
-    sweep::sweep(&root(), &dir, &opts)
+    sweep::sweep(&root(), &dir, study.as_deref(), opts)
 }
 
 /// `cargo xtask error-time`: the comma-separated lists parsed into the study's options.

@@ -5,7 +5,7 @@
 //! linked), a table of every number the paper reports beside runout's, the flume's gate
 //! speeds with their mean square error against the described speeds, the family-M
 //! cross-check against MFIX, and the elasticities of the one-factor families of family S
-//! (issue 23, [`crate::sensitivity`]) as a table and a heat map.
+//! (issue 23, [`runout_study::sensitivity`]) as a table and a heat map.
 //!
 //! Each case is read from `runs/<case>/<fidelity>/` (written by `cargo xtask sweep` or
 //! `runout run`): by default the best fidelity with a finished run (paper, then coarse, then
@@ -19,7 +19,8 @@ mod fields;
 mod figure_sets;
 mod findings;
 mod paper;
-pub(crate) mod plots;
+/// The SVG panels, drawn by the study engine's plots.
+use runout_study::plots;
 mod reading;
 pub mod release;
 mod sensitivity;

@@ -7,9 +7,12 @@
 //! - `runout mesh <file>`: print the grid summary of a case (or of each case of a sweep);
 //! - `runout closures --eps-s … --theta …`: every closure value at one state, as JSON;
 //! - `runout wall --model … --eps-s … --theta … --slip …`: a wall model's Robin coefficients
-//!   and diagnostics (h_w^u, φ, COL, FRI), as JSON.
+//!   and diagnostics (h_w^u, φ, COL, FRI), as JSON;
+//! - `runout sweep <path>`, `runout calibrate <case> --param … --measurements …`, `runout
+//!   sensitivity <path>`: studies of many runs on the user's own cases ([`cmd_study`]).
 
 mod cmd_closures;
+mod cmd_study;
 mod cmd_wall;
 mod material;
 
@@ -122,6 +125,21 @@ enum Command {
     /// Print a wall model's Robin coefficients for velocity and granular temperature, with
     /// the diagnostics the paper plots (h_w^u, φ, COL, FRI, slip), as JSON.
     Wall(cmd_wall::WallArgs),
+    /// Run every case of a case file, a sweep file or a folder of them, in parallel, into
+    /// `DIR/runs/<case>/<fidelity>/` (`--out DIR`, default the current folder): finished runs
+    /// are skipped and an interrupted one continues from its checkpoint, so a killed sweep
+    /// resumes; the rows are merged into `DIR/results/summary.csv` (shards of a cluster array
+    /// may write at once).
+    Sweep(cmd_study::SweepArgs),
+    /// Fit one or two numeric fields of a case to measurements (front speeds at gates, front
+    /// positions or a profile): a scan of the misfit landscape, then Brent (1-D) or
+    /// Nelder–Mead (2-D); every evaluation is a run in `DIR/runs/calibrate/<study>/`, reused
+    /// when the command is run again.
+    Calibrate(cmd_study::CalibrateArgs),
+    /// Elasticities ∂ln y/∂ln p of every numeric column of `DIR/results/summary.csv` and of
+    /// the front and mean u_s at each run's end over every one-factor family of the sweeps
+    /// under PATH; writes `DIR/results/elasticities.csv`.
+    Sensitivity(cmd_study::SensitivityArgs),
 }
 
 /// `runout post`: the metrics of one run folder as pretty JSON on stdout.
@@ -612,5 +630,19 @@ fn main() -> ExitCode {
                 ExitCode::FAILURE
             }
         },
+        Command::Sweep(args) => exit_code("sweep", cmd_study::sweep(&args)),
+        Command::Calibrate(args) => exit_code("calibrate", cmd_study::calibrate(&args)),
+        Command::Sensitivity(args) => exit_code("sensitivity", cmd_study::sensitivity(&args)),
+    }
+}
+
+/// Success, or the error printed after the command's name and failure.
+fn exit_code(command: &str, result: anyhow::Result<()>) -> ExitCode {
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("runout {command}: {e:#}");
+            ExitCode::FAILURE
+        }
     }
 }

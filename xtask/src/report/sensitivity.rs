@@ -1,7 +1,7 @@
 //! The sensitivity section of results.md (issue 23, item 3): the elasticity of each output
 //! of the report over each one-factor family of family S, as a table, a heat map
 //! (`sensitivity.svg`) and a CSV of every pair (`elasticities.csv`). The computation is
-//! [`crate::sensitivity`]; this module finds the families in the matrix and reads the
+//! [`runout_study::sensitivity`]; this module finds the families in the matrix and reads the
 //! outputs of their runs.
 
 use std::collections::BTreeSet;
@@ -9,16 +9,17 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use anyhow::{Context, Result};
-use runout_case::{Case, Param, Sweep};
+use runout_case::Case;
 
 use super::coverage::remove_stale;
 use super::plots::{self, HeatCell, Heatmap};
 use super::reading::flow_at_station;
 use super::{cell, FIGURE_DIR};
 use crate::metrics::PROFILE_TIME;
-use crate::sensitivity::{local, summary, Elasticity, Method, Summary};
-use crate::sweep::{csv_field, Matrix};
 use runout_post::case_data::{CaseData, Cases};
+use runout_study::families::Family;
+use runout_study::sensitivity::{local, summary, Elasticity, Method, Summary};
+use runout_study::sweep::{csv_field, Matrix};
 
 /// The case directory of family S (the sensitivity study) below `cases/`.
 pub const SENSITIVITY_DIR: &str = "sensitivity";
@@ -27,139 +28,11 @@ const HEATMAP_FILE: &str = "sensitivity.svg";
 /// Every pair's elasticity, in the figure directory.
 const CSV_FILE: &str = "elasticities.csv";
 
-/// A parameter a family varies: its symbol and unit.
-fn symbol(p: &Param) -> (&'static str, &'static str) {
-    match p {
-        Param::Diameter(_) => ("d", "m"),
-        Param::Specularity(_) => ("φ", "-"),
-        Param::PartialSlipHu(_) => ("h_w^u", "1/m"),
-        Param::PartialSlipHTheta(_) => ("h_w^θ", "1/m"),
-        Param::PartialSlipC(_) => ("c_w", "m/s²"),
-        Param::Slope(_) => ("slope", "deg"),
-        Param::SolidsWalls(_) => ("wall", ""),
-        Param::Release(_) => ("release", ""),
-        Param::Clock(_) => ("clock", ""),
-    }
-}
-
-/// The values of a numeric parameter (`None` for the wall condition and the release).
-fn values(p: &Param) -> Option<&[f64]> {
-    match p {
-        Param::Diameter(v)
-        | Param::Specularity(v)
-        | Param::PartialSlipHu(v)
-        | Param::PartialSlipHTheta(v)
-        | Param::PartialSlipC(v)
-        | Param::Slope(v) => Some(v),
-        Param::SolidsWalls(_) | Param::Release(_) | Param::Clock(_) => None,
-    }
-}
-
-/// A one-factor family: the runs of one sweep that differ in one parameter only.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Family {
-    /// the sweep's name
-    pub sweep: String,
-    /// the parameter's symbol
-    pub symbol: &'static str,
-    /// its unit
-    pub unit: &'static str,
-    /// the sweep's other varied parameters at this family's values, e.g. "slope = 40"
-    pub fixed: Vec<String>,
-    /// (parameter value, case name), in the sweep's order
-    pub points: Vec<(f64, String)>,
-}
-
-impl Family {
-    /// "S-PS-cw: c_w (slope = 40)".
-    pub fn label(&self) -> String {
-        let fixed = if self.fixed.is_empty() {
-            String::new()
-        } else {
-            format!(" ({})", self.fixed.join(", "))
-        };
-        format!("{}: {}{fixed}", self.sweep, self.symbol)
-    }
-}
-
-/// The one-factor families of a sweep: for each numeric varied parameter with two values or
-/// more, one family per combination of the other varied parameters' values. Case names are
-/// built as [`runout_case::expand`] builds them.
-pub fn sweep_families(sweep: &Sweep) -> Vec<Family> {
-    let vary = &sweep.vary;
-    let name = |index: &[usize]| {
-        let mut n = sweep.name.clone();
-        for (p, &i) in vary.iter().zip(index) {
-            let _ = write!(n, "_{}={}", p.key(), p.label(i));
-        }
-        n
-    };
-    let mut out = Vec::new();
-    for (k, param) in vary.iter().enumerate() {
-        let Some(v) = values(param).filter(|v| v.len() >= 2) else {
-            continue;
-        };
-        let others: Vec<usize> = (0..vary.len()).filter(|&j| j != k).collect();
-        let mut index = vec![0usize; vary.len()];
-        'combinations: loop {
-            let points = (0..v.len())
-                .map(|i| {
-                    index[k] = i;
-                    (v[i], name(&index))
-                })
-                .collect();
-            let (sym, unit) = symbol(param);
-            out.push(Family {
-                sweep: sweep.name.clone(),
-                symbol: sym,
-                unit,
-                fixed: others
-                    .iter()
-                    .map(|&j| format!("{} = {}", symbol(&vary[j]).0, vary[j].label(index[j])))
-                    .collect(),
-                points,
-            });
-            // next combination of the others, the last fastest
-            let mut d = others.len();
-            loop {
-                if d == 0 {
-                    break 'combinations;
-                }
-                d -= 1;
-                let j = others[d];
-                index[j] += 1;
-                if index[j] < vary[j].len() {
-                    break;
-                }
-                index[j] = 0;
-            }
-        }
-    }
-    out
-}
-
 /// The one-factor families of the sweeps of family S (`cases/sensitivity/`) in the matrix,
 /// in the matrix's order. The flume's φ pair (F-JJ) is left out: its outputs are gate
 /// speeds, not the station quantities.
 pub fn families(matrix: &Matrix, cases_dir: &Path) -> Result<Vec<Family>> {
-    let dir = cases_dir.join(SENSITIVITY_DIR);
-    let mut files = Vec::new();
-    for r in &matrix.runs {
-        if r.base.is_some() && r.file.starts_with(&dir) && !files.contains(&r.file) {
-            files.push(r.file.clone());
-        }
-    }
-    let mut out = Vec::new();
-    for f in files {
-        let text =
-            std::fs::read_to_string(&f).with_context(|| format!("reading {}", f.display()))?;
-        let sweep: Sweep = ron::Options::default()
-            .with_default_extension(ron::extensions::Extensions::IMPLICIT_SOME)
-            .from_str(&text)
-            .with_context(|| format!("reading the sweep of {}", f.display()))?;
-        out.extend(sweep_families(&sweep));
-    }
-    Ok(out)
+    runout_study::families::families(matrix, &cases_dir.join(SENSITIVITY_DIR))
 }
 
 /// An output of the report whose elasticity is computed.
@@ -436,7 +309,7 @@ pub fn section(
 fn method(md: &mut String) {
     let _ = writeln!(
         md,
-        "**How it is computed** (xtask/src/sensitivity.rs). A one-factor family is the runs of \
+        "**How it is computed** (crates/study/src/sensitivity.rs). A one-factor family is the runs of \
          one sweep of cases/{SENSITIVITY_DIR}/ that differ in one parameter p only (φ, d, h_w^u, \
          h_w^θ, c_w or the slope; a sweep's other varied parameter is held, and named in \
          brackets). For each output y the elasticity E = ∂ln y/∂ln p (the % change of y per % \

@@ -17,7 +17,7 @@ use crate::sweep::Outcome;
 /// with the case name in its summary and resolved case changed to `to`; skipped if `to` is
 /// finished already. The checkpoints stay with the run that wrote them (they restart
 /// `from`'s case, and a restart refuses another case).
-pub(crate) fn copy_run(runs: &Path, from: &str, to: &str, fidelity: Fidelity) -> Outcome {
+pub fn copy_run(runs: &Path, from: &str, to: &str, fidelity: Fidelity) -> Outcome {
     let done = runs.join(to).join(fidelity.name());
     let _lock = match RunLock::acquire(&done) {
         Ok(lock) => lock,

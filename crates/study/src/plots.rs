@@ -1,11 +1,15 @@
-//! SVG panels of the results report (plotters, as `report analytic` draws Fig. 1).
+//! SVG panels and heat maps of the reports and the calibration landscape (plotters).
 
 use std::path::Path;
 
 use anyhow::Result;
 use plotters::prelude::*;
 
-use crate::figure::plot_error;
+/// A drawing error of plotters (whose error types are not `std::error::Error` for every
+/// backend) as an `anyhow` error.
+pub fn plot_error<E: std::fmt::Debug>(e: E) -> anyhow::Error {
+    anyhow::anyhow!("plotting a figure: {e:?}")
+}
 
 /// Width of one panel [px].
 const PANEL_WIDTH: u32 = 460;

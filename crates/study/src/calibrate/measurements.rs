@@ -212,6 +212,11 @@ impl Kind {
             Kind::Profile { points, .. } => points.len(),
         }
     }
+
+    /// No measured point (a file is refused so; see [`Measurements::read`]).
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
 }
 
 /// Simulated − measured at each measured abscissa, the simulation interpolated linearly;
@@ -411,7 +416,7 @@ pub fn parse(text: &str) -> Result<(Kind, FileSigma)> {
             PROFILE_COLUMNS.join(", ")
         );
     };
-    if kind.len() == 0 {
+    if kind.is_empty() {
         bail!("no measured values (every value cell is empty)");
     }
     let sigma = file_sigma(sigma_col.is_some(), common_sigma, sigmas)?;
@@ -424,7 +429,7 @@ mod tests {
 
     #[test]
     fn the_shipped_gate_speeds_are_read() {
-        let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases/flume/gates.csv");
+        let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../cases/flume/gates.csv");
         let m = Measurements::read(&file, Some(0.3)).unwrap();
         assert_eq!(m.sigma, [0.3; 6]);
         assert_eq!(

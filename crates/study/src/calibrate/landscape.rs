@@ -8,7 +8,7 @@ use serde::Serialize;
 
 use super::optimise::{Calibration, Param};
 use super::uncertainty::Range;
-use crate::report::plots::{self, HeatCell, Heatmap, Mark, Panel, Series, BLACK_INDEX};
+use crate::plots::{self, HeatCell, Heatmap, Mark, Panel, Series, BLACK_INDEX};
 use crate::sweep::csv_field;
 
 /// What the outputs say about the study besides the calibration.

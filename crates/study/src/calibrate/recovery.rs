@@ -183,7 +183,7 @@ mod tests {
     use super::*;
 
     fn root() -> PathBuf {
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
     }
 
     fn settings(scan: usize, refine: usize, profile: usize) -> Settings {
@@ -248,7 +248,7 @@ mod tests {
 
     /// The table of docs/calibrate.md: family M at coarse fidelity, several truths, one and
     /// two parameters, with and without noise. About 15 coarse runs (~20 s each on a quiet
-    /// core) per row; `cargo test --release -p xtask recovery_table -- --ignored --nocapture`.
+    /// core) per row; `cargo test --release -p runout-study recovery_table -- --ignored --nocapture`.
     #[test]
     #[ignore]
     fn recovery_table() {

@@ -302,7 +302,8 @@ mod tests {
     use super::*;
 
     pub(crate) fn flume() -> Case {
-        let file = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases/flume/base.ron");
+        let file =
+            std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../cases/flume/base.ron");
         runout_case::load_case(&file).unwrap()
     }
 

@@ -1,4 +1,4 @@
-//! `cargo xtask calibrate`: fits one or two numeric fields of a case to measurements by
+//! `runout calibrate` (and `cargo xtask calibrate`): fits one or two numeric fields of a case to measurements by
 //! minimising χ² = Σ (simulated − measured)²/σ², and states the range Δχ² ≤ 1 of the
 //! parameters consistent with them (docs/calibrate.md).
 //!
@@ -37,7 +37,7 @@ use optimise::{calibrate, Model, Outcome, Param, Settings};
 use path::{set_all, CasePath};
 use runout_post::front::FrontDefinition;
 
-/// Options of `cargo xtask calibrate`.
+/// Options of `runout calibrate` and `cargo xtask calibrate`.
 pub struct Options {
     /// the case or sweep file
     pub case_file: PathBuf,
@@ -67,6 +67,9 @@ pub struct Options {
     pub name: Option<String>,
     /// check the input and print the plan, run nothing
     pub dry_run: bool,
+    /// the program as the user types it (`runout`, `cargo xtask`), for the command line
+    /// the summary records
+    pub program: &'static str,
 }
 
 /// Parses `PATH=LO:HI[:START][:log]` against `case`.
@@ -301,8 +304,8 @@ fn check_corners(case: &Case, paths: &[CasePath], params: &[Param]) -> Result<()
     Ok(())
 }
 
-/// The command line, for the summary.
-fn command_line() -> String {
+/// The command line, for the summary: `program` and this process's arguments.
+fn command_line(program: &str) -> String {
     let args: Vec<String> = std::env::args()
         .skip(1)
         .map(|a| {
@@ -313,10 +316,11 @@ fn command_line() -> String {
             }
         })
         .collect();
-    format!("cargo xtask {}", args.join(" "))
+    format!("{program} {}", args.join(" "))
 }
 
-/// `cargo xtask calibrate`.
+/// Runs the calibration of `opts` below `root` (`runs/calibrate/<study>/`); relative paths
+/// that do not exist as given are taken below `root`.
 pub fn run(root: &Path, opts: &Options) -> Result<()> {
     let file = locate(root, &opts.case_file);
     let case = select_case(&file, opts.case.as_deref())?;
@@ -417,7 +421,7 @@ pub fn run(root: &Path, opts: &Options) -> Result<()> {
         unit: measurements.unit(),
         sigma: measurements.sigma_source.clone(),
         points: measurements.kind.len(),
-        command: command_line(),
+        command: command_line(opts.program),
         fields: paths.iter().map(CasePath::fields).collect(),
     };
     landscape::write_csv(&study.join("evaluations.csv"), &c)?;
@@ -433,7 +437,7 @@ mod tests {
     use super::*;
 
     fn flume() -> Case {
-        let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases/flume/base.ron");
+        let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../cases/flume/base.ron");
         runout_case::load_case(&file).unwrap()
     }
 
@@ -471,7 +475,7 @@ mod tests {
 
     #[test]
     fn a_sweep_file_needs_the_case_named() {
-        let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases/flume/F-JJ.ron");
+        let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../cases/flume/F-JJ.ron");
         let e = format!("{:#}", select_case(&file, None).unwrap_err());
         assert!(
             e.contains("name one with --case") && e.contains("F-JJ_phi=0.01"),
