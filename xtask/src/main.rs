@@ -7,7 +7,7 @@
 //! - `bench linsolve`: the linear-solver timing table of docs/performance.md;
 //! - `bench two-fluid`: the two-fluid solver's cost table (issue 22).
 //! - `verify <name> [--report]`: the checks of runout-verification's registry at full size
-//!   ([`verify`]): one check (cavity, poiseuille, taylor-green, chute, haff, cooling,
+//!   ([`verify`]): one check (cavity, poiseuille, taylor-green, chute, incline, haff, cooling,
 //!   settling, fluidized-bed, s-jj-phi) or a group (single-phase, two-fluid, all);
 //!   `verify mfix-slope`: family M against MFIX (issue 9, [`mfix_slope`]);
 //!   `verify collapse [--fidelity smoke|coarse] [--reuse]`: issue 7's granular column collapse
@@ -200,7 +200,7 @@ enum Task {
         end_time: Option<f64>,
     },
     /// Verification: the checks of runout-verification at full size (cavity, poiseuille,
-    /// taylor-green, chute, haff, cooling, settling, fluidized-bed, s-jj-phi; groups
+    /// taylor-green, chute, incline, haff, cooling, settling, fluidized-bed, s-jj-phi; groups
     /// single-phase, two-fluid, all), the Re = 1000 cavity study (cavity-re1000), the
     /// granular column collapse (collapse) and family M against MFIX (mfix-slope).
     Verify {

@@ -1,7 +1,7 @@
 //! `cargo xtask verify <name> [--report]`: the checks of runout-verification at full size
 //! ([`runout_verification::registry`]), one by name or a group of them:
 //!
-//! - a check: `cavity`, `poiseuille`, `taylor-green`, `chute`, `haff`, `cooling`,
+//! - a check: `cavity`, `poiseuille`, `taylor-green`, `chute`, `incline`, `haff`, `cooling`,
 //!   `settling`, `fluidized-bed`, `s-jj-phi` (`chute` also writes docs/chute.md,
 //!   [`crate::chute`]);
 //! - a group: `single-phase` (cavity, poiseuille, taylor-green), `two-fluid` (haff,

@@ -165,6 +165,9 @@ fn run_solves_the_mfix_slide_with_its_johnson_jackson_floor_at_smoke_fidelity() 
         Some(last_h_u),
         "{json}"
     );
+    // the deposit is read at smoke fidelity too (its resolved case, whose profile time is
+    // past the smoke end time, is read without validation)
+    assert!(json["deposit"]["Ok"]["at_rest"].is_boolean(), "{json}");
     let o = runout(&["post", std::env::temp_dir().to_str().unwrap()]);
     assert!(!o.status.success());
     assert!(text(&o).contains("not a run folder"), "{}", text(&o));

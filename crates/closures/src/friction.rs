@@ -16,6 +16,7 @@
 
 use crate::guards::{SMALL_NUMBER, THETA_SMALL, TO_SI};
 use crate::mu_i::MuIConstants;
+use crate::stress::{FaceMean, KineticJoin};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::SQRT_2;
 
@@ -137,6 +138,8 @@ pub struct FrictionalStress {
     pub n: f64,
     /// μ(I) inertial number I [-] (0 for the other models)
     pub inertial_number: f64,
+    /// how μ_kin and λ_kin join this stress (MFIX's sum but for μ(I))
+    pub kinetic_join: KineticJoin,
 }
 
 // ---------------------------------------------------------------- Schaeffer (§2.4.1)
@@ -343,6 +346,7 @@ impl PrincetonConstants {
             zeta,
             n,
             inertial_number: 0.0,
+            kinetic_join: KineticJoin::Sum,
         }
     }
 
@@ -509,6 +513,16 @@ impl FrictionModel {
         match self {
             Self::Schaeffer(c) => Some(c),
             Self::None | Self::Princeton(_) | Self::MuI(_) => None,
+        }
+    }
+
+    /// How the solids viscosity is averaged to the momentum cells' corners
+    /// ([`FaceMean`]): arithmetic for μ(I), whose viscosity is a Coulomb strength μ(I) P/γ̇
+    /// (docs/model.md §2.4.4), MFIX's harmonic mean otherwise.
+    pub fn corner_viscosity_mean(&self) -> FaceMean {
+        match self {
+            Self::MuI(_) => FaceMean::Arithmetic,
+            Self::None | Self::Princeton(_) | Self::Schaeffer(_) => FaceMean::Harmonic,
         }
     }
 

@@ -54,3 +54,4 @@ pub use kinetic::{GasCoupling, KineticStress, SolidsState};
 pub use mu_i::MuIConstants;
 pub use radial::RadialDistribution;
 pub use stress::SolidsStress;
+pub use stress::{FaceMean, KineticJoin};

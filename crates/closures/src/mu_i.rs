@@ -19,8 +19,15 @@
 //! against 2.3 L0 with the total pressure). Pressure from εs and θ with a rate-independent
 //! μ(I) is a compressible form in the sense of Heyman et al. (2017, JFM 830, R1), which
 //! removes the short-wave ill-posedness of incompressible μ(I) (Barker et al. 2015, JFM 779);
-//! the φ(I) dilatancy law of Schaeffer et al. (2019, JFM 874) is not implemented. The
-//! kinetic viscosity μ_kin is still summed with μ_fric (§2.3), as with Princeton.
+//! the φ(I) dilatancy law of Schaeffer et al. (2019, JFM 874) is not implemented.
+//!
+//! **Joined with the kinetic theory as the larger.** μ(I) is the whole dense shear stress
+//! (its collisional part included), so the stress it returns carries
+//! [`KineticJoin::LargerOf`]: μ_s = (μ_kin⁴ + μ_fric⁴)^(1/4) rather than MFIX's sum (§2.3,
+//! §2.4.4); and the solver averages its viscosity arithmetically to the cell corners
+//! ([`crate::FrictionModel::corner_viscosity_mean`]). Both are checked by
+//! `cargo xtask verify incline` (a layer on a rough incline against the Bagnold profile, and
+//! at rest below μ_s).
 //!
 //! **Regularisation.** At γ̇ → 0 the viscosity is capped at μ(0) P/γ̇_min. A layer loaded to
 //! a fraction r < 1 of its static strength (τ = r μ_s P) then creeps at
@@ -30,6 +37,7 @@
 //! with μ_s = 0.38): 4e-5 of √(g h).
 
 use crate::friction::{FrictionParams, FrictionalStress, PrincetonConstants};
+use crate::stress::KineticJoin;
 
 /// Default strain-rate floor γ̇_min = 1e-3 s⁻¹ of the viscosity regularisation (module doc:
 /// creep below 1e-4 of √(g h) for laboratory columns).
@@ -115,6 +123,7 @@ impl MuIConstants {
             zeta: regularised,
             n: 0.0,
             inertial_number: inertial,
+            kinetic_join: KineticJoin::LargerOf,
         }
     }
 

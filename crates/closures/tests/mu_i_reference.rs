@@ -3,10 +3,12 @@
 //! `reference/generate_mu_i.py` writes the law μ(I), dμ/dI and the frictional stress from the
 //! equations of docs/model.md §2.4.4 in other algebraic forms (μ_s + Δμ/(I_0/I + 1); the shear
 //! rate from a velocity gradient; P_c written with εg), into `reference/mu_i_values.json`;
-//! every value is compared here at a relative tolerance of 1e-12.
+//! every value is compared here at a relative tolerance of 1e-12. The larger-of join of the
+//! kinetic and μ(I) viscosities (docs/model.md §2.4.4) against (μ_kin⁴ + μ_fric⁴)^(1/4)
+//! written as the larger times (1 + q⁴)^(1/4) with q⁴ in exact fractions.
 
 use runout_closures::friction::FrictionParams;
-use runout_closures::MuIConstants;
+use runout_closures::{KineticJoin, MuIConstants};
 use serde_json::Value;
 
 const REL_TOL: f64 = 1e-12;
@@ -71,4 +73,24 @@ fn mu_i_matches_the_independent_reference() {
             num(row, "inertial_number"),
         );
     }
+}
+
+#[test]
+fn the_larger_of_join_matches_the_independent_reference() {
+    let v: Value = serde_json::from_str(include_str!("reference/mu_i_values.json")).unwrap();
+    let rows = v["join"].as_array().unwrap();
+    assert_eq!(rows.len(), 36);
+    for row in rows {
+        let (mu_kin, mu_fric) = (num(row, "mu_kin"), num(row, "mu_fric"));
+        let joined = KineticJoin::LargerOf.viscosity(mu_kin, mu_fric);
+        assert_rel(
+            &format!("join({mu_kin}, {mu_fric})"),
+            joined,
+            num(row, "mu_s"),
+        );
+        let w = KineticJoin::LargerOf.weight(mu_kin, mu_fric);
+        assert!((0.0..=1.0).contains(&w), "w = {w}");
+    }
+    // MFIX's sum is the sum, bit for bit
+    assert_eq!(KineticJoin::Sum.viscosity(0.3, 0.7), 0.3 + 0.7);
 }

@@ -22,6 +22,7 @@
 //! ([`PhaseFields::explicit_source`], computed by [`crate::stress`]); the interphase drag is
 //! added by the partial elimination of the two-fluid model.
 
+use runout_closures::FaceMean;
 use runout_linsolve::{RowMut, Stencil5};
 use runout_mesh::{Grid, Sides};
 use runout_walls::RobinFace;
@@ -41,6 +42,8 @@ pub struct PhaseFields<'a> {
     pub volume_fraction: &'a [f64],
     /// dynamic viscosity [Pa s]
     pub viscosity: &'a [f64],
+    /// how `viscosity` is averaged to the corners (harmonic but for μ(I), [`FaceMean`])
+    pub viscosity_mean: FaceMean,
     /// the solids pressure P_s of a solids phase [Pa]; `None` for the gas
     pub solids_pressure: Option<&'a [f64]>,
     /// the Schaeffer plastic pressure P* of a solids phase [Pa], its own gradient −∇P*
@@ -114,6 +117,15 @@ pub fn cv_width(widths: &[f64], i: usize) -> f64 {
 /// Harmonic mean with MFIX's guard against a zero denominator (docs/model.md §4.1, AVG_X_H).
 pub(crate) fn harmonic(a: f64, b: f64, weight_a: f64) -> f64 {
     a * b / (weight_a * a + (1.0 - weight_a) * b).max(1e-15)
+}
+
+/// The mean of two cell values at the face between them, `weight_a` the distance weight of
+/// `a`: [`harmonic`] or arithmetic (docs/model.md §4.1, §2.4.4).
+pub(crate) fn face_mean(mean: FaceMean, a: f64, b: f64, weight_a: f64) -> f64 {
+    match mean {
+        FaceMean::Harmonic => harmonic(a, b, weight_a),
+        FaceMean::Arithmetic => weight_a * a + (1.0 - weight_a) * b,
+    }
 }
 
 /// Distance-weighted interpolation of a cell field to x-face i (1 ≤ i < nx; AVG_X).
@@ -469,16 +481,19 @@ fn u_faces(ctx: &Context<'_>, phase: &PhaseFields<'_>, fluxes: &MassFluxes, face
                 .flatten()
                 .map(|c| 0.5 * y_face_flux(c, j))
                 .sum();
-            // viscosity at the corner: harmonic in y per column, then in x (AVG_X_H of AVG_Y_H)
+            // viscosity at the corner: harmonic (μ(I): arithmetic) in y per column, then in
+            // x (AVG_X_H of AVG_Y_H)
+            let mean = phase.viscosity_mean;
             let column = |c: usize| {
-                harmonic(
+                face_mean(
+                    mean,
                     mu[c + nx * (j - 1)],
                     mu[c + nx * j],
                     grid.y.interpolation_weight(j - 1),
                 )
             };
             let mu_corner = match (west, east) {
-                (Some(w), Some(e)) => harmonic(column(w), column(e), x_weight(w, e)),
+                (Some(w), Some(e)) => face_mean(mean, column(w), column(e), x_weight(w, e)),
                 (Some(c), None) | (None, Some(c)) => column(c),
                 (None, None) => 0.0,
             };
@@ -612,15 +627,19 @@ fn v_faces(ctx: &Context<'_>, phase: &PhaseFields<'_>, fluxes: &MassFluxes, face
                 .flatten()
                 .map(|r| 0.5 * x_face_flux(i, r))
                 .sum();
+            let mean = phase.viscosity_mean;
             let row = |r: usize| {
-                harmonic(
+                face_mean(
+                    mean,
                     mu[i - 1 + nx * r],
                     mu[i + nx * r],
                     grid.x.interpolation_weight(i - 1),
                 )
             };
             let mu_corner = match (south, north) {
-                (Some(s), Some(n)) => harmonic(row(s), row(n), grid.y.interpolation_weight(s)),
+                (Some(s), Some(n)) => {
+                    face_mean(mean, row(s), row(n), grid.y.interpolation_weight(s))
+                }
                 (Some(r), None) | (None, Some(r)) => row(r),
                 (None, None) => 0.0,
             };
@@ -723,5 +742,28 @@ fn v_sources(ctx: &Context<'_>, phase: &PhaseFields<'_>, v_old: &[f64], a: &mut 
                 a.b[k] += tau[k];
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The corner means of a Coulomb viscosity beside a free surface (docs/model.md §2.4.4):
+    /// with cell strengths 1 and q, the harmonic mean is 4q/(1 + q)² of the arithmetic one.
+    #[test]
+    fn face_means_weight_as_stated() {
+        let (a, b) = (1.0, 0.1);
+        let arithmetic = face_mean(FaceMean::Arithmetic, a, b, 0.5);
+        let harmonic_mean = face_mean(FaceMean::Harmonic, a, b, 0.5);
+        assert!((arithmetic - 0.55).abs() < 1e-15);
+        assert!((harmonic_mean - 2.0 * a * b / (a + b)).abs() < 1e-15);
+        assert!((harmonic_mean / arithmetic - 4.0 * b / (1.0 + b).powi(2)).abs() < 1e-15);
+        // distance weights: the nearer cell counts more
+        assert!((face_mean(FaceMean::Arithmetic, a, b, 0.75) - 0.775).abs() < 1e-15);
+        assert_eq!(
+            face_mean(FaceMean::Harmonic, 0.3, 0.7, 0.25),
+            harmonic(0.3, 0.7, 0.25)
+        );
     }
 }

@@ -11,6 +11,7 @@
 //! centre to its ghost (the first cell's width, §3.1). An outlet holds the pressure on its
 //! face and has zero normal gradient of both velocity components.
 
+use runout_closures::FaceMean;
 use runout_linsolve::{build, LinSolveError, LinearSolver, LinearSolverKind, Pattern, Stencil5};
 use runout_mesh::{Grid, Sides};
 use runout_walls::RobinFace;
@@ -423,6 +424,7 @@ impl SinglePhase {
             bulk_density_old: &self.density_cells,
             volume_fraction: &self.ones,
             viscosity: &self.viscosity_cells,
+            viscosity_mean: FaceMean::Harmonic,
             solids_pressure: None,
             plastic_pressure: None,
             explicit_source: None,
@@ -479,6 +481,7 @@ impl SinglePhase {
             bulk_density_old: &self.density_cells,
             volume_fraction: &self.ones,
             viscosity: &self.viscosity_cells,
+            viscosity_mean: FaceMean::Harmonic,
             solids_pressure: None,
             plastic_pressure: None,
             explicit_source: None,

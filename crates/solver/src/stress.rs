@@ -19,15 +19,18 @@
 
 use runout_mesh::Grid;
 
-use crate::momentum::{cv_width, harmonic};
+use runout_closures::FaceMean;
 
-/// μ at the corner (x-face i, y-face j) from the (up to four) cells around it.
-fn corner_viscosity(grid: &Grid, mu: &[f64], i: usize, j: usize) -> f64 {
+use crate::momentum::{cv_width, face_mean};
+
+/// μ at the corner (x-face i, y-face j) from the (up to four) cells around it, by `mean`.
+fn corner_viscosity(grid: &Grid, mu: &[f64], mean: FaceMean, i: usize, j: usize) -> f64 {
     let (nx, ny) = (grid.nx(), grid.ny());
     let rows = [j.checked_sub(1), (j < ny).then_some(j)];
     let cols = [i.checked_sub(1), (i < nx).then_some(i)];
     let column = |c: usize| match (rows[0], rows[1]) {
-        (Some(s), Some(n)) => harmonic(
+        (Some(s), Some(n)) => face_mean(
+            mean,
             mu[c + nx * s],
             mu[c + nx * n],
             grid.y.interpolation_weight(s),
@@ -36,7 +39,7 @@ fn corner_viscosity(grid: &Grid, mu: &[f64], i: usize, j: usize) -> f64 {
         (None, None) => 0.0,
     };
     match (cols[0], cols[1]) {
-        (Some(w), Some(e)) => harmonic(column(w), column(e), grid.x.interpolation_weight(w)),
+        (Some(w), Some(e)) => face_mean(mean, column(w), column(e), grid.x.interpolation_weight(w)),
         (Some(c), None) | (None, Some(c)) => column(c),
         (None, None) => 0.0,
     }
@@ -54,6 +57,7 @@ pub fn explicit_stress(
     u: &[f64],
     v: &[f64],
     mu: &[f64],
+    mean: FaceMean,
     lambda: &[f64],
     tr_d: &[f64],
     fixed_u: &[bool],
@@ -89,7 +93,7 @@ pub fn explicit_stress(
             let normal = (normal_x(i, j) - normal_x(i - 1, j)) * dy[j];
             // corners at y-faces j (south) and j+1 (north); v on a wall face is zero, so
             // ∂v/∂x there is zero as well; on an outlet face v exists and is used
-            let shear_at = |jf: usize| corner_viscosity(grid, mu, i, jf) * dv_dx(i, jf);
+            let shear_at = |jf: usize| corner_viscosity(grid, mu, mean, i, jf) * dv_dx(i, jf);
             let shear = (shear_at(j + 1) - shear_at(j)) * cv_width(dx, i);
             tau_u[k] = normal + shear;
         }
@@ -103,7 +107,7 @@ pub fn explicit_stress(
             }
             let normal = (normal_y(i, j) - normal_y(i, j - 1)) * dx[i];
             // corners at x-faces i (west) and i+1 (east); u on a west/east wall is zero
-            let shear_at = |i_f: usize| corner_viscosity(grid, mu, i_f, j) * du_dy(i_f, j);
+            let shear_at = |i_f: usize| corner_viscosity(grid, mu, mean, i_f, j) * du_dy(i_f, j);
             let shear = (shear_at(i + 1) - shear_at(i)) * cv_width(dy, j);
             tau_v[k] = normal + shear;
         }

@@ -4,6 +4,7 @@
 //! with the interface on a cell face and harmonic face viscosities (docs/model.md §4.1) the
 //! discrete solution is exact up to round-off.
 
+use runout_closures::FaceMean;
 use runout_linsolve::{build, LinearSolverKind, Pattern, Stencil5};
 use runout_mesh::{Axis, Grid, Segment, Sides};
 use runout_solver::momentum::{assemble, Context, PhaseFields};
@@ -66,6 +67,7 @@ fn two_layer_couette_is_exact() {
         bulk_density_old: &ones,
         volume_fraction: &ones,
         viscosity: &viscosity,
+        viscosity_mean: FaceMean::Harmonic,
         solids_pressure: None,
         plastic_pressure: None,
         explicit_source: None,
@@ -209,6 +211,7 @@ impl Problem {
             bulk_density_old: rho_old,
             volume_fraction: eps,
             viscosity: mu,
+            viscosity_mean: FaceMean::Harmonic,
             solids_pressure: Some(p_s),
             plastic_pressure: Some(p_star),
             explicit_source: Some(&self.tau),

@@ -6,6 +6,7 @@
 // index loops mirror the grid formulas
 #![allow(clippy::needless_range_loop)]
 
+use runout_closures::FaceMean;
 use runout_mesh::{Axis, Grid, Segment};
 use runout_solver::momentum::cv_width;
 use runout_solver::stress::explicit_stress;
@@ -51,7 +52,17 @@ fn sources(g: &Grid, f: &Fields) -> (Vec<f64>, Vec<f64>) {
     let mut tau_u = vec![f64::NAN; (nx + 1) * ny];
     let mut tau_v = vec![f64::NAN; nx * (ny + 1)];
     explicit_stress(
-        g, &f.u, &f.v, &f.mu, &f.lambda, &f.tr_d, &fixed_u, &fixed_v, &mut tau_u, &mut tau_v,
+        g,
+        &f.u,
+        &f.v,
+        &f.mu,
+        FaceMean::Harmonic,
+        &f.lambda,
+        &f.tr_d,
+        &fixed_u,
+        &fixed_v,
+        &mut tau_u,
+        &mut tau_v,
     );
     (tau_u, tau_v)
 }

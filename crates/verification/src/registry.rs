@@ -7,6 +7,7 @@
 //! | `poiseuille` | partial-slip channel | closed form |
 //! | `taylor-green` | decaying vortex, mass of every step | closed form |
 //! | `chute` | steady chute on a periodic column | the 1-D chute solver |
+//! | `incline` | μ(I) on a rough incline, flowing and at rest | Bagnold profile, creep closed form |
 //! | `haff` | energy equation in a box at rest | Haff (1983) |
 //! | `cooling` | cooling through the two-fluid step | Haff with viscous damping |
 //! | `settling` | settling column | the bed's weight |
@@ -26,7 +27,7 @@
 
 use crate::check::Check;
 use crate::checks::{
-    Cavity, Chute, Cooling, FluidizedBed, Haff, Poiseuille, SJjPhi, Settling, TaylorGreen,
+    Cavity, Chute, Cooling, FluidizedBed, Haff, Incline, Poiseuille, SJjPhi, Settling, TaylorGreen,
 };
 
 /// Every check, in the order `cargo xtask verify all` runs them.
@@ -36,6 +37,7 @@ pub fn registry() -> Vec<Box<dyn Check>> {
         Box::new(Poiseuille),
         Box::new(TaylorGreen),
         Box::new(Chute),
+        Box::new(Incline),
         Box::new(Haff),
         Box::new(Cooling),
         Box::new(Settling),

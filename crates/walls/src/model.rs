@@ -22,7 +22,7 @@ use crate::state::{wall_theta, MomentumWallState, ThetaWallState, WALL_S_DDOT_S_
 use runout_closures::drag::{dga_wall_wen_yu, DragInputs};
 use runout_closures::guards::DIL_EP_S;
 use runout_closures::kinetic::{lun_1984, GasCoupling, KineticStress, SolidsState};
-use runout_closures::ClosureParams;
+use runout_closures::{ClosureParams, KineticJoin};
 use serde::Serialize;
 
 /// Particle–wall contact parameters shared by the Johnson–Jackson and Jenkins models.
@@ -540,6 +540,7 @@ fn kinetic_momentum(
             diagnostics.mu_fric = stress.mu_fric;
             diagnostics.p_fric = stress.p_fric;
             diagnostics.zeta = stress.zeta;
+            diagnostics.kinetic_join = stress.kinetic_join;
         }
         // ζ is only evaluated (and > 0 by the closures' θ floor) when friction is; MFIX's
         // "ζ = 0" test cannot fire then
@@ -548,10 +549,7 @@ fn kinetic_momentum(
             0.0
         } else {
             diagnostics.branch = MomentumBranch::KineticFrictional;
-            ratio_or_zero(
-                diagnostics.col + diagnostics.fri,
-                kinetic.mu_kin + diagnostics.mu_fric,
-            )
+            ratio_or_zero(diagnostics.col + diagnostics.fri, diagnostics.viscosity())
         }
     } else {
         diagnostics.branch = MomentumBranch::Kinetic;
@@ -593,7 +591,7 @@ pub enum MomentumBranch {
     DiluteFreeSlip,
     /// h = COL/μ_k (no Princeton friction, or fluid-cell εs ≤ εs,min)
     Kinetic,
-    /// h = (COL + FRI)/(μ_k + μ_f)
+    /// h = (COL + FRI)/μ_s, μ_s the joined viscosity (μ_k + μ_f but for μ(I))
     KineticFrictional,
     /// frictional branch at zero slip: h = 0 (docs/model.md §3.5 step 4)
     ZeroSlip,
@@ -628,6 +626,16 @@ pub struct MomentumDiagnostics {
     pub p_fric: f64,
     /// Princeton strain scale ζ [1/s] (0 if friction was not evaluated)
     pub zeta: f64,
+    /// how μ_k joins μ_f in the viscosity h divides by (the frictional model's)
+    pub kinetic_join: KineticJoin,
+}
+
+impl MomentumDiagnostics {
+    /// The solids viscosity the wall stress is expressed with, μ_k + μ_f (the μ(I) law's
+    /// larger-of join, docs/model.md §2.4.4) [Pa s].
+    pub fn viscosity(&self) -> f64 {
+        self.kinetic_join.viscosity(self.mu_kin, self.mu_fric)
+    }
 }
 
 /// A momentum wall condition: the face closure and its diagnostics.

@@ -264,7 +264,7 @@ fn branch_rules() {
     let m = jj.momentum(&dense, &p);
     assert_eq!(m.diagnostics.branch, MomentumBranch::KineticFrictional);
     let d = m.diagnostics;
-    assert!((d.h_u - (d.col + d.fri) / (d.mu_kin + d.mu_fric)).abs() < 1e-12 * d.h_u);
+    assert!((d.h_u - (d.col + d.fri) / d.viscosity()).abs() < 1e-12 * d.h_u);
     // c = h U_w, g = 1
     assert_eq!((m.face.g, m.face.c), (1.0, d.h_u * 2.0));
     // FRI = tan δ_w P_f at S_nn = 0; P_f = 1600 Pa at εs = 0.6, tr D = 0 (docs/model.md §2.4.2)

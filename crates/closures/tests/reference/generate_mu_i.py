@@ -75,6 +75,17 @@ def stress(es, grad, p_kin):
                 inertial_number=i)
 
 
+def joined_viscosity(mu_kin, mu_fric):
+    """The larger-of join (mu_kin^4 + mu_fric^4)^(1/4), written as the larger times
+    (1 + (smaller/larger)^4)^(1/4) with Fraction arithmetic for the fourth powers."""
+    from fractions import Fraction
+    big, small = max(mu_kin, mu_fric), min(mu_kin, mu_fric)
+    if big == 0.0:
+        return 0.0
+    q4 = (Fraction(small) / Fraction(big)) ** 4
+    return big * float(1 + q4) ** 0.25
+
+
 def main():
     out = dict(parameters=dict(d_p=D_P, rho_s=RHO_S, eps_s_max=EPS_MAX, eps_s_min=EPS_MIN,
                                mu_s=MU_S, mu_2=MU_2, i_0=I_0, shear_rate_floor=FLOOR))
@@ -89,6 +100,9 @@ def main():
                            **stress(es, grad, p_kin))
                 rows.append(row)
     out["stress"] = rows
+    out["join"] = [dict(mu_kin=k, mu_fric=f, mu_s=joined_viscosity(k, f))
+                   for k in [0.0, 1e-9, 0.003, 0.09, 1.0, 4.2]
+                   for f in [0.0, 1e-12, 0.05, 0.09, 1.46, 1e4]]
     here = os.path.dirname(os.path.abspath(__file__))
     with open(os.path.join(here, "mu_i_values.json"), "w") as f:
         json.dump(out, f, indent=1)

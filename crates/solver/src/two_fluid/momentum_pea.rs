@@ -17,6 +17,7 @@
 
 use std::time::Instant;
 
+use runout_closures::FaceMean;
 use runout_linsolve::{LinearSolver, Stencil5};
 use runout_mesh::{Grid, Sides};
 
@@ -109,6 +110,7 @@ fn assemble_momentum(
         bulk_density_old: &g.old().rho_eps,
         volume_fraction: g.eps(),
         viscosity: &model.gas_viscosity,
+        viscosity_mean: FaceMean::Harmonic,
         solids_pressure: None,
         plastic_pressure: None,
         // the gas's own cross terms are left out: with uniform μ_g they reduce to
@@ -237,16 +239,18 @@ pub(super) fn update_stress_sources(
     grid: &Grid,
     state: &State,
     coefficients: &mut [PhaseCoefficients],
+    specs: &[SolidsSpec],
     work: &Workspace,
 ) {
     let fixed_u = work.a_ug.pattern().fixed_mask();
     let fixed_v = work.a_vg.pattern().fixed_mask();
-    for (s, p) in coefficients.iter_mut().zip(state.phases()) {
+    for ((s, p), spec) in coefficients.iter_mut().zip(state.phases()).zip(specs) {
         crate::stress::explicit_stress(
             grid,
             &p.u,
             &p.v,
             &s.mu,
+            spec.params.friction_model.corner_viscosity_mean(),
             &s.lambda,
             &s.tr_d,
             fixed_u,
@@ -307,6 +311,7 @@ fn assemble_phase(
         bulk_density_old: &p.old().rho_eps,
         volume_fraction: p.eps(),
         viscosity: &coef.mu,
+        viscosity_mean: spec.params.friction_model.corner_viscosity_mean(),
         solids_pressure: Some(&coef.p_s),
         // −∇P* only with Schaeffer (docs/model.md §4.4); none with Princeton, where
         // MFIX never computes P* (§2.4.2)

@@ -60,7 +60,7 @@ impl ChuteSidewalls {
                     params,
                 );
                 let d = wall.diagnostics;
-                d.h_u * (d.mu_kin + d.mu_fric) * u
+                d.h_u * d.viscosity() * u
             }
         };
         let face = self

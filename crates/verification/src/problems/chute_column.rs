@@ -59,6 +59,20 @@ pub struct ChuteCheckSetup {
     pub dt_max: f64,
     /// print progress to stderr
     pub verbose: bool,
+    /// the dry material and closures of both solvers (the 2-D column adds the negligible gas)
+    pub closures: ClosureParams,
+    /// the 2-D column's starting u_s and u_g \[m/s\]
+    pub initial_velocity: f64,
+    /// the starting εs of each cell (its holdup should be the setup's); none: εs = holdup/H
+    /// in the whole strip
+    pub initial_eps_s: Option<Vec<f64>>,
+    /// the starting u_s of each row (the gas starts at `initial_velocity`); none: all
+    /// `initial_velocity`
+    pub initial_u_s: Option<Vec<f64>>,
+    /// the 2-D column's starting θ \[m²/s²\]
+    pub initial_theta: f64,
+    /// the 1-D reference's iteration controls and starting point
+    pub reference_settings: SolverSettings,
 }
 
 impl Default for ChuteCheckSetup {
@@ -78,6 +92,12 @@ impl Default for ChuteCheckSetup {
             steady_rate: 1e-4,
             dt_max: 2e-2,
             verbose: false,
+            closures: dry_closures(),
+            initial_velocity: 0.3,
+            initial_eps_s: None,
+            initial_u_s: None,
+            initial_theta: 1e-3,
+            reference_settings: SolverSettings::default(),
         }
     }
 }
@@ -169,7 +189,7 @@ fn relative_error(values: &[f64], reference: &[f64]) -> f64 {
 const GRAVITY: f64 = 9.81;
 
 /// The paper's material, dry (the 1-D reference's closures).
-fn dry_closures() -> ClosureParams {
+pub fn dry_closures() -> ClosureParams {
     ClosureParams {
         gas: Gas {
             density: 0.0,
@@ -185,7 +205,7 @@ pub fn reference(setup: &ChuteCheckSetup) -> Result<ChuteProfile, ChuteCheckErro
         .map_err(|e| ChuteCheckError::Column(e.to_string()))?;
     Ok(chute1d::solve(
         &ChuteParams {
-            closures: dry_closures(),
+            closures: setup.closures,
             slope_deg: setup.slope_deg,
             gravity: GRAVITY,
             holdup: setup.holdup,
@@ -194,16 +214,45 @@ pub fn reference(setup: &ChuteCheckSetup) -> Result<ChuteProfile, ChuteCheckErro
             wall_treatment: WallTreatment::FluidCell,
             sidewalls: setup.sidewalls,
         },
-        &SolverSettings::default(),
+        &setup.reference_settings,
     )?)
 }
 
-/// Runs the 1-D reference and the 2-D column and compares them.
-pub fn run(setup: &ChuteCheckSetup) -> Result<ChuteCheck, ChuteCheckError> {
-    let reference = reference(setup)?;
+/// The 2-D column marched to its steady state (or its end time).
+#[derive(Clone, Debug)]
+pub struct SteadyColumn {
+    /// cell-centre heights \[m\]
+    pub y: Vec<f64>,
+    /// εs [-]
+    pub eps_s: Vec<f64>,
+    /// u_s at the cell centres' height (the row's u-node) [m/s]
+    pub u_s: Vec<f64>,
+    /// θ [m²/s²]
+    pub theta: Vec<f64>,
+    /// simulated time reached \[s\]
+    pub time: f64,
+    /// accepted steps
+    pub steps: usize,
+    /// steps retried with half the time step
+    pub rejected: usize,
+    /// the largest relative rate of change at the end [s⁻¹]
+    pub final_rate: f64,
+    /// whether `final_rate` fell below the setup's `steady_rate`
+    pub steady: bool,
+    /// relative change of the solids mass over the run
+    pub mass_change: f64,
+    /// largest |F_gs (u_g − u_s)| relative to εs ρs g sin α over the cells
+    pub drag_to_weight: f64,
+    /// wall time of the march \[s\]
+    pub wall_time: f64,
+}
+
+/// Marches the 2-D column of `setup` to its steady state.
+pub fn steady_column(setup: &ChuteCheckSetup) -> Result<SteadyColumn, ChuteCheckError> {
     let axis = Axis::uniform(0.0, setup.height, setup.cells)
         .map_err(|e| ChuteCheckError::Column(e.to_string()))?;
-    let (dry, g) = (dry_closures(), GRAVITY);
+    let y = axis.centres().to_vec();
+    let (dry, g) = (setup.closures, GRAVITY);
     let ny = setup.cells;
     let mut tf = column(setup, axis, dry, g)?;
     let rho_s = tf.solids_density(0);
@@ -227,18 +276,8 @@ pub fn run(setup: &ChuteCheckSetup) -> Result<ChuteCheck, ChuteCheckError> {
                 drag_to_weight.max((tf.drag(0)[j] * (tf.u_g()[2 * j] - u_s[j])).abs() / weight);
         }
     }
-    let theta_pointwise_error = s
-        .theta
-        .iter()
-        .zip(&reference.theta)
-        .map(|(a, b)| (a / b - 1.0).abs())
-        .fold(0.0, f64::max);
-    Ok(ChuteCheck {
-        eps_error: relative_error(s.eps(), &reference.eps_s),
-        velocity_error: relative_error(&u_s, &reference.u_s),
-        theta_error: relative_error(&s.theta, &reference.theta),
-        theta_pointwise_error,
-        y: reference.y.clone(),
+    Ok(SteadyColumn {
+        y,
         eps_s: s.eps().to_vec(),
         theta: s.theta.clone(),
         u_s,
@@ -249,16 +288,46 @@ pub fn run(setup: &ChuteCheckSetup) -> Result<ChuteCheck, ChuteCheckError> {
         steady: rate < setup.steady_rate,
         mass_change: tf.solids_mass(0) / mass0 - 1.0,
         drag_to_weight,
-        buoyancy: setup.gas_density / rho_s,
         wall_time,
+    })
+}
+
+/// Runs the 1-D reference and the 2-D column and compares them.
+pub fn run(setup: &ChuteCheckSetup) -> Result<ChuteCheck, ChuteCheckError> {
+    let reference = reference(setup)?;
+    let column = steady_column(setup)?;
+    let theta_pointwise_error = column
+        .theta
+        .iter()
+        .zip(&reference.theta)
+        .map(|(a, b)| (a / b - 1.0).abs())
+        .fold(0.0, f64::max);
+    Ok(ChuteCheck {
+        eps_error: relative_error(&column.eps_s, &reference.eps_s),
+        velocity_error: relative_error(&column.u_s, &reference.u_s),
+        theta_error: relative_error(&column.theta, &reference.theta),
+        theta_pointwise_error,
+        y: reference.y.clone(),
+        eps_s: column.eps_s,
+        theta: column.theta,
+        u_s: column.u_s,
+        time: column.time,
+        steps: column.steps,
+        rejected: column.rejected,
+        final_rate: column.final_rate,
+        steady: column.steady,
+        mass_change: column.mass_change,
+        drag_to_weight: column.drag_to_weight,
+        buoyancy: setup.gas_density / setup.closures.particles.density,
+        wall_time: column.wall_time,
         reference,
     })
 }
 
 /// The 2-D column of the check on the 1-D reference's y grid `axis`: one cell across (its
 /// width drops out), periodic in x, dry closures `dry` with the setup's gas, gravity `g`
-/// along the slope; started at uniform εs = holdup/H, gas and solids sliding at 0.3 m/s,
-/// θ = 1e-3 m²/s².
+/// along the slope; started at uniform εs = holdup/H, gas and solids sliding at the setup's
+/// initial velocity and θ (defaults 0.3 m/s, 1e-3 m²/s²).
 fn column(
     setup: &ChuteCheckSetup,
     axis: Axis,
@@ -314,15 +383,26 @@ fn column(
         solids: w.solids,
         gas_no_slip: false,
     }));
-    // start: uniform εs = holdup/H, gas and solids sliding at 0.3 m/s, θ = 1e-3 m²/s²
+    // start: the given εs or a uniform one, gas and solids sliding together
     let eps0 = setup.holdup / setup.height;
+    let (u0, theta0) = (setup.initial_velocity, setup.initial_theta);
     let state = tf.state_mut();
     state.update_solids(0, |s| {
-        s.eps.iter_mut().for_each(|e| *e = eps0);
-        s.theta.iter_mut().for_each(|t| *t = 1e-3);
-        s.u.iter_mut().for_each(|u| *u = 0.3);
+        match &setup.initial_eps_s {
+            Some(profile) => s.eps.copy_from_slice(profile),
+            None => s.eps.iter_mut().for_each(|e| *e = eps0),
+        }
+        s.theta.iter_mut().for_each(|t| *t = theta0);
+        s.u.iter_mut().for_each(|u| *u = u0);
+        if let Some(rows) = &setup.initial_u_s {
+            // u-nodes row by row: nx + 1 per row
+            let per_row = s.u.len() / rows.len();
+            for (k, u) in s.u.iter_mut().enumerate() {
+                *u = rows[k / per_row];
+            }
+        }
     });
-    state.gas_mut().u.iter_mut().for_each(|u| *u = 0.3);
+    state.gas_mut().u.iter_mut().for_each(|u| *u = u0);
     Ok(tf)
 }
 

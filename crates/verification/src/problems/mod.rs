@@ -25,6 +25,11 @@
 //! - [`settling_column`]: a suspension settling into a packed bed that carries its weight;
 //! - [`fluidized_bed`]: a bed hanging on the gas pressure drop;
 //! - [`s_jj_phi`]: the paper's slide with a Johnson–Jackson floor through the driver.
+//!
+//! Where a flow stops (issue 43):
+//!
+//! - [`incline`]: the μ(I) law on a rough incline, flowing against the Bagnold profile and
+//!   at rest below μ_s against the creep of its regularisation.
 
 use std::f64::consts::PI;
 use std::time::Instant;
@@ -83,6 +88,7 @@ pub mod chute_column;
 pub mod cooling_box;
 pub mod fluidized_bed;
 pub mod haff_energy;
+pub mod incline;
 mod lid_driven;
 pub mod paper_material;
 pub mod s_jj_phi;
