@@ -11,8 +11,9 @@
 //! Discretisation on a u control volume (x-face i, row j): the normal part as the difference
 //! of (μ ∂u/∂x + λ tr D) between the cell centres i and i−1, times the face height; the shear
 //! part as the difference of μ ∂v/∂x between the corners (i, j+1) and (i, j), times the
-//! control-volume width, with μ at a corner the harmonic mean of the four cells around it
-//! (the same as the implicit shear conductance, docs/model.md §4.1). On a wall the tangential
+//! control-volume width, with μ at a corner the mean the caller names (the two-fluid step:
+//! harmonic, MFIX's, as the implicit shear conductance but for μ(I), whose implicit corner is
+//! arithmetic; docs/model.md §4.1, §2.4.4). On a wall the tangential
 //! derivative of the normal velocity is zero (v = 0 along a floor), so the corner term
 //! vanishes there; on an outlet the corner values of the fluid row are used. The v equation
 //! is the mirror image.

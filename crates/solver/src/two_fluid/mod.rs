@@ -545,7 +545,6 @@ impl TwoFluid {
             &self.model.grid,
             &self.state,
             &mut self.coefficients,
-            &self.model.solids_specs,
             &self.workspace,
         );
         self.diagnostics.profile.stress += since(t);

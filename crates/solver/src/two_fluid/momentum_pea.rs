@@ -239,18 +239,20 @@ pub(super) fn update_stress_sources(
     grid: &Grid,
     state: &State,
     coefficients: &mut [PhaseCoefficients],
-    specs: &[SolidsSpec],
     work: &Workspace,
 ) {
     let fixed_u = work.a_ug.pattern().fixed_mask();
     let fixed_v = work.a_vg.pattern().fixed_mask();
-    for ((s, p), spec) in coefficients.iter_mut().zip(state.phases()).zip(specs) {
+    for (s, p) in coefficients.iter_mut().zip(state.phases()) {
         crate::stress::explicit_stress(
             grid,
             &p.u,
             &p.v,
             &s.mu,
-            spec.params.friction_model.corner_viscosity_mean(),
+            // harmonic for every phase, μ(I) included: these terms are lagged over the step,
+            // and an arithmetic corner beside a dilute cell would carry half a plastic
+            // viscosity onto a cell with little mass (docs/model.md §2.4.4)
+            FaceMean::Harmonic,
             &s.lambda,
             &s.tr_d,
             fixed_u,
