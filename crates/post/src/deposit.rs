@@ -9,6 +9,11 @@
 //! - **distal edge** at a threshold εs*: the east face of the easternmost floor cell with
 //!   εs ≥ εs* in the last field file (εs* = 0.01, the bulk front's, and 0.3, the dense
 //!   deposit's);
+//! - **grain edge**: the east face of the easternmost column whose solids height Σ εs Δy is
+//!   at least one grain diameter d (a layer about two grains deep at εs = 0.6): an edge
+//!   that does not depend on the cell height, unlike a threshold on the cells' εs (a cell
+//!   with εs = 0.01 holds 0.1 d of grains in a 5 mm cell of 0.5 mm grains, half that in a
+//!   2.5 mm one);
 //! - **L∞** (the runout): the distal edge minus the east edge of the release (the largest
 //!   x1 of the initial blocks holding solids);
 //! - **thickness** of a column: the top face of its highest cell with εs ≥ εs*; **H∞**:
@@ -27,6 +32,8 @@ use crate::table::Table;
 pub const DILUTE_EPS_S: f64 = 0.01;
 /// εs of the dense deposit.
 pub const DENSE_EPS_S: f64 = 0.3;
+/// Solids height Σ εs Δy of the grain edge, in grain diameters.
+pub const GRAIN_EDGE_DIAMETERS: f64 = 1.0;
 /// Default v_rest as a fraction of √(g H∞).
 pub const DEFAULT_REST_FRACTION: f64 = 0.01;
 
@@ -51,6 +58,10 @@ pub struct Deposit {
     pub distal_edge_dense: f64,
     /// L∞ at εs ≥ 0.01: distal edge − release edge [m]
     pub runout_dilute: f64,
+    /// distal edge where the solids height reaches [`GRAIN_EDGE_DIAMETERS`] grains [m]
+    pub distal_edge_grain: f64,
+    /// L∞ at the grain edge [m]
+    pub runout_grain: f64,
     /// L∞ at εs ≥ 0.3 [m]
     pub runout_dense: f64,
     /// H∞: largest thickness at εs ≥ 0.3 [m]
@@ -102,6 +113,8 @@ pub fn read_deposit(
     let floor = &eps[..xf.len() - 1];
     let distal_edge_dilute = distal_edge(floor, &xf, DILUTE_EPS_S);
     let distal_edge_dense = distal_edge(floor, &xf, DENSE_EPS_S);
+    let diameter = case.solids.first().map_or(0.0, |s| s.diameter);
+    let distal_edge_grain = grain_edge(&profile, &xf, GRAIN_EDGE_DIAMETERS * diameter);
     Ok((
         Deposit {
             time,
@@ -114,6 +127,8 @@ pub fn read_deposit(
             distal_edge_dense,
             runout_dilute: distal_edge_dilute - release_edge_x,
             runout_dense: distal_edge_dense - release_edge_x,
+            distal_edge_grain,
+            runout_grain: distal_edge_grain - release_edge_x,
             max_thickness,
             max_thickness_x,
         },
@@ -153,8 +168,18 @@ pub fn distal_edge(floor_eps: &[f64], x_faces: &[f64], threshold: f64) -> f64 {
         .map_or(x_faces[0], |i| x_faces[i + 1])
 }
 
-/// Each column's thicknesses and solids height from row-major εs (floor row first).
-fn profile(eps: &[f64], xf: &[f64], yf: &[f64]) -> Vec<DepositColumn> {
+/// East face of the easternmost column whose solids height is at least `height` (the west
+/// face if none).
+pub fn grain_edge(profile: &[DepositColumn], x_faces: &[f64], height: f64) -> f64 {
+    profile
+        .iter()
+        .rposition(|c| c.solids_height >= height)
+        .map_or(x_faces[0], |i| x_faces[i + 1])
+}
+
+/// Each column's thicknesses and solids height from row-major εs (floor row first), on the
+/// grid with faces `xf`, `yf`.
+pub fn profile(eps: &[f64], xf: &[f64], yf: &[f64]) -> Vec<DepositColumn> {
     let (nx, ny) = (xf.len() - 1, yf.len() - 1);
     (0..nx)
         .map(|i| {
@@ -259,5 +284,9 @@ mod tests {
         assert!(
             profile_csv(&p).starts_with("x,thickness_dense,thickness_dilute,solids_height\n5e-1,")
         );
+        // the grain edge: the last column holding at least this solids height
+        assert_eq!(grain_edge(&p, &xf, 0.1), 2.0);
+        assert_eq!(grain_edge(&p, &xf, 0.5), 1.0);
+        assert_eq!(grain_edge(&p, &xf, 1.0), 0.0);
     }
 }

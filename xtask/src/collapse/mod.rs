@@ -151,14 +151,14 @@ fn columns(
     }
 }
 
-/// μ(I)'s thresholds: the runout (εs ≥ 0.01) within 25 % of Lajeunesse et al.'s (of the
-/// nearer end of its range where a lies in the crossover) and the deposit at rest by
-/// 10 √(H0/g).
+/// μ(I)'s thresholds: the runout to the grain edge (solids height ≥ one grain diameter,
+/// `runout_post::deposit`) within 25 % of Lajeunesse et al.'s (of the nearer end of its
+/// range where a lies in the crossover) and the deposit at rest by 10 √(H0/g).
 fn law_failures(outcomes: &[Outcome]) -> Vec<String> {
     let mut failures = Vec::new();
     for o in outcomes {
         let (lo, hi) = LAJEUNESSE.runout(o.column.aspect());
-        let r = o.front.runout;
+        let r = o.grain_runout;
         let off = if r < lo {
             (lo - r) / lo
         } else if r > hi {

@@ -20,25 +20,26 @@ fn yes_no(b: bool) -> &'static str {
 pub(super) fn markdown_table(outcomes: &[Outcome]) -> String {
     let mut s = String::new();
     s.push_str(
-        "| a | a as gridded | cells | (L∞ − L0)/L0, εs ≥ 0.01 | εs ≥ 0.3 | at t = 3√(H0/g) | \
-         Lajeunesse | Lube | front speed / √(gH0) | mean u_s / √(gH0) | stopped? | \
-         at rest from [√(H0/g)] | end wall reached? | solids mass change | steps (rejected) | \
-         wall time [s] |\n",
+        "| a | a as gridded | cells | (L∞ − L0)/L0, εs ≥ 0.01 | εs ≥ 0.3 | grain edge | \
+         at t = 3√(H0/g) | Lajeunesse | Lube | front speed / √(gH0) | mean u_s / √(gH0) | \
+         stopped? | at rest from [√(H0/g)] | end wall reached? | solids mass change | \
+         steps (rejected) | wall time [s] |\n",
     );
-    s.push_str("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    s.push_str("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for o in outcomes {
         let a = o.column.aspect();
         let f = &o.front;
         let lower = if f.reached_end_wall { "> " } else { "" };
         let _ = writeln!(
             s,
-            "| {a} | {:.2} | {} × {} | {lower}{:.2} | {:.2} | {} | {} | {} | {:.3} | {:.3} | {} | {} | \
-             {} | {:.1e} | {} ({}) | {:.1} |",
+            "| {a} | {:.2} | {} × {} | {lower}{:.2} | {:.2} | {:.2} | {} | {} | {} | {:.3} | {:.3} | \
+             {} | {} | {} | {:.1e} | {} ({}) | {:.1} |",
             o.a_gridded,
             o.cells.0,
             o.cells.1,
             f.runout,
             o.dense_runout,
+            o.grain_runout,
             f.runout_at_lab_stop
                 .map_or("(run shorter)".to_string(), |r| format!("{r:.2}")),
             LAJEUNESSE.label(a),
@@ -218,18 +219,24 @@ pub(super) fn document_mu_i(
         "**Set-up.** A column of half-width L0 = 0.05 m and height H0 = a L0 (εs = 0.6) of \
          glass beads (d = 0.53 mm, ρs = 2500 kg/m³, e = 0.9) with the μ(I) law of Jop, \
          Forterre & Pouliquen (2005) fitted for them (μ_s = tan 20.9°, μ_2 = tan 32.76°, \
-         I_0 = 0.279; docs/model.md §2.4.4: μ(I) on the total solids pressure P_kin + P_c), \
+         I_0 = 0.279; docs/model.md §2.4.4: μ(I) on the total solids pressure P_kin + P_c, the \
+         whole dense stress), \
          against a free-slip west wall on a no-slip floor, in air. Nothing is tuned.\n\n\
-         **Thresholds** (issue 43): (L∞ − L0)/L0 within 25 % of Lajeunesse et al. (2005) and \
-         the deposit at rest (εs-weighted mean u_s below 1 % of √(g H0) and a still front \
+         **Thresholds** (issue 43): (L∞ − L0)/L0 to the *grain edge* within 25 % of \
+         Lajeunesse et al. (2005) and the deposit at rest (εs-weighted mean u_s below 1 % of √(g H0) and a still front \
          from then on) by t = 10 √(H0/g), the runs' end.\n\n",
     );
     let _ = writeln!(s, "![runout against a]({figure})\n");
     s.push_str(table);
     s.push_str(
-        "\n**Columns** as in [collapse.md](collapse.md); *at rest from*: the earliest bulk \
-         sample from which the mean u_s stays below 1 % of √(g H0) and the front no longer \
-         moves, in √(H0/g).\n\n",
+        "\n**Columns** as in [collapse.md](collapse.md); *grain edge*: the runout to the \
+         easternmost column whose solids height Σ εs Δy is at least one grain diameter (a \
+         layer about two grains deep), from the last field file: the deposit's extent as a \
+         photograph of it shows, and an edge whose definition does not change with the cell \
+         height (a cell with εs = 0.01 holds 0.1 d of grains at L0/10, half that at L0/20; \
+         docs/deposit.md); it is the runout the thresholds judge; *at rest from*: the \
+         earliest bulk sample from which the mean u_s stays below 1 % of √(g H0) and the \
+         front no longer moves, in √(H0/g).\n\n",
     );
     laws_section(
         &mut s,
@@ -248,10 +255,11 @@ pub(super) fn document_mu_i(
         let (lo, hi) = LAJEUNESSE.runout(o.column.aspect());
         let _ = writeln!(
             s,
-            "- {} (a = {}): runout {}{:.2} (εs ≥ 0.01) and {:.2} (εs ≥ 0.3) against \
-             Lajeunesse's {}; {}.",
+            "- {} (a = {}): runout {:.2} to the grain edge, {}{:.2} (εs ≥ 0.01) and {:.2} \
+             (εs ≥ 0.3) against Lajeunesse's {}; {}.",
             o.name,
             o.column.aspect(),
+            o.grain_runout,
             if f.reached_end_wall { "> " } else { "" },
             f.runout,
             o.dense_runout,

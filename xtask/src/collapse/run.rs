@@ -13,7 +13,7 @@ use runout_run::store::{self, finished_run, Request, Reuse, Stored};
 use super::column::Column;
 use super::fields::{last_fields, median};
 use super::front::{front_metrics, read_bulk, FrontMetrics};
-use runout_post::deposit::{distal_edge, DENSE_EPS_S};
+use runout_post::deposit::{distal_edge, grain_edge, profile, DENSE_EPS_S, GRAIN_EDGE_DIAMETERS};
 
 /// One collapse run and what it says.
 pub(super) struct Outcome {
@@ -25,6 +25,9 @@ pub(super) struct Outcome {
     pub(super) front: FrontMetrics,
     /// runout of the dense deposit (floor εs ≥ 0.3) in the last field file
     pub(super) dense_runout: f64,
+    /// runout to the grain edge (solids height Σ εs Δy ≥ d, `runout_post::deposit`) in the
+    /// last field file: the check's runout
+    pub(super) grain_runout: f64,
     /// median θ of the cells with εs ≥ εs,min at the end [m² s⁻²]
     pub(super) deposit_theta: f64,
     /// largest θ of the dilute fringe (10⁻⁴ ≤ εs < 10⁻²) at the end [m² s⁻²]
@@ -107,8 +110,15 @@ pub(super) fn run_one(
         .filter(|(&e, _)| (1e-4..1e-2).contains(&e))
         .map(|(_, &t)| t)
         .fold(0.0, f64::max);
+    let deposit = profile(&eps, grid.x.faces(), grid.y.faces());
+    let grain_runout = column.runout(grain_edge(
+        &deposit,
+        grid.x.faces(),
+        GRAIN_EDGE_DIAMETERS * solids.diameter,
+    ));
     Ok(Outcome {
         name: case.name.clone(),
+        grain_runout,
         column,
         a_gridded,
         cells: (grid.nx(), grid.ny()),
