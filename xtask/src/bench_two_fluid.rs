@@ -280,9 +280,11 @@ fn paper_window(root: &Path, opts: &Options, rows: &mut Vec<Row>) -> Result<()> 
     // the window's case: its checkpoint at `after` and the window both run it
     case.run.end_time = after + span;
     let start = root.join(format!("runs/bench/S-JJ-phi-{}-t{after}", fidelity.name()));
+    // kept from an earlier call, if interrupted there and written by this version
     let has_checkpoint = start.join("summary.json").exists()
         && std::fs::read_to_string(start.join("summary.json"))
-            .is_ok_and(|s| s.contains("\"Interrupted\""));
+            .is_ok_and(|s| s.contains("\"Interrupted\""))
+        && runout_run::checkpoint::of_this_version(&start);
     if !has_checkpoint {
         eprintln!(
             "bench: S-JJ-phi to t = {after} s at {fidelity} (once; kept in {})",

@@ -241,3 +241,14 @@ fn same_but_end_time(saved: &str, now: &str) -> bool {
 pub fn exists(run_dir: &Path) -> bool {
     listing(run_dir).is_ok_and(|l| !l.is_empty())
 }
+
+/// Whether the newest readable checkpoint of `run_dir` was written by this runout's version
+/// (false without one): a kept checkpoint another version wrote cannot be continued.
+pub fn of_this_version(run_dir: &Path) -> bool {
+    listing(run_dir).is_ok_and(|files| {
+        files
+            .iter()
+            .find_map(|path| read(path).ok())
+            .is_some_and(|c| c.solver_version == SOLVER_VERSION)
+    })
+}

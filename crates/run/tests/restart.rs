@@ -194,11 +194,15 @@ fn checkpoints_of_another_version_are_refused_and_damaged_ones_skipped() {
         .windows(version.len())
         .position(|w| w == version)
         .expect("the version is stored");
+    assert!(checkpoint::of_this_version(&dir));
     let mut other = original.clone();
     other[at..at + version.len()].copy_from_slice(&b"9.9.99999"[..version.len()]);
     std::fs::write(&newest, &other).unwrap();
     let err = restart(&dir).unwrap_err().to_string();
     assert!(err.contains("written by runout 9.9"), "{err}");
+    // the bench's test of a kept checkpoint (xtask bench two-fluid): not this version
+    assert!(!checkpoint::of_this_version(&dir));
+    assert!(!checkpoint::of_this_version(&dir.join("no such run")));
     // another format version
     let mut other = original.clone();
     other[16] = other[16].wrapping_add(1);
