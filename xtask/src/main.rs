@@ -139,17 +139,27 @@ enum Task {
         dry_run: bool,
     },
     /// Write synthetic measurements from a finished run (docs/calibrate.md, "Synthetic
-    /// truths"): its interpolated front at given times, or its gate speeds, with a stated σ
+    /// truths"): its interpolated front at given times, its gate speeds or a profile column,
+    /// with a stated σ
     /// and optionally Gaussian noise of that σ; a calibration against them has a known truth.
     SyntheticMeasurements {
         /// the run folder (runs/<case>/<fidelity>/)
         run_dir: PathBuf,
-        /// the front x at these times [s], comma-separated (else --gates)
-        #[arg(long, value_delimiter = ',', required_unless_present = "gates")]
+        /// the front x at these times [s], comma-separated (else --gates or --profile)
+        #[arg(long, value_delimiter = ',', required_unless_present_any = ["gates", "profile"])]
         times: Vec<f64>,
         /// the front speed at every gate the run crossed
-        #[arg(long, conflicts_with = "times")]
+        #[arg(long, conflicts_with_all = ["times", "profile"])]
         gates: bool,
+        /// a column of this profile file of the run (profile_x<x>_t<t>.csv) against y
+        #[arg(long, conflicts_with = "times", requires = "column")]
+        profile: Option<String>,
+        /// the profile's column (eps_s, u_s, theta, u_g, v_g)
+        #[arg(long)]
+        column: Option<String>,
+        /// the profile's rows with εs at least this (the flow, not the empty cells above it)
+        #[arg(long, default_value_t = 1e-3)]
+        min_eps_s: f64,
         /// the measurement error σ of every point (written as `# sigma:`)
         #[arg(long)]
         sigma: f64,
@@ -326,15 +336,22 @@ fn main() -> Result<()> {
             run_dir,
             times,
             gates,
+            profile,
+            column,
+            min_eps_s,
             sigma,
             noise,
             out,
         } => {
             use calibrate::synthetic::{measurements_from_run, Measured};
-            let what = if gates {
-                Measured::GateSpeeds
-            } else {
-                Measured::Front(times)
+            let what = match (gates, profile) {
+                (true, _) => Measured::GateSpeeds,
+                (false, Some(file)) => Measured::Profile {
+                    file,
+                    column: column.unwrap_or_default(),
+                    min_eps_s,
+                },
+                (false, None) => Measured::Front(times),
             };
             let text = measurements_from_run(&run_dir, &what, sigma, noise)?;
             std::fs::write(&out, &text).with_context(|| format!("writing {}", out.display()))?;

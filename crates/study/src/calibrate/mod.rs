@@ -11,6 +11,7 @@
 //! landscape.svg, summary.md and summary.json.
 
 pub mod brent;
+pub mod ellipse;
 pub mod landscape;
 pub mod measurements;
 pub mod optimise;

@@ -1,5 +1,6 @@
 //! Synthetic measurements from a run (issue 48): the run's interpolated front at given
-//! times, or its gate speeds, as a measurements file with a stated σ, optionally with
+//! times, its gate speeds, or a column of one of its station profiles where the flow is
+//! (εs at least a stated value), as a measurements file with a stated σ, optionally with
 //! Gaussian noise of that σ added (a seeded generator, so a file is reproducible). A
 //! calibration against them has a known truth: the run's own parameters.
 
@@ -7,9 +8,10 @@ use std::path::Path;
 
 use anyhow::{bail, Context, Result};
 
-use super::measurements::interpolate;
+use super::measurements::{interpolate, PROFILE_COLUMNS};
 use crate::metrics::gate_speeds;
 use runout_post::front::{front_series, FrontDefinition};
+use runout_post::table::Table;
 
 /// What to take from the run.
 #[derive(Clone, Debug, PartialEq)]
@@ -18,6 +20,16 @@ pub enum Measured {
     Front(Vec<f64>),
     /// the front speed at each gate the run crossed
     GateSpeeds,
+    /// one column of a profile file of the run (`profile_x<x>_t<t>.csv`) against y, at the
+    /// rows whose εs is at least `min_eps_s` (the flow, not the empty cells above it)
+    Profile {
+        /// the profile file's name
+        file: String,
+        /// the column (one of [`super::measurements::PROFILE_COLUMNS`])
+        column: String,
+        /// the least εs of a measured row
+        min_eps_s: f64,
+    },
 }
 
 /// Normal deviates from a seed: SplitMix64 (Steele, Lea & Flood 2014) for uniforms, the
@@ -64,8 +76,13 @@ pub fn measurements_from_run(
         "# synthetic measurements from {} ({}), σ = {sigma}{}\n# sigma: {sigma}\n",
         dir.display(),
         match what {
-            Measured::Front(_) => "its interpolated front",
-            Measured::GateSpeeds => "its gate speeds",
+            Measured::Front(_) => "its interpolated front".to_string(),
+            Measured::GateSpeeds => "its gate speeds".to_string(),
+            Measured::Profile {
+                file,
+                column,
+                min_eps_s,
+            } => format!("{column} of {file} where εs ≥ {min_eps_s}"),
         },
         noise_seed.map_or(", no noise".to_string(), |s| format!(
             ", Gaussian noise of σ added (seed {s})"
@@ -99,8 +116,41 @@ pub fn measurements_from_run(
                 text.push_str(&format!("L{g},{:.6}\n", add(v)));
             }
         }
+        Measured::Profile {
+            file,
+            column,
+            min_eps_s,
+        } => {
+            text.push_str(&format!("# profile: {file}\ny,{column}\n"));
+            for (y, v) in profile_rows(&dir.join(file), column, *min_eps_s)? {
+                text.push_str(&format!("{y},{:.8}\n", add(v)));
+            }
+        }
     }
     Ok(text)
+}
+
+/// (y, `column`) of the profile file at the rows with εs ≥ `min_eps_s`; an error if there
+/// is none.
+fn profile_rows(file: &Path, column: &str, min_eps_s: f64) -> Result<Vec<(f64, f64)>> {
+    if !PROFILE_COLUMNS.contains(&column) {
+        bail!("`{column}`: a profile column is one of {PROFILE_COLUMNS:?}");
+    }
+    let table = Table::read(file).map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))?;
+    let get = |name: &str| {
+        table
+            .column(name)
+            .map_err(|e| anyhow::anyhow!("{}: {e}", file.display()))
+    };
+    let (y, eps_s, values) = (get("y")?, get("eps_s")?, get(column)?);
+    let rows: Vec<(f64, f64)> = (0..y.len())
+        .filter(|&k| eps_s[k] >= min_eps_s)
+        .map(|k| (y[k], values[k]))
+        .collect();
+    if rows.is_empty() {
+        bail!("{}: no row with εs ≥ {min_eps_s}", file.display());
+    }
+    Ok(rows)
 }
 
 #[cfg(test)]
@@ -145,6 +195,26 @@ mod tests {
             "{v:?}"
         );
         assert!(measurements_from_run(&dir, &Measured::Front(vec![2.0]), 0.01, None).is_err());
+        std::fs::write(
+            dir.join("profile_x1_t0.5.csv"),
+            "y,eps_s,u_s,theta\n0.01,0.5,1.5,1e-3\n0.03,0.2,2,1e-3\n0.05,0,0.7,1e-5\n",
+        )
+        .unwrap();
+        let profile = Measured::Profile {
+            file: "profile_x1_t0.5.csv".into(),
+            column: "u_s".into(),
+            min_eps_s: 0.01,
+        };
+        let text = measurements_from_run(&dir, &profile, 0.05, None).unwrap();
+        let (kind, _) = super::super::measurements::parse(&text).unwrap();
+        assert_eq!(
+            kind,
+            super::super::measurements::Kind::Profile {
+                column: "u_s".into(),
+                file: Some("profile_x1_t0.5.csv".into()),
+                points: vec![(0.01, 1.5), (0.03, 2.0)],
+            }
+        );
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

@@ -8,10 +8,13 @@
 //! interpolating √Δχ² linearly: exact for a χ² quadratic in the parameter's scale, where √Δχ²
 //! is linear on each side of the minimum. [`edge_proposals`] gives the next evaluation that
 //! pins an edge (the same estimate, kept a tenth of the bracket away from its ends). In 2-D
-//! the range is the bounding box of the evaluations inside, a coarse estimate.
+//! the range is the bounding box of the evaluations inside, widened to the projections of
+//! the region of a quadratic fitted to the best evaluations ([`super::ellipse`]) where the
+//! fit has a minimum.
 
 use serde::Serialize;
 
+use super::ellipse;
 use super::optimise::{Calibration, Evaluation};
 
 /// Δχ² of the 68.3 % interval of one parameter.
@@ -108,7 +111,7 @@ pub fn range(c: &Calibration) -> Range {
     if c.params.len() == 2 {
         let threshold = best.chi2 + DELTA_CHI2_2D;
         let inside: Vec<&&Evaluation> = finite.iter().filter(|e| e.chi2 <= threshold).collect();
-        let bounds = (0..2)
+        let mut bounds: Vec<(f64, f64)> = (0..2)
             .map(|d| {
                 inside
                     .iter()
@@ -117,6 +120,18 @@ pub fn range(c: &Calibration) -> Range {
                     })
             })
             .collect();
+        let units: Vec<([f64; 2], f64)> = finite
+            .iter()
+            .map(|e| ([c.params[0].unit(e.x[0]), c.params[1].unit(e.x[1])], e.chi2))
+            .collect();
+        let fitted = ellipse::projections(&units, DELTA_CHI2_2D);
+        if let Some(axes) = fitted {
+            for (d, (lo, hi)) in axes.into_iter().enumerate() {
+                let p = &c.params[d];
+                bounds[d].0 = bounds[d].0.min(p.value(lo.clamp(0.0, 1.0)));
+                bounds[d].1 = bounds[d].1.max(p.value(hi.clamp(0.0, 1.0)));
+            }
+        }
         return Range {
             delta_chi2: DELTA_CHI2_2D,
             threshold,
@@ -124,9 +139,15 @@ pub fn range(c: &Calibration) -> Range {
             bracketed: (false, false),
             elsewhere: 0,
             method: format!(
-                "the bounding box of the {} evaluations with Δχ² ≤ 2.30 (coarse: the scan \
-                 grid and the simplex's points only)",
-                inside.len()
+                "the bounding box of the {} evaluations with Δχ² ≤ 2.30{}",
+                inside.len(),
+                if fitted.is_some() {
+                    ", widened to the projections of the region Δχ² ≤ 2.30 of a quadratic \
+                     fitted to the best evaluations"
+                } else {
+                    " (the quadratic fitted to the best evaluations has no minimum: the scan \
+                     grid and the simplex's points only)"
+                }
             ),
         };
     }
