@@ -14,7 +14,8 @@ use runout_verification::references::{LAJEUNESSE, LUBE};
 const FIGURE_SIZE: (u32, u32) = (900, 650);
 
 /// Log–log runout against a: the runs (filled: εs ≥ 0.01 front, triangles where it reached
-/// the end wall; hollow: εs ≥ 0.3) and both laws, each branch over its side of a0.
+/// the end wall; hollow: εs ≥ 0.3; black squares: the grain edge) and both laws, each branch
+/// over its side of a0.
 pub(super) fn draw(outcomes: &[Outcome], path: &Path) -> Result<()> {
     let (a_lo, a_hi) = (0.3, 10.0);
     let y_hi = outcomes
@@ -106,6 +107,15 @@ pub(super) fn draw(outcomes: &[Outcome], path: &Path) -> Result<()> {
         .map_err(plot_error)?
         .label("runout, dense front εs ≥ 0.3")
         .legend(move |(x, y)| Circle::new((x + 10, y), 5, red.stroke_width(2)));
+    let black = RGBColor(0, 0, 0);
+    chart
+        .draw_series(outcomes.iter().filter(|o| o.grain_runout > 0.0).map(|o| {
+            let (a, r) = (o.column.aspect(), o.grain_runout);
+            Rectangle::new([(a / 1.03, r / 1.03), (a * 1.03, r * 1.03)], black.filled())
+        }))
+        .map_err(plot_error)?
+        .label("runout, grain edge (Σ εs Δy ≥ d; the μ(I) check's)")
+        .legend(move |(x, y)| Rectangle::new([(x + 5, y - 5), (x + 15, y + 5)], black.filled()));
     legend(&mut chart, SeriesLabelPosition::LowerRight).map_err(plot_error)?;
     root.present().map_err(plot_error)?;
     Ok(())
