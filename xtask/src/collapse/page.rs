@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 use runout_case::Fidelity;
 
 use super::run::Outcome;
-use runout_verification::references::{LAJEUNESSE, LUBE};
+use runout_verification::references::{LAGREE_CONTINUUM, LAJEUNESSE, LUBE};
 
 fn yes_no(b: bool) -> &'static str {
     if b {
@@ -21,18 +21,19 @@ pub(super) fn markdown_table(outcomes: &[Outcome]) -> String {
     let mut s = String::new();
     s.push_str(
         "| a | a as gridded | cells | (L∞ − L0)/L0, εs ≥ 0.01 | εs ≥ 0.3 | grain edge | \
-         at t = 3√(H0/g) | Lajeunesse | Lube | front speed / √(gH0) | mean u_s / √(gH0) | \
+         at t = 3√(H0/g) | Lajeunesse | Lube | Lagrée 2-D μ(I) | front speed / √(gH0) | \
+         mean u_s / √(gH0) | \
          stopped? | at rest from [√(H0/g)] | end wall reached? | solids mass change | \
          steps (rejected) | wall time [s] |\n",
     );
-    s.push_str("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    s.push_str("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for o in outcomes {
         let a = o.column.aspect();
         let f = &o.front;
         let lower = if f.reached_end_wall { "> " } else { "" };
         let _ = writeln!(
             s,
-            "| {a} | {:.2} | {} × {} | {lower}{:.2} | {:.2} | {:.2} | {} | {} | {} | {:.3} | {:.3} | \
+            "| {a} | {:.2} | {} × {} | {lower}{:.2} | {:.2} | {:.2} | {} | {} | {} | {} | {:.3} | {:.3} | \
              {} | {} | {} | {:.1e} | {} ({}) | {:.1} |",
             o.a_gridded,
             o.cells.0,
@@ -44,6 +45,7 @@ pub(super) fn markdown_table(outcomes: &[Outcome]) -> String {
                 .map_or("(run shorter)".to_string(), |r| format!("{r:.2}")),
             LAJEUNESSE.label(a),
             LUBE.label(a),
+            LAGREE_CONTINUUM.label(a),
             f.front_speed,
             f.mean_u,
             yes_no(f.stopped),

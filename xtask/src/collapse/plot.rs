@@ -8,7 +8,7 @@ use plotters::prelude::*;
 
 use super::run::Outcome;
 use crate::figure::{legend, plot_error};
-use runout_verification::references::{LAJEUNESSE, LUBE};
+use runout_verification::references::{LAGREE_CONTINUUM, LAJEUNESSE, LUBE};
 
 /// SVG size [px].
 const FIGURE_SIZE: (u32, u32) = (900, 650);
@@ -21,7 +21,10 @@ pub(super) fn draw(outcomes: &[Outcome], path: &Path) -> Result<()> {
     let y_hi = outcomes
         .iter()
         .map(|o| o.front.runout.max(o.dense_runout))
-        .fold(LAJEUNESSE.power(a_hi), f64::max)
+        .fold(
+            LAJEUNESSE.power(a_hi).max(LAGREE_CONTINUUM.runout(a_hi).1),
+            f64::max,
+        )
         * 1.5;
     let y_lo = outcomes
         .iter()
@@ -52,6 +55,7 @@ pub(super) fn draw(outcomes: &[Outcome], path: &Path) -> Result<()> {
     for (law, colour) in [
         (LAJEUNESSE, RGBColor(31, 119, 180)),
         (LUBE, RGBColor(44, 160, 44)),
+        (LAGREE_CONTINUUM, RGBColor(148, 103, 189)),
     ] {
         chart
             .draw_series(LineSeries::new(
@@ -60,8 +64,8 @@ pub(super) fn draw(outcomes: &[Outcome], path: &Path) -> Result<()> {
             ))
             .map_err(plot_error)?
             .label(format!(
-                "{}: {} a, {} a^(2/3)",
-                law.name, law.lambda1, law.lambda2
+                "{}: {} a, {} a^{:.2}",
+                law.name, law.lambda1, law.lambda2, law.exponent
             ))
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], colour));
         chart

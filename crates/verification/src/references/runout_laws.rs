@@ -14,8 +14,10 @@ pub struct ScalingLaw {
     pub material: &'static str,
     /// slope of the linear branch
     pub lambda1: f64,
-    /// prefactor of the a^{2/3} branch
+    /// prefactor of the power branch
     pub lambda2: f64,
+    /// exponent of the power branch (2/3 for the laboratory laws)
+    pub exponent: f64,
     /// the crossover aspect ratio, as a range (a0_low, a0_high)
     pub a0: (f64, f64),
 }
@@ -26,6 +28,7 @@ pub const LAJEUNESSE: ScalingLaw = ScalingLaw {
     material: "glass beads",
     lambda1: 1.8,
     lambda2: 2.3,
+    exponent: 2.0 / 3.0,
     a0: (3.0, 3.0),
 };
 
@@ -35,7 +38,21 @@ pub const LUBE: ScalingLaw = ScalingLaw {
     material: "sand, rice, sugar",
     lambda1: 1.2,
     lambda2: 1.9,
+    exponent: 2.0 / 3.0,
     a0: (1.8, 2.8),
+};
+
+/// The 2-D μ(I) continuum of Lagrée, Staron & Popinet (2011), J. Fluid Mech. 686:378
+/// (their Eqs. 3.1–3.2 as verification-notes.md §2f compiles them; not re-checked against the
+/// original): 2.2 a below a ≈ 7, 3.9 a^0.7 above. A simulation, not an experiment: the
+/// like-for-like reference of a μ(I) continuum.
+pub const LAGREE_CONTINUUM: ScalingLaw = ScalingLaw {
+    name: "Lagrée et al. 2011 (2-D μ(I))",
+    material: "μ(I) continuum",
+    lambda1: 2.2,
+    lambda2: 3.9,
+    exponent: 0.7,
+    a0: (7.0, 7.0),
 };
 
 impl ScalingLaw {
@@ -44,9 +61,9 @@ impl ScalingLaw {
         self.lambda1 * a
     }
 
-    /// The power branch λ2 a^{2/3}.
+    /// The power branch λ2 a^exponent.
     pub fn power(&self, a: f64) -> f64 {
-        self.lambda2 * a.powf(2.0 / 3.0)
+        self.lambda2 * a.powf(self.exponent)
     }
 
     /// (low, high) runout at `a`: one value outside the crossover range, the two branches
@@ -87,5 +104,9 @@ mod tests {
         let (lo, hi) = LAJEUNESSE.runout(3.0);
         assert!((lo - 2.3 * 3f64.powf(2.0 / 3.0)).abs() < 1e-12 && (hi - 5.4).abs() < 1e-12);
         assert_eq!(LUBE.runout(6.0).0, LUBE.runout(6.0).1);
+        // the continuum: the notes' 4.40 at a = 2; its branches meet near a0 = 7
+        assert!((LAGREE_CONTINUUM.runout(2.0).0 - 4.4).abs() < 1e-12);
+        let (lo, hi) = LAGREE_CONTINUUM.runout(7.0);
+        assert!((hi - lo) / hi < 0.02, "{lo} {hi}");
     }
 }
