@@ -72,7 +72,7 @@ pub fn verify(root: &Path) -> Result<Outcome> {
             ),
             _ => ("none".to_string(), "–".to_string()),
         };
-        let ok = c.steady
+        let ok = c.column.steady
             && c.eps_error < TOLERANCE
             && c.velocity_error < TOLERANCE
             && c.theta_error < TOLERANCE;
@@ -84,13 +84,13 @@ pub fn verify(root: &Path) -> Result<Outcome> {
             c.theta_error,
             c.theta_pointwise_error,
             c.reference.floor.slip,
-            c.steps,
-            c.rejected,
-            c.time,
-            c.final_rate,
-            c.mass_change,
-            c.drag_to_weight,
-            c.wall_time,
+            c.column.steps,
+            c.column.rejected,
+            c.column.time,
+            c.column.final_rate,
+            c.column.mass_change,
+            c.column.drag_to_weight,
+            c.column.wall_time,
             if ok { "PASS" } else { "FAIL" }
         )?;
         if slope == 25.0 && sidewalls.is_none() {
@@ -131,14 +131,14 @@ fn draw(c: &ChuteCheck, path: &Path) -> Result<()> {
     let root = SVGBackend::new(path, FIGURE_SIZE).into_drawing_area();
     root.fill(&WHITE).map_err(plot_error)?;
     let panels = root.split_evenly((1, 3));
-    let height_mm: Vec<f64> = c.y.iter().map(|y| y * 1e3).collect();
+    let height_mm: Vec<f64> = c.reference.y.iter().map(|y| y * 1e3).collect();
     let y_top = c.reference.y.last().copied().unwrap_or(0.0) * 1e3 + 0.2;
     let blue = RGBColor(31, 119, 180);
     let red = RGBColor(214, 39, 40);
     let series: [(&str, &[f64], &[f64], bool); 3] = [
-        ("εs", &c.reference.eps_s, &c.eps_s, false),
-        ("u_s [m/s]", &c.reference.u_s, &c.u_s, false),
-        ("θ [m²/s²]", &c.reference.theta, &c.theta, true),
+        ("εs", &c.reference.eps_s, &c.column.eps_s, false),
+        ("u_s [m/s]", &c.reference.u_s, &c.column.u_s, false),
+        ("θ [m²/s²]", &c.reference.theta, &c.column.theta, true),
     ];
     for (panel, (label, reference, column, log)) in panels.iter().zip(series) {
         let lo = reference.iter().cloned().fold(f64::INFINITY, f64::min);

@@ -57,7 +57,7 @@ pub fn relative_change(c: &ChuteCheck, plane_u_s: &[f64]) -> f64 {
 
 /// The profile agreement of one run: steady, εs, u_s and θ within the tolerance.
 fn agreement(outcome: &mut Outcome, label: &str, c: &ChuteCheck) {
-    outcome.holds(format!("{label}: steady"), c.steady);
+    outcome.holds(format!("{label}: steady"), c.column.steady);
     for (what, value) in [
         ("eps error", c.eps_error),
         ("u_s error", c.velocity_error),
@@ -89,7 +89,7 @@ impl Chute {
             let c = run(&setup).map_err(|e| anyhow::anyhow!("chute check at {slope}°: {e}"))?;
             println!(
                 "  errors eps {:.2e}, u {:.2e}, theta {:.2e}; {} steps, {:.1} s wall",
-                c.eps_error, c.velocity_error, c.theta_error, c.steps, c.wall_time
+                c.eps_error, c.velocity_error, c.theta_error, c.column.steps, c.column.wall_time
             );
             agreement(
                 &mut outcome,
@@ -114,27 +114,27 @@ impl Chute {
         let c = run(&plane)?;
         println!(
             "40 cells: t = {:.3} s, {} steps ({} rejected), rate {:.2e}/s, errors: eps {:.2e}, u {:.2e}, theta {:.2e} (pointwise {:.2e}), mass {:.2e}, drag/weight {:.2e}, {:.1} s wall",
-            c.time,
-            c.steps,
-            c.rejected,
-            c.final_rate,
+            c.column.time,
+            c.column.steps,
+            c.column.rejected,
+            c.column.final_rate,
             c.eps_error,
             c.velocity_error,
             c.theta_error,
             c.theta_pointwise_error,
-            c.mass_change,
-            c.drag_to_weight,
-            c.wall_time
+            c.column.mass_change,
+            c.column.drag_to_weight,
+            c.column.wall_time
         );
         agreement(outcome, "40 cells 25°", &c);
         outcome.measure(
             "40 cells 25°: |mass change|",
-            c.mass_change.abs(),
+            c.column.mass_change.abs(),
             Limit::Below(1e-10),
         );
         outcome.measure(
             "40 cells 25°: drag/weight",
-            c.drag_to_weight,
+            c.column.drag_to_weight,
             Limit::Below(1e-4),
         );
         // side walls: the plane reference alone (the 1-D solve takes well under a second)
@@ -143,7 +143,7 @@ impl Chute {
         let change = relative_change(&c, &plane_reference.u_s);
         println!(
             "side walls W = {SIDEWALL_WIDTH} m: u_s changed by {change:.2} of the plane's largest; t = {:.3} s, {} steps, errors eps {:.2e}, u {:.2e}, theta {:.2e}",
-            c.time, c.steps, c.eps_error, c.velocity_error, c.theta_error
+            c.column.time, c.column.steps, c.eps_error, c.velocity_error, c.theta_error
         );
         outcome.measure(
             "40 cells 25° side walls: u_s change",

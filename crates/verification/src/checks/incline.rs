@@ -12,7 +12,9 @@
 //!   "at rest" speed, 1 % of √(g h), after [`REST_DURATION`].
 
 use crate::check::{Check, Limit, Outcome, Size};
-use crate::problems::incline::{flowing, resting, FlowingIncline, RestingIncline};
+use runout_post::convergence::{observed_order, richardson};
+
+use crate::problems::incline::{flowing, resting, FlowingIncline, RestingIncline, HEIGHT};
 
 /// Acceptance: velocity error relative to the largest speed (issue 43).
 pub const INCLINE_TOLERANCE: f64 = 0.01;
@@ -34,14 +36,6 @@ pub const MIN_ORDER: f64 = 0.8;
 
 /// The inclined-plane check.
 pub struct Incline;
-
-/// The observed order p = log2(|f₁ − f₂|/|f₂ − f₃|) of a value on three grids refined by
-/// two, and its Richardson extrapolation f₃ + (f₃ − f₂)/(2^p − 1).
-pub fn observed_order(values: [f64; 3]) -> (f64, f64) {
-    let [f1, f2, f3] = values;
-    let p = ((f1 - f2).abs() / (f2 - f3).abs()).log2();
-    (p, f3 + (f3 - f2) / (2f64.powf(p) - 1.0))
-}
 
 fn print_flowing(cells: usize, f: &FlowingIncline) {
     println!(
@@ -112,7 +106,15 @@ impl Incline {
             runs.push(f);
         }
         let speeds = [0, 1, 2].map(|k| runs[k].surface_speed);
-        let (order, extrapolated) = observed_order(speeds);
+        // grid spacings finest first, as runout_post::convergence takes them
+        let h = [2, 1, 0].map(|k| HEIGHT / FULL_CELLS[k] as f64);
+        let order = observed_order(
+            (speeds[0] - speeds[1]).abs(),
+            (speeds[1] - speeds[2]).abs(),
+            h,
+        )
+        .unwrap_or(0.0); // no order in (0, 20]: reported as 0, below the limit
+        let extrapolated = richardson(&[speeds[2]], &[speeds[1]], [h[0], h[1]], order)[0];
         println!(
             "  surface speed {speeds:.6?} m/s: observed order {order:.2}, Richardson {extrapolated:.6} m/s"
         );

@@ -125,14 +125,8 @@ impl ChuteCheckSetup {
 pub struct ChuteCheck {
     /// the 1-D steady solution
     pub reference: ChuteProfile,
-    /// cell-centre heights \[m\]
-    pub y: Vec<f64>,
-    /// εs, u_s, θ of the 2-D column at the end
-    pub eps_s: Vec<f64>,
-    /// u_s at the cell centres' height (the row's u-node) [m/s]
-    pub u_s: Vec<f64>,
-    /// θ [m²/s²]
-    pub theta: Vec<f64>,
+    /// the 2-D column at the end of its march (its cell centres are the reference's)
+    pub column: SteadyColumn,
     /// max |εs − εs,ref| / max εs,ref
     pub eps_error: f64,
     /// max |u_s − u_s,ref| / max u_s,ref
@@ -141,24 +135,8 @@ pub struct ChuteCheck {
     pub theta_error: f64,
     /// max |θ − θ_ref| / θ_ref, pointwise (θ spans three decades)
     pub theta_pointwise_error: f64,
-    /// simulated time reached \[s\]
-    pub time: f64,
-    /// accepted steps
-    pub steps: usize,
-    /// steps retried with half the time step
-    pub rejected: usize,
-    /// the largest relative rate of change at the end [s⁻¹]
-    pub final_rate: f64,
-    /// whether `final_rate` fell below the setup's `steady_rate`
-    pub steady: bool,
-    /// relative change of the solids mass over the run
-    pub mass_change: f64,
-    /// largest |F_gs (u_g − u_s)| relative to εs ρs g sin α over the cells
-    pub drag_to_weight: f64,
     /// ρ_g/ρ_s: the buoyancy left by the negligible gas
     pub buoyancy: f64,
-    /// wall time of the 2-D run \[s\]
-    pub wall_time: f64,
 }
 
 /// Why the check could not run.
@@ -307,19 +285,8 @@ pub fn run(setup: &ChuteCheckSetup) -> Result<ChuteCheck, ChuteCheckError> {
         velocity_error: relative_error(&column.u_s, &reference.u_s),
         theta_error: relative_error(&column.theta, &reference.theta),
         theta_pointwise_error,
-        y: reference.y.clone(),
-        eps_s: column.eps_s,
-        theta: column.theta,
-        u_s: column.u_s,
-        time: column.time,
-        steps: column.steps,
-        rejected: column.rejected,
-        final_rate: column.final_rate,
-        steady: column.steady,
-        mass_change: column.mass_change,
-        drag_to_weight: column.drag_to_weight,
         buoyancy: setup.gas_density / setup.closures.particles.density,
-        wall_time: column.wall_time,
+        column,
         reference,
     })
 }
