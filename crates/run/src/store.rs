@@ -74,6 +74,10 @@ pub enum Reuse {
     AnyFinished,
 }
 
+/// Checkpoints of long runs (sweeps, checks, the error study) every this much wall time: a
+/// killed run then loses at most this much, and the same command continues it.
+pub const CHECKPOINT_EVERY: Duration = Duration::from_secs(600);
+
 /// How a run is requested from the store.
 #[derive(Clone, Debug)]
 pub struct Request {

@@ -167,7 +167,7 @@ pub fn run_into(
 ) -> Outcome {
     let request = Request {
         reuse,
-        checkpoint_every: Some(CHECKPOINT_EVERY),
+        checkpoint_every: Some(store::CHECKPOINT_EVERY),
         stop: Some(stop.clone()),
         ..Request::default()
     };
@@ -189,10 +189,6 @@ pub fn run_into(
         Err(e) => Outcome::Failed(e.to_string()),
     }
 }
-
-/// Checkpoints of the sweep's runs every this much wall time (a killed sweep then loses at
-/// most this much of each run).
-const CHECKPOINT_EVERY: std::time::Duration = std::time::Duration::from_secs(600);
 
 /// Wall time per case of the rows of an earlier `results/summary.csv` at `fidelity` that
 /// have one (empty if there is none).

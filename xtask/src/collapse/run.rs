@@ -59,6 +59,7 @@ pub(super) fn run_one(
     let done = root.join("runs").join(&case.name).join(fidelity.name());
     let request = Request {
         reuse: if reuse { Reuse::SameCase } else { Reuse::Never },
+        checkpoint_every: Some(store::CHECKPOINT_EVERY),
         ..Request::default()
     };
     if !reuse || finished_run(&done, &resolved).is_none() {

@@ -105,6 +105,7 @@ pub(super) fn run_level(
         let request = Request {
             reuse: Reuse::Never,
             label: Some(format!("error-time {level}")),
+            checkpoint_every: Some(store::CHECKPOINT_EVERY),
             ..Request::default()
         };
         match store::obtain(&done, &resolved, Fidelity::Paper, &request, |p| {
