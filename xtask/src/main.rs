@@ -228,11 +228,12 @@ enum Task {
         #[arg(long)]
         reuse: bool,
         /// collapse: the friction law, princeton (the paper's material, the four shipped
-        /// columns) or mu-i (glass beads, cases/collapse/CM-a1.ron as template)
+        /// columns), mu-i (glass beads, cases/collapse/CM-a1.ron as template) or both (each
+        /// μ(I) column and the same column with Princeton beside it)
         #[arg(long, default_value = "princeton")]
         friction: String,
         /// collapse: comma-separated aspect ratios a = H0/L0 whose columns are built from the
-        /// friction's template (default with mu-i: 0.5,1,3,6)
+        /// friction's template (default with mu-i and both: 0.5,1,3,6)
         #[arg(long, value_delimiter = ',')]
         aspect: Option<Vec<f64>>,
         /// mfix-slope: comma-separated rayon thread counts to time the JJ case with

@@ -3,6 +3,7 @@
 
 use anyhow::{bail, Context, Result};
 use runout_case::{Case, Gravity};
+use runout_closures::friction::{FrictionModel, FrictionName};
 use runout_mesh::Segment;
 use runout_verification::references::LAJEUNESSE;
 
@@ -54,6 +55,27 @@ pub fn column_case(template: &Case, a: f64) -> Result<Case> {
         wall.end_time = end;
     }
     Ok(case)
+}
+
+/// The same column with Princeton friction instead of the template's (named `<prefix>P-a<a>`,
+/// e.g. CMP-a1 beside CM-a1): the like-for-like closure beside μ(I). Princeton uses the
+/// case's δ_int (35° in CM-a1.ron, above the beads' μ_s = tan 20.9°: a Coulomb stress
+/// stronger than μ(I)'s at rest, so a Princeton column that still runs further does so by
+/// its θ-dependent strain scale, not by weaker friction).
+pub fn with_princeton(case: &Case) -> Case {
+    let mut twin = case.clone();
+    twin.models.friction = FrictionModel::from(FrictionName::Princeton);
+    twin.name = match case.name.split_once("-a") {
+        Some((prefix, a)) => format!("{prefix}P-a{a}"),
+        None => format!("{}P", case.name),
+    };
+    twin.description = format!("{} (Princeton friction)", case.description);
+    twin
+}
+
+/// Whether `case` uses the μ(I) friction law (the closure the check's thresholds judge).
+pub fn is_mu_i(case: &Case) -> bool {
+    matches!(case.models.friction, FrictionModel::MuI(_))
 }
 
 /// The initial column of a collapse case: the first block, standing on the floor against

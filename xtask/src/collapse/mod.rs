@@ -1,25 +1,31 @@
-//! `cargo xtask verify collapse [--fidelity smoke|coarse]`: issue 7's granular column
-//! collapse check (family C, cases/collapse/, verification-notes.md §2f).
+//! `cargo xtask verify collapse [--friction princeton|mu-i|both] [--aspect LIST]
+//! [--fidelity smoke|coarse|paper] [--reuse]`: the granular column collapse check (issues 7
+//! and 43; cases/collapse/, verification-notes.md §2f, docs/collapse-laws.md).
 //!
-//! Runs the four columns a = H0/L0 = 0.5, 1, 3, 6 one after the other into
-//! `runs/<case>/<fidelity>/`, reads the front of the bulk monitor (the largest x whose floor
-//! cell has εs ≥ 0.01) and the last field file, and reports the runout (L∞ − L0)/L0 beside
-//! the laboratory laws of Lajeunesse et al. (2005) and Lube et al. (2005), untuned: nothing
-//! is fitted and no agreement is required. The check fails only if a run does not complete
-//! or loses solids mass. At `coarse` the table goes to docs/collapse.md and the log–log
-//! figure to docs/collapse/runout.svg; at `smoke` both go to runs/collapse-report/smoke/
-//! (the committed report is the coarse one). With `--reuse`, a finished run whose
-//! `resolved.ron` equals the case as it would run now is read instead of rerun (its
-//! recorded wall time is reported), e.g. to regenerate the report after changing it.
+//! Runs the columns one after the other into `runs/<case>/<fidelity>/` (checkpointed, so a
+//! killed check continues), reads the front of the bulk monitor and the last field file, and
+//! reports the runout (L∞ − L0)/L0 and the deposit height H∞/L0 beside the laboratory laws,
+//! untuned. `princeton`: the paper's material in the four shipped columns; the check fails
+//! only if a run does not complete or loses solids mass. `mu-i`: glass-bead columns built
+//! from cases/collapse/CM-a1.ron for each a; they must also meet the thresholds of
+//! [`law_failures`]. `both`: each μ(I) column and beside it the same column with Princeton
+//! friction (only the μ(I) ones are judged). At `coarse` the page goes to docs/
+//! (collapse.md for `both`, collapse-mu-i.md, collapse-princeton.md) with its figures in
+//! docs/collapse/; at other fidelities to runs/collapse-report/<fidelity>/. With `--reuse`,
+//! a finished run whose `resolved.ron` equals the case as it would run now is read instead
+//! of rerun.
 //!
-//! The parts, one a file: [`column`] (the initial column and its scales), `runout_verification::references::runout_laws` (the
-//! laboratory runout laws), [`run`] (running or reusing one column and measuring it, from
-//! [`front`], the bulk monitor's front history, and [`fields`], the last field file),
-//! [`page`] (the report) and [`plot`] (the figure); this file holds the check's stages.
+//! The parts, one a file: [`column`] (the initial column, its scales and its Princeton
+//! twin), `runout_verification::references::runout_laws` (the laws), [`run`] (running or
+//! reusing one column and measuring it, from [`front`], the bulk monitor's front history,
+//! and [`fields`], the last field file), [`grids`] (the μ(I) columns on every grid the
+//! store holds), [`page`] (the report) and [`plot`] (the figures);
+//! this file holds the check's stages.
 
 pub mod column;
 mod fields;
 mod front;
+mod grids;
 mod page;
 mod plot;
 mod run;
@@ -30,7 +36,7 @@ use anyhow::{bail, Context, Result};
 use runout_case::{load, Fidelity, Loaded};
 
 use self::run::{run_one, Outcome};
-use runout_verification::references::LAJEUNESSE;
+use runout_verification::references::{LAJEUNESSE, LAJEUNESSE_HEIGHT};
 
 /// The folder of the collapse cases under cases/ (left out of `cargo xtask sweep`).
 pub const COLLAPSE_DIR: &str = "collapse";
@@ -59,9 +65,12 @@ pub enum Friction {
     /// the paper's material and Princeton friction (the four shipped C-a* cases), untuned:
     /// the check fails only on a failed run or lost mass
     Princeton,
-    /// glass beads with μ(I) (cases/collapse/CM-a1.ron as template): the runout within 25 %
-    /// of Lajeunesse et al.'s and the deposit at rest by 10 √(H0/g)
+    /// glass beads with μ(I) (cases/collapse/CM-a1.ron as template): the runout and H∞
+    /// within 25 % of Lajeunesse et al.'s and the deposit at rest by 10 √(H0/g)
     MuI,
+    /// the μ(I) columns and beside each the same glass-bead column with Princeton friction
+    /// (`column::with_princeton`); the thresholds judge the μ(I) columns only
+    Both,
 }
 
 impl Friction {
@@ -70,7 +79,8 @@ impl Friction {
         match s {
             "princeton" => Ok(Self::Princeton),
             "mu-i" => Ok(Self::MuI),
-            _ => bail!("--friction {s}: expected princeton or mu-i"),
+            "both" => Ok(Self::Both),
+            _ => bail!("--friction {s}: expected princeton, mu-i or both"),
         }
     }
 }
@@ -89,20 +99,24 @@ pub fn verify(
     // the cells as written (L0/20) for μ(I)'s grid study; Princeton's four columns are
     // reported at smoke and coarse
     if fidelity == Fidelity::Paper && friction == Friction::Princeton {
-        bail!("`verify collapse` runs Princeton at smoke or coarse fidelity (mu-i also at paper)");
+        bail!(
+            "`verify collapse` runs Princeton at smoke or coarse fidelity (mu-i and both also at paper)"
+        );
     }
     let cases = columns(root, friction, aspects)?;
     let mut outcomes = Vec::new();
     for case in &cases {
         outcomes.push(run_one(root, case, fidelity, reuse)?);
     }
-    let table = page::markdown_table(&outcomes);
+    let mut table = page::markdown_table(&outcomes);
+    table.push('\n');
+    table.push_str(&grids::markdown(&grids::gather(
+        root, &cases, fidelity, &outcomes,
+    )?));
     println!("\n{table}");
     write_report(root, fidelity, friction, &outcomes, &table)?;
     let mut failures = failures(&outcomes);
-    if friction == Friction::MuI {
-        failures.extend(law_failures(&outcomes));
-    }
+    failures.extend(law_failures(&outcomes));
     if !failures.is_empty() {
         bail!(
             "{} collapse run(s) failed:\n  {}",
@@ -128,7 +142,7 @@ fn columns(
     };
     let template = match friction {
         Friction::Princeton => PRINCETON_TEMPLATE,
-        Friction::MuI => MU_I_TEMPLATE,
+        Friction::MuI | Friction::Both => MU_I_TEMPLATE,
     };
     match (friction, aspects) {
         (Friction::Princeton, None) => {
@@ -142,22 +156,28 @@ fn columns(
             let template = from_file(&root.join(template))?
                 .pop()
                 .context("the template holds one case")?;
-            aspects
-                .unwrap_or_else(|| DEFAULT_ASPECTS.to_vec())
-                .iter()
-                .map(|&a| column::column_case(&template, a))
-                .collect()
+            let mut cases = Vec::new();
+            for a in aspects.unwrap_or_else(|| DEFAULT_ASPECTS.to_vec()) {
+                let case = column::column_case(&template, a)?;
+                if friction == Friction::Both {
+                    cases.push(column::with_princeton(&case));
+                }
+                cases.push(case);
+            }
+            Ok(cases)
         }
     }
 }
 
-/// μ(I)'s thresholds: the runout to the grain edge (solids height ≥ one grain diameter,
-/// `runout_post::deposit`) within 25 % of Lajeunesse et al.'s (of the nearer end of its
-/// range where a lies in the crossover) and the deposit at rest by 10 √(H0/g).
+/// μ(I)'s thresholds, on the μ(I) columns: the runout to the grain edge (solids height ≥
+/// one grain diameter, `runout_post::deposit`) within 25 % of Lajeunesse et al.'s (of the
+/// nearer end of its range where a lies in the crossover), H∞/L0 within 25 % of their
+/// height law, and the deposit at rest by 10 √(H0/g).
 fn law_failures(outcomes: &[Outcome]) -> Vec<String> {
     let mut failures = Vec::new();
-    for o in outcomes {
-        let (lo, hi) = LAJEUNESSE.runout(o.column.aspect());
+    for o in outcomes.iter().filter(|o| o.mu_i) {
+        let a = o.column.aspect();
+        let (lo, hi) = LAJEUNESSE.runout(a);
         let r = o.grain_runout;
         let off = if r < lo {
             (lo - r) / lo
@@ -171,7 +191,18 @@ fn law_failures(outcomes: &[Outcome]) -> Vec<String> {
                 "{}: runout {r:.2}, {:.0} % from Lajeunesse's {} (limit {:.0} %)",
                 o.name,
                 100.0 * off,
-                LAJEUNESSE.label(o.column.aspect()),
+                LAJEUNESSE.label(a),
+                100.0 * RUNOUT_TOLERANCE
+            ));
+        }
+        let h_law = LAJEUNESSE_HEIGHT.height(a);
+        let h_off = (o.height - h_law).abs() / h_law;
+        if h_off > RUNOUT_TOLERANCE {
+            failures.push(format!(
+                "{}: H∞/L0 {:.2}, {:.0} % from Lajeunesse's {h_law:.2} (limit {:.0} %)",
+                o.name,
+                o.height,
+                100.0 * h_off,
                 100.0 * RUNOUT_TOLERANCE
             ));
         }
@@ -188,9 +219,9 @@ fn law_failures(outcomes: &[Outcome]) -> Vec<String> {
     failures
 }
 
-/// Writes the report and the figure: docs/collapse.md and docs/collapse/runout.svg
-/// (Princeton) or docs/collapse-mu-i.md and docs/collapse/runout-mu-i.svg (μ(I)) at coarse,
-/// runs/collapse-report/<fidelity>/ otherwise.
+/// Writes the report and its figures (runout against a; the deposits): at coarse into docs/
+/// (`collapse.md` with both closures, `collapse-mu-i.md`, `collapse-princeton.md` for the
+/// paper's material) and docs/collapse/, otherwise into runs/collapse-report/<fidelity>/.
 fn write_report(
     root: &Path,
     fidelity: Fidelity,
@@ -208,24 +239,43 @@ fn write_report(
     };
     std::fs::create_dir_all(&figure_dir)
         .with_context(|| format!("creating {}", figure_dir.display()))?;
-    let (figure_name, report_name) = match friction {
-        Friction::Princeton => ("runout.svg", "collapse.md"),
-        Friction::MuI => ("runout-mu-i.svg", "collapse-mu-i.md"),
+    let stem = match friction {
+        Friction::Princeton => "collapse-princeton",
+        Friction::MuI => "collapse-mu-i",
+        Friction::Both => "collapse",
     };
-    let figure = figure_dir.join(figure_name);
-    plot::draw(outcomes, &figure)?;
-    let report = out_dir.join(report_name);
-    let figure_link = figure
-        .strip_prefix(&out_dir)
-        .unwrap_or(&figure)
-        .display()
-        .to_string();
+    let link = |path: &Path| {
+        path.strip_prefix(&out_dir)
+            .unwrap_or(path)
+            .display()
+            .to_string()
+    };
+    let runout_figure = figure_dir.join(format!("{stem}-runout.svg"));
+    plot::draw(outcomes, &runout_figure)?;
+    let deposit_figure = figure_dir.join(format!("{stem}-deposits.svg"));
+    plot::draw_deposits(outcomes, &deposit_figure)?;
+    let figures = page::Figures {
+        runout: link(&runout_figure),
+        deposits: link(&deposit_figure),
+    };
+    let report = out_dir.join(format!("{stem}.md"));
     let text = match friction {
-        Friction::Princeton => page::document(outcomes, fidelity, table, &figure_link),
-        Friction::MuI => page::document_mu_i(outcomes, fidelity, table, &figure_link),
+        Friction::Princeton => page::document(outcomes, fidelity, table, &figures),
+        Friction::MuI | Friction::Both => page::document_mu_i(
+            outcomes,
+            fidelity,
+            friction == Friction::Both,
+            table,
+            &figures,
+        ),
     };
     std::fs::write(&report, text).with_context(|| format!("writing {}", report.display()))?;
-    println!("wrote {} and {}", report.display(), figure.display());
+    println!(
+        "wrote {}, {} and {}",
+        report.display(),
+        runout_figure.display(),
+        deposit_figure.display()
+    );
     Ok(())
 }
 
@@ -276,6 +326,25 @@ mod tests {
         }
         assert!(columns(root, Friction::MuI, Some(vec![0.0])).is_err());
         assert_eq!(columns(root, Friction::Princeton, None).unwrap().len(), 4);
+    }
+
+    /// `both` puts the Princeton twin of each μ(I) column beside it: the same case but for
+    /// the friction law and the name.
+    #[test]
+    fn both_builds_a_princeton_twin_of_each_column() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
+        let cases = columns(root, Friction::Both, Some(vec![1.0, 3.0])).unwrap();
+        let names: Vec<&str> = cases.iter().map(|c| c.name.as_str()).collect();
+        assert_eq!(names, ["CMP-a1", "CM-a1", "CMP-a3", "CM-a3"]);
+        for pair in cases.chunks(2) {
+            let (twin, mu_i) = (&pair[0], &pair[1]);
+            assert!(!column::is_mu_i(twin) && column::is_mu_i(mu_i));
+            let mut same = twin.clone();
+            same.models.friction = mu_i.models.friction;
+            same.name = mu_i.name.clone();
+            same.description = mu_i.description.clone();
+            assert_eq!(&same, mu_i);
+        }
     }
 
     #[test]

@@ -1,12 +1,31 @@
-//! The report of the check (docs/collapse.md, or runs/collapse-report/<fidelity>/ below
-//! coarse): the results table, the set-up, the laboratory laws and what the runs show.
+//! The report of the check (docs/collapse*.md at coarse, runs/collapse-report/<fidelity>/
+//! otherwise): the results tables, the set-up, the laboratory laws and what the runs show.
 
 use std::fmt::Write as _;
 
 use runout_case::Fidelity;
 
 use super::run::Outcome;
-use runout_verification::references::{LAGREE_CONTINUUM, LAJEUNESSE, LUBE};
+use runout_verification::references::{
+    local_exponent, HeightLaw, ScalingLaw, BALMFORTH_KERSWELL_EXPONENTS, LAGREE_CONTINUUM,
+    LAJEUNESSE, LAJEUNESSE_AS_KUMAR_CITES, LAJEUNESSE_HEIGHT, LUBE, LUBE_HEIGHT,
+};
+
+/// The report's figures, as links relative to the page.
+pub(super) struct Figures {
+    /// runout against a, log–log
+    pub(super) runout: String,
+    /// the final deposit profiles
+    pub(super) deposits: String,
+}
+
+fn closure(o: &Outcome) -> &'static str {
+    if o.mu_i {
+        "μ(I)"
+    } else {
+        "Princeton"
+    }
+}
 
 fn yes_no(b: bool) -> &'static str {
     if b {
@@ -16,40 +35,57 @@ fn yes_no(b: bool) -> &'static str {
     }
 }
 
-/// The results table (Markdown).
+/// The results tables (Markdown): the deposit against the laws, then how each run went.
 pub(super) fn markdown_table(outcomes: &[Outcome]) -> String {
     let mut s = String::new();
     s.push_str(
-        "| a | a as gridded | cells | (L∞ − L0)/L0, εs ≥ 0.01 | εs ≥ 0.3 | grain edge | \
-         at t = 3√(H0/g) | Lajeunesse | Lube | Lagrée 2-D μ(I) | front speed / √(gH0) | \
-         mean u_s / √(gH0) | \
-         stopped? | at rest from [√(H0/g)] | end wall reached? | solids mass change | \
-         steps (rejected) | wall time [s] |\n",
+        "| case | friction | a | cells | (L∞ − L0)/L0, grain edge | εs ≥ 0.01 | εs ≥ 0.3 | \
+         Lajeunesse | (Kumar's reading) | Lube | Lagrée 2-D μ(I) | H∞/L0 | Lajeunesse H∞ | \
+         Lube H∞ | at rest from [√(H0/g)] |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
-    s.push_str("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for o in outcomes {
         let a = o.column.aspect();
         let f = &o.front;
         let lower = if f.reached_end_wall { "> " } else { "" };
         let _ = writeln!(
             s,
-            "| {a} | {:.2} | {} × {} | {lower}{:.2} | {:.2} | {:.2} | {} | {} | {} | {} | {:.3} | {:.3} | \
-             {} | {} | {} | {:.1e} | {} ({}) | {:.1} |",
-            o.a_gridded,
+            "| {} | {} | {a} | {} × {} | {lower}{:.2} | {lower}{:.2} | {:.2} | {} | {} | {} | {} | \
+             {:.2} | {:.2} | {:.2} | {} |",
+            o.name,
+            closure(o),
             o.cells.0,
             o.cells.1,
+            o.grain_runout,
             f.runout,
             o.dense_runout,
-            o.grain_runout,
-            f.runout_at_lab_stop
-                .map_or("(run shorter)".to_string(), |r| format!("{r:.2}")),
             LAJEUNESSE.label(a),
+            LAJEUNESSE_AS_KUMAR_CITES.label(a),
             LUBE.label(a),
             LAGREE_CONTINUUM.label(a),
+            o.height,
+            LAJEUNESSE_HEIGHT.height(a),
+            LUBE_HEIGHT.height(a),
+            f.rest_time.map_or("not at rest".to_string(), |t| format!("{t:.1}")),
+        );
+    }
+    s.push_str(
+        "\n| case | a as gridded | at t = 3√(H0/g) | front speed / √(gH0) | mean u_s / √(gH0) | \
+         stopped? | end wall reached? | solids mass change | steps (rejected) | wall time [s] |\n\
+         |---|---|---|---|---|---|---|---|---|---|\n",
+    );
+    for o in outcomes {
+        let f = &o.front;
+        let _ = writeln!(
+            s,
+            "| {} | {:.2} | {} | {:.3} | {:.3} | {} | {} | {:.1e} | {} ({}) | {:.1} |",
+            o.name,
+            o.a_gridded,
+            f.runout_at_lab_stop
+                .map_or("(run shorter)".to_string(), |r| format!("{r:.2}")),
             f.front_speed,
             f.mean_u,
             yes_no(f.stopped),
-            f.rest_time.map_or("—".to_string(), |t| format!("{t:.1}")),
             yes_no(f.reached_end_wall),
             o.summary.solids_mass_change,
             o.summary.steps,
@@ -60,24 +96,26 @@ pub(super) fn markdown_table(outcomes: &[Outcome]) -> String {
     s
 }
 
-/// docs/collapse.md: the set-up, the figure and the table with what its columns mean, the
-/// laboratory laws, and what the runs show.
+/// docs/collapse-princeton.md: the paper's material with Princeton friction: the set-up,
+/// the figures and the tables with what their columns mean, the laws, what the runs show.
 pub(super) fn document(
     outcomes: &[Outcome],
     fidelity: Fidelity,
     table: &str,
-    figure: &str,
+    figures: &Figures,
 ) -> String {
     let mut s = String::new();
     let _ = writeln!(
         s,
-        "# Granular column collapse on a horizontal floor (issue 7)\n"
+        "# Granular column collapse of the paper's material with Princeton friction (issue 7)\n"
     );
     let _ = writeln!(
         s,
         "Generated by `cargo xtask verify collapse --fidelity {fidelity}` (xtask/src/collapse/) \
          from the runs in `runs/C-a*/{fidelity}/`; do not edit by hand. Cases: \
-         `cases/collapse/C-a{{0.5,1,3,6}}.ron` (their headers list every assumption).\n"
+         `cases/collapse/C-a{{0.5,1,3,6}}.ron` (their headers list every assumption). The \
+         glass-bead columns of the laboratory, with μ(I) and with Princeton, are in \
+         [collapse.md](collapse.md).\n"
     );
     s.push_str(
         "**Set-up.** A rectangular column of half-width L0 = 0.05 m and height H0 = a L0 \
@@ -87,8 +125,9 @@ pub(super) fn document(
          Johnson–Jackson φ = 0.1, e_w = 0.7, δ_w = 11°), not the laboratory ones. Nothing is \
          tuned.\n\n",
     );
-    let _ = writeln!(s, "![runout against a]({figure})\n");
+    let _ = writeln!(s, "![runout against a]({})\n", figures.runout);
     s.push_str(table);
+    let _ = writeln!(s, "\n![final deposits]({})\n", figures.deposits);
     s.push_str(
         "\n**Columns.** *a as gridded*: the initial solids mass over ρs εs L0², i.e. the \
          aspect ratio the grid holds (cells whose centre lies in the block are filled). \
@@ -98,7 +137,9 @@ pub(super) fn document(
          file with threshold 0.3 (the dense deposit, not its dilute fringe). *at t = \
          3√(H0/g)*: the front when the laboratory fronts have stopped. *Lajeunesse*, \
          *Lube*: λ1 a below the crossover a0, λ2 a^{2/3} above it; a range where a lies in \
-         the crossover range (both branches). *front speed*: over the last 10 % of the run. \
+         the crossover range (both branches). *grain edge*: to the easternmost column whose \
+         solids height Σ εs Δy is at least one grain diameter (docs/deposit.md). *H∞/L0*: the \
+         largest thickness at εs ≥ 0.3 over L0. *front speed*: over the last 10 % of the run. \
          *stopped?*: front speed and εs-weighted mean u_s both below 1 % of √(g H0); the \
          front moves by whole cells, so its speed resolves only (cell width)/(window). \
          *wall time*: of this run on the machine that generated the file.\n\n",
@@ -114,12 +155,15 @@ pub(super) fn document(
     s
 }
 
-/// The laboratory laws as a table, what they can be expected to say here, and the columns
-/// whose grid holds an aspect ratio off the nominal one.
+/// The laws as a table with where each was read, what they can be expected to say here,
+/// and the columns whose grid holds an aspect ratio off the nominal one.
 fn laws_section(s: &mut String, outcomes: &[Outcome], setup_note: &str) {
-    s.push_str("**Laboratory laws** (verification-notes.md §2f, compiled from Lagrée, Staron & Popinet 2011 Eqs. 3.1–3.2; not re-checked against the originals):\n\n");
-    s.push_str("| source | material | λ1 | λ2 | a0 |\n|---|---|---|---|---|\n");
-    for law in [LAJEUNESSE, LUBE] {
+    s.push_str(
+        "**The laws** (docs/collapse-laws.md: none could be read in its original paper, and \
+         the second-hand sources disagree):\n\n\
+         | law | material | λ1 | λ2 a^β: λ2 | β | a0 | read in |\n|---|---|---|---|---|---|---|\n",
+    );
+    let row = |s: &mut String, law: &ScalingLaw| {
         let a0 = if law.a0.0 == law.a0.1 {
             format!("≈ {}", law.a0.0)
         } else {
@@ -127,10 +171,38 @@ fn laws_section(s: &mut String, outcomes: &[Outcome], setup_note: &str) {
         };
         let _ = writeln!(
             s,
-            "| {} | {} | {} | {} | {a0} |",
-            law.name, law.material, law.lambda1, law.lambda2
+            "| {} | {} | {} | {} | {:.2} | {a0} | {} |",
+            law.name, law.material, law.lambda1, law.lambda2, law.exponent, law.provenance
         );
+    };
+    for law in [
+        LAJEUNESSE,
+        LAJEUNESSE_AS_KUMAR_CITES,
+        LUBE,
+        LAGREE_CONTINUUM,
+    ] {
+        row(s, &law);
     }
+    s.push_str(
+        "\n| height law | H∞/L0 = a below | above: prefactor a^β | read in |\n|---|---|---|---|\n",
+    );
+    let height_row = |s: &mut String, law: &HeightLaw| {
+        let _ = writeln!(
+            s,
+            "| {} | a ≈ {} | {} a^{:.2} | {} |",
+            law.name, law.break_a, law.prefactor, law.exponent, law.provenance
+        );
+    };
+    for law in [LAJEUNESSE_HEIGHT, LUBE_HEIGHT] {
+        height_row(s, &law);
+    }
+    let [(narrow, dn), (wide, dw)] = BALMFORTH_KERSWELL_EXPONENTS;
+    let _ = writeln!(
+        s,
+        "\nRead in a primary source (the abstract of Balmforth & Kerswell 2005, JFM 538): the \
+         runout grows as a^({narrow} ± {dn}) in narrow slots and a^({wide} ± {dw}) in wide \
+         channels, with prefactors that depend on the material."
+    );
     s.push('\n');
     s.push_str(setup_note);
     s.push_str(" The laws are evaluated at the nominal a.");
@@ -149,6 +221,42 @@ fn laws_section(s: &mut String, outcomes: &[Outcome], setup_note: &str) {
         }
     }
     s.push_str("\n\n");
+}
+
+/// The local exponents ln(r2/r1)/ln(a2/a1) of each closure's grain-edge runouts between
+/// consecutive aspect ratios from a = 3 on (the power branch), as Markdown lines.
+fn exponents_section(s: &mut String, outcomes: &[Outcome]) {
+    let mut lines = Vec::new();
+    for mu_i in [true, false] {
+        let mut points: Vec<(f64, f64)> = outcomes
+            .iter()
+            .filter(|o| o.mu_i == mu_i && o.column.aspect() >= 3.0 && !o.front.reached_end_wall)
+            .map(|o| (o.column.aspect(), o.grain_runout))
+            .collect();
+        points.sort_by(|p, q| p.0.total_cmp(&q.0));
+        for pair in points.windows(2) {
+            lines.push(format!(
+                "- {}, a = {} → {}: {:.2}",
+                if mu_i { "μ(I)" } else { "Princeton" },
+                pair[0].0,
+                pair[1].0,
+                local_exponent(pair[0], pair[1])
+            ));
+        }
+    }
+    if lines.is_empty() {
+        return;
+    }
+    s.push_str(
+        "**The power branch's exponent** (grain-edge runouts of two columns with a ≥ 3; \
+         Lajeunesse and Lube 2/3, Lagrée's continuum 0.7, Balmforth & Kerswell 0.65 ± 0.05 \
+         narrow, 0.9 ± 0.1 wide):\n\n",
+    );
+    for line in lines {
+        s.push_str(&line);
+        s.push('\n');
+    }
+    s.push('\n');
 }
 
 /// What each run shows: its runout against Lajeunesse's, whether it stopped, and its θ.
@@ -194,27 +302,37 @@ fn runs_section(s: &mut String, outcomes: &[Outcome]) {
     );
 }
 
-/// docs/collapse-mu-i.md: the μ(I) columns (glass beads as the laboratory ran them), the
-/// check's thresholds, the table, the laws and what the runs show.
+/// docs/collapse-mu-i.md (or, `both`, docs/collapse.md): the glass-bead columns with μ(I)
+/// (and with Princeton beside them), the check's thresholds, the figures, the tables, the
+/// laws and what the runs show.
 pub(super) fn document_mu_i(
     outcomes: &[Outcome],
     fidelity: Fidelity,
+    both: bool,
     table: &str,
-    figure: &str,
+    figures: &Figures,
 ) -> String {
     let mut s = String::new();
-    s.push_str("# Granular column collapse with μ(I): glass beads as the laboratory ran them (issue 43)\n\n");
-    let aspects: Vec<String> = outcomes
+    if both {
+        s.push_str("# Granular column collapse: glass beads as the laboratory ran them, with μ(I) and with Princeton (issues 7 and 43)\n\n");
+    } else {
+        s.push_str("# Granular column collapse with μ(I): glass beads as the laboratory ran them (issue 43)\n\n");
+    }
+    let mut aspects: Vec<String> = outcomes
         .iter()
+        .filter(|o| o.mu_i)
         .map(|o| o.column.aspect().to_string())
         .collect();
+    aspects.dedup();
     let _ = writeln!(
         s,
-        "Generated by `cargo xtask verify collapse --friction mu-i --fidelity {fidelity} \
-         --aspect {}` (xtask/src/collapse/) from the runs in `runs/CM-a*/{fidelity}/`; do not \
+        "Generated by `cargo xtask verify collapse --friction {} --fidelity {fidelity} \
+         --aspect {}` (xtask/src/collapse/) from the runs in `runs/CM*-a*/{fidelity}/`; do not \
          edit by hand. The columns are built from `cases/collapse/CM-a1.ron` (its header lists \
-         every assumption); the Princeton columns of the paper's material are in \
-         [collapse.md](collapse.md).\n",
+         every assumption); the paper's material with Princeton is in \
+         [collapse-princeton.md](collapse-princeton.md), the floor conditions in \
+         [collapse-floor.md](collapse-floor.md).\n",
+        if both { "both" } else { "mu-i" },
         aspects.join(",")
     );
     s.push_str(
@@ -222,45 +340,67 @@ pub(super) fn document_mu_i(
          glass beads (d = 0.53 mm, ρs = 2500 kg/m³, e = 0.9) with the μ(I) law of Jop, \
          Forterre & Pouliquen (2005) fitted for them (μ_s = tan 20.9°, μ_2 = tan 32.76°, \
          I_0 = 0.279; docs/model.md §2.4.4: μ(I) on the total solids pressure P_kin + P_c, the \
-         whole dense stress), \
-         against a free-slip west wall on a no-slip floor, in air. Nothing is tuned.\n\n\
-         **Thresholds** (issue 43): (L∞ − L0)/L0 to the *grain edge* within 25 % of \
-         Lajeunesse et al. (2005) and the deposit at rest (εs-weighted mean u_s below 1 % of √(g H0) and a still front \
-         from then on) by t = 10 √(H0/g), the runs' end.\n\n",
+         whole dense stress), against a free-slip west wall on a no-slip floor, in air. \
+         Nothing is tuned.",
     );
-    let _ = writeln!(s, "![runout against a]({figure})\n");
-    s.push_str(table);
+    if both {
+        s.push_str(
+            " Beside each μ(I) column (CM-a…) the same column with MFIX's Princeton friction \
+             (CMP-a…): the same beads, floor and grid, δ_int = 35° as the case file gives it, a \
+             Coulomb stress above μ(I)'s at rest (sin 35° = 0.57 against μ_s = 0.38), so a \
+             Princeton column that runs further does so by its θ-dependent strain scale \
+             (docs/model.md §2.4), not by weaker friction.",
+        );
+    }
     s.push_str(
-        "\n**Columns** as in [collapse.md](collapse.md); *grain edge*: the runout to the \
-         easternmost column whose solids height Σ εs Δy is at least one grain diameter (a \
-         layer about two grains deep), from the last field file: the deposit's extent as a \
-         photograph of it shows, and an edge whose definition does not change with the cell \
-         height (a cell with εs = 0.01 holds 0.1 d of grains at L0/10, half that at L0/20; \
-         docs/deposit.md); it is the runout the thresholds judge; *at rest from*: the \
-         earliest bulk sample from which the mean u_s stays below 1 % of √(g H0) and the \
-         front no longer moves, in √(H0/g).\n\n",
+        "\n\n**Thresholds** (issue 43, μ(I) columns only): (L∞ − L0)/L0 to the *grain edge* \
+         within 25 % of Lajeunesse et al. (2005) as the compiled table gives it, H∞/L0 within \
+         25 % of their height law as Kumar (2015) cites it, and the deposit at rest \
+         (εs-weighted mean u_s below 1 % of √(g H0) and a still front from then on) by t = 10 \
+         √(H0/g), the runs' end. The laws are second-hand (below, docs/collapse-laws.md): \
+         the column *(Kumar's reading)* shows the same paper as another source gives it.\n\n",
+    );
+    let _ = writeln!(s, "![runout against a]({})\n", figures.runout);
+    s.push_str(table);
+    let _ = writeln!(s, "\n![final deposits]({})\n", figures.deposits);
+    s.push_str(
+        "**Columns.** *grain edge*: the runout to the easternmost column whose solids height \
+         Σ εs Δy is at least one grain diameter (a layer about two grains deep), from the last \
+         field file: the deposit's extent as a photograph of it shows, and an edge whose \
+         definition does not change with the cell height (a cell with εs = 0.01 holds 0.1 d of \
+         grains at L0/10, half that at L0/20; docs/deposit.md); it is the runout the \
+         thresholds judge. *εs ≥ 0.01*: the bulk monitor's front (`>`: it reached the end \
+         wall, a lower bound); *εs ≥ 0.3*: the dense deposit's edge in the last field file. \
+         *H∞/L0*: the largest thickness at εs ≥ 0.3, over L0 (whole cells: L0/20 at paper, \
+         L0/10 at coarse). *at rest from*: the earliest bulk sample from which the mean u_s \
+         stays below 1 % of √(g H0) and the front no longer moves, in √(H0/g). Second \
+         table: *a as gridded*, the initial solids mass over ρs εs L0²; *at t = 3√(H0/g)*: \
+         the εs ≥ 0.01 front when the laboratory fronts have stopped; *front speed* over the \
+         last 10 % of the run; *wall time* of the run on the machine that wrote the page.\n\n",
     );
     laws_section(
         &mut s,
         outcomes,
-        "Lajeunesse et al. used glass beads of about 1 mm in air (floor and size not re-checked \
-         against the original); this set-up \
+        "Lajeunesse et al. used glass beads in a rectangular channel, in air; this set-up \
          has glass beads of 0.53 mm with Jop et al.'s μ(I) fit, in air, on a no-slip floor, \
-         in a plane 2-D flow. For comparison, the 2-D μ(I) continuum of Lagrée, Staron & \
-         Popinet (2011) gives 2.2 a below a ≈ 7 and 3.9 a^0.7 above it (verification-notes.md \
-         §2f, not re-checked against the original): 1.1, 2.2, 6.6 and 13.2 at a = 0.5, 1, 3 \
-         and 6.",
+         in a plane 2-D flow. Lagrée, Staron & Popinet's 2-D μ(I) continuum is the \
+         like-for-like simulation; their abstract says its runouts fall systematically short \
+         of the 2-D contact-dynamics simulations they compared it with.",
     );
+    exponents_section(&mut s, outcomes);
     s.push_str("**What the runs show:**\n\n");
     for o in outcomes {
         let f = &o.front;
-        let (lo, hi) = LAJEUNESSE.runout(o.column.aspect());
+        let a = o.column.aspect();
+        let (lo, hi) = LAJEUNESSE.runout(a);
         let _ = writeln!(
             s,
-            "- {} (a = {}): runout {:.2} to the grain edge, {}{:.2} (εs ≥ 0.01) and {:.2} \
-             (εs ≥ 0.3) against Lajeunesse's {}; {}.",
+            "- {} ({}, a = {}): runout {:.2} to the grain edge, {}{:.2} (εs ≥ 0.01) and {:.2} \
+             (εs ≥ 0.3) against Lajeunesse's {} ({} in Kumar's reading); H∞/L0 {:.2} against \
+             {:.2}; {}.",
             o.name,
-            o.column.aspect(),
+            closure(o),
+            a,
             o.grain_runout,
             if f.reached_end_wall { "> " } else { "" },
             f.runout,
@@ -270,6 +410,9 @@ pub(super) fn document_mu_i(
             } else {
                 format!("{lo:.2}–{hi:.2}")
             },
+            LAJEUNESSE_AS_KUMAR_CITES.label(a),
+            o.height,
+            LAJEUNESSE_HEIGHT.height(a),
             match f.rest_time {
                 Some(t) => format!("at rest from {t:.1} √(H0/g)"),
                 None => format!(

@@ -10,14 +10,18 @@ use runout_case::{Case, Fidelity};
 use runout_output::{RunStatus, RunSummary};
 use runout_run::store::{self, finished_run, Request, Reuse, Stored};
 
-use super::column::Column;
+use super::column::{is_mu_i, Column};
 use super::fields::{last_fields, median};
 use super::front::{front_metrics, read_bulk, FrontMetrics};
-use runout_post::deposit::{distal_edge, grain_edge, profile, DENSE_EPS_S, GRAIN_EDGE_DIAMETERS};
+use runout_post::deposit::{
+    distal_edge, grain_edge, profile, DepositColumn, DENSE_EPS_S, GRAIN_EDGE_DIAMETERS,
+};
 
 /// One collapse run and what it says.
 pub(super) struct Outcome {
     pub(super) name: String,
+    /// the friction law is μ(I) (the check's thresholds judge only these columns)
+    pub(super) mu_i: bool,
     pub(super) column: Column,
     /// a of the column as the grid holds it: initial solids mass / (ρs εs0 L0²)
     pub(super) a_gridded: f64,
@@ -28,6 +32,10 @@ pub(super) struct Outcome {
     /// runout to the grain edge (solids height Σ εs Δy ≥ d, `runout_post::deposit`) in the
     /// last field file: the check's runout
     pub(super) grain_runout: f64,
+    /// H∞/L0: the largest dense (εs ≥ 0.3) thickness of the last field file over L0
+    pub(super) height: f64,
+    /// the deposit profile of the last field file (`runout_post::deposit::profile`)
+    pub(super) deposit: Vec<DepositColumn>,
     /// median θ of the cells with εs ≥ εs,min at the end [m² s⁻²]
     pub(super) deposit_theta: f64,
     /// largest θ of the dilute fringe (10⁻⁴ ≤ εs < 10⁻²) at the end [m² s⁻²]
@@ -88,10 +96,27 @@ pub(super) fn run_one(
             done.display()
         );
     }
-    let summary = stored.summary().clone();
+    measure(case, fidelity, &done, stored.summary().clone())
+}
+
+/// The finished run of `case` at `fidelity` in runs/<case>/<fidelity>/, measured, if the
+/// store holds one of the same resolved case (nothing is run).
+pub(super) fn finished(root: &Path, case: &Case, fidelity: Fidelity) -> Result<Option<Outcome>> {
+    let done = root.join("runs").join(&case.name).join(fidelity.name());
+    match finished_run(&done, &case.at_fidelity(fidelity)) {
+        Some(summary) => measure(case, fidelity, &done, summary).map(Some),
+        None => Ok(None),
+    }
+}
+
+/// Measures the finished run of `case` at `fidelity` in `done`.
+fn measure(case: &Case, fidelity: Fidelity, done: &Path, summary: RunSummary) -> Result<Outcome> {
+    let column = Column::of(case)?;
+    let resolved = case.at_fidelity(fidelity);
+    let grid = resolved.grid()?;
     let rows = read_bulk(&done.join("bulk.csv"))?;
     let front = front_metrics(&rows, &column, grid.x.end());
-    let (eps, theta) = last_fields(&done)?;
+    let (eps, theta) = last_fields(done)?;
     let solids = case
         .solids
         .first()
@@ -117,9 +142,17 @@ pub(super) fn run_one(
         grid.x.faces(),
         GRAIN_EDGE_DIAMETERS * solids.diameter,
     ));
+    let height = deposit
+        .iter()
+        .map(|c| c.thickness_dense)
+        .fold(0.0, f64::max)
+        / column.l0;
     Ok(Outcome {
         name: case.name.clone(),
+        mu_i: is_mu_i(case),
         grain_runout,
+        height,
+        deposit,
         column,
         a_gridded,
         cells: (grid.nx(), grid.ny()),
