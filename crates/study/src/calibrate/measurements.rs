@@ -3,7 +3,9 @@
 //! A CSV file with a header line; lines starting with `#` are comments. The header says
 //! what is measured (docs/calibrate.md):
 //! - `gate`, `speed_m_s`: front speed at each gate (cases/flume/gates.csv; gate `L3` or `3`;
-//!   an empty speed is a gate without a measurement) against the run's `gates.csv`;
+//!   an empty speed is a gate without a measurement) against the run's front speed at the
+//!   gates of its `gates.csv`, interpolated in time from its front series so that it is
+//!   continuous in the parameters ([`runout_post::gates::speed_at_gate`]);
 //! - `t`, `x`: front position x [m, the case's x] at time t [s] against the run's front
 //!   (`front.csv`, else `bulk.csv`'s `front_x`), interpolated linearly in t;
 //! - `y` and one of `eps_s`, `u_s`, `theta`, `u_g`, `v_g`: a profile against the run's
@@ -21,9 +23,9 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{bail, Context, Result};
 
-use crate::metrics::gate_speeds;
 use runout_post::folder::csv_files;
 use runout_post::front::{front_series, FrontDefinition};
+use runout_post::gates::interpolated_gate_speeds;
 use runout_post::table::Table;
 
 /// The profile columns a measured profile may compare.
@@ -173,8 +175,7 @@ impl Measurements {
     pub fn misfit(&self, dir: &Path) -> Result<Misfit> {
         match &self.kind {
             Kind::GateSpeeds(measured) => {
-                let simulated =
-                    gate_speeds(dir).with_context(|| format!("{}: no gates.csv", dir.display()))?;
+                let simulated = interpolated_gate_speeds(dir).map_err(anyhow::Error::msg)?;
                 let mut diffs = Vec::new();
                 let mut missing = Vec::new();
                 for ((g, v), s) in measured.iter().zip(&self.sigma) {
@@ -512,7 +513,13 @@ mod tests {
             "gate,x,t_cross,speed\n1e0,2.15,0.5,3.0\n2e0,2.6,0.6,5.0\n",
         )
         .unwrap();
-        std::fs::write(dir.join("front.csv"), "t,front_x\n0,0\n1,2\n").unwrap();
+        // a front at 2 m/s: 2 m/s at every gate (the speed is the front series', not the
+        // sampled `speed` column's)
+        std::fs::write(
+            dir.join("front.csv"),
+            "t,front_x\n0,0\n0.5,1\n1,2\n1.5,3\n2,4\n",
+        )
+        .unwrap();
         let gates = |text: &str| {
             let kind = parse(text).unwrap().0;
             Measurements {
@@ -522,9 +529,10 @@ mod tests {
                 kind,
             }
         };
-        // RMS of (3 − 4, 5 − 4) = 1, the report's MSE under a square root; χ² = 2 × 1/0.5²
-        let m = gates("gate,speed_m_s\nL1,4\nL2,4\n").misfit(&dir).unwrap();
-        assert_eq!((m.rms, m.chi2, m.compared), (1.0, 8.0, 2));
+        // RMS of (2 − 4, 2 − 3) = √2.5; χ² = (4 + 1)/0.5²
+        let m = gates("gate,speed_m_s\nL1,4\nL2,3\n").misfit(&dir).unwrap();
+        assert!((m.rms - 2.5f64.sqrt()).abs() < 1e-12 && (m.chi2 - 20.0).abs() < 1e-9);
+        assert_eq!(m.compared, 2);
         let m = gates("gate,speed_m_s\nL1,4\nL3,4\n").misfit(&dir).unwrap();
         assert!(m.rms.is_infinite());
         assert_eq!(m.missing, ["gate L3 not crossed"]);

@@ -9,8 +9,8 @@ use std::path::Path;
 use anyhow::{bail, Context, Result};
 
 use super::measurements::{interpolate, PROFILE_COLUMNS};
-use crate::metrics::gate_speeds;
 use runout_post::front::{front_series, FrontDefinition};
+use runout_post::gates::interpolated_gate_speeds;
 use runout_post::table::Table;
 
 /// What to take from the run.
@@ -106,8 +106,7 @@ pub fn measurements_from_run(
             }
         }
         Measured::GateSpeeds => {
-            let speeds =
-                gate_speeds(dir).with_context(|| format!("{}: no gates.csv", dir.display()))?;
+            let speeds = interpolated_gate_speeds(dir).map_err(anyhow::Error::msg)?;
             if speeds.is_empty() {
                 bail!("{}: the front crossed no gate", dir.display());
             }
@@ -191,7 +190,7 @@ mod tests {
             panic!("gate speeds")
         };
         assert!(
-            v[0].0 == 2 && (v[0].1 - 3.5).abs() < 0.5 && v[0].1 != 3.5,
+            v[0].0 == 2 && (v[0].1 - 2.0).abs() < 0.5 && v[0].1 != 2.0,
             "{v:?}"
         );
         assert!(measurements_from_run(&dir, &Measured::Front(vec![2.0]), 0.01, None).is_err());
