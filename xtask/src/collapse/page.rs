@@ -393,16 +393,16 @@ pub(super) fn document_mu_i(
         let f = &o.front;
         let a = o.column.aspect();
         let (lo, hi) = LAJEUNESSE.runout(a);
+        let lower = if f.reached_end_wall { "> " } else { "" };
         let _ = writeln!(
             s,
-            "- {} ({}, a = {}): runout {:.2} to the grain edge, {}{:.2} (εs ≥ 0.01) and {:.2} \
-             (εs ≥ 0.3) against Lajeunesse's {} ({} in Kumar's reading); H∞/L0 {:.2} against \
-             {:.2}; {}.",
+            "- {} ({}, a = {}): runout {lower}{:.2} to the grain edge, {lower}{:.2} (εs ≥ 0.01) \
+             and {:.2} (εs ≥ 0.3) against Lajeunesse's {} ({} in Kumar's reading); H∞/L0 {:.2} \
+             against {:.2}; {}.",
             o.name,
             closure(o),
             a,
             o.grain_runout,
-            if f.reached_end_wall { "> " } else { "" },
             f.runout,
             o.dense_runout,
             if lo == hi {
