@@ -253,6 +253,22 @@ mod tests {
         ]
     }
 
+    /// φ (truth 0.3) and the internal friction angle δ_int (truth 30°, the case's 35°).
+    fn specularity_and_friction_angle(bounds: [&str; 2]) -> Vec<TrueParam> {
+        vec![
+            TrueParam {
+                path: "specularity".into(),
+                truth: 0.3,
+                bounds: bounds[0].into(),
+            },
+            TrueParam {
+                path: "solids[0].internal_friction_angle".into(),
+                truth: 30.0,
+                bounds: bounds[1].into(),
+            },
+        ]
+    }
+
     /// A family-M truth study at smoke fidelity to 0.3 s.
     fn smoke(
         params: Vec<TrueParam>,
@@ -557,5 +573,23 @@ mod tests {
             settings(3, 12, 0),
         );
         table_row("phi0.3-ew0.7", &study);
+    }
+
+    /// The second two-parameter row: (φ, δ_int) = (0.3, 30°) from the same fronts, to see
+    /// whether the internal friction angle is a parameter the fronts separate from φ (e_w
+    /// is not); `cargo test --release -p runout-study recovery_table_friction_angle --
+    /// --ignored --nocapture`.
+    #[test]
+    #[ignore]
+    fn recovery_table_friction_angle() {
+        let times: Vec<f64> = (2..=10).map(|k| k as f64 / 10.0).collect();
+        let study = coarse(
+            specularity_and_friction_angle(["0.05:1:0.1:log", "20:45:35"]),
+            None,
+            Measured::Front(times),
+            0.005,
+            settings(3, 12, 0),
+        );
+        table_row("phi0.3-dint30", &study);
     }
 }
