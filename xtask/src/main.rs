@@ -131,6 +131,10 @@ enum Task {
         /// at most this many runs per side pinning the edges of the range Δχ² ≤ 1 (1-D)
         #[arg(long, default_value_t = 2)]
         profile: usize,
+        /// stations of the profile of χ² along the loosely constrained parameter (2-D; 0: none),
+        /// up to 7 runs each: the range then follows a curved valley to its ends
+        #[arg(long, default_value_t = 5)]
+        valley: usize,
         /// study name: the folder under runs/calibrate/ (default: the case name)
         #[arg(long)]
         name: Option<String>,
@@ -311,6 +315,7 @@ fn main() -> Result<()> {
             xtol,
             ftol,
             profile,
+            valley,
             name,
             dry_run,
         } => calibrate::run(
@@ -328,6 +333,7 @@ fn main() -> Result<()> {
                 xtol,
                 ftol,
                 profile,
+                valley,
                 name,
                 dry_run,
                 program: "cargo xtask",

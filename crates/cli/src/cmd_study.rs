@@ -108,6 +108,10 @@ pub struct CalibrateArgs {
     /// at most this many runs per side pinning the edges of the range Δχ² ≤ 1 (1-D)
     #[arg(long, default_value_t = 2)]
     pub profile: usize,
+    /// stations of the profile of χ² along the loosely constrained parameter (2-D; 0: none),
+    /// up to 7 runs each: the range then follows a curved valley to its ends
+    #[arg(long, default_value_t = 5)]
+    pub valley: usize,
     /// study name: the folder under runs/calibrate/ (default: the case name)
     #[arg(long)]
     pub name: Option<String>,
@@ -138,6 +142,7 @@ pub fn calibrate(args: &CalibrateArgs) -> Result<()> {
             xtol: args.xtol,
             ftol: args.ftol,
             profile: args.profile,
+            valley: args.valley,
             name: args.name.clone(),
             dry_run: args.dry_run,
             program: PROGRAM,

@@ -349,6 +349,7 @@ mod tests {
             xtol: 1e-6,
             ftol: 1e-12,
             profile: 0,
+            valley: 0,
         };
         let c = calibrate(&[param(-1.0, 1.0), b], &f, &s).unwrap();
         let r = super::super::uncertainty::range(&c);

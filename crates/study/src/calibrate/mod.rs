@@ -20,6 +20,7 @@ pub mod path;
 pub mod recovery;
 pub mod synthetic;
 pub mod uncertainty;
+pub mod valley;
 
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -64,6 +65,8 @@ pub struct Options {
     pub ftol: f64,
     /// evaluations per side pinning the edges of the range (1-D)
     pub profile: usize,
+    /// stations of the profile along the loosely constrained parameter (2-D; 0: none)
+    pub valley: usize,
     /// study name (default: the case name)
     pub name: Option<String>,
     /// check the input and print the plan, run nothing
@@ -362,6 +365,12 @@ pub fn run(root: &Path, opts: &Options) -> Result<()> {
         opts.refine,
         if params.len() == 1 {
             format!(" and {} per side for the range's edges", opts.profile)
+        } else if opts.valley > 0 {
+            format!(
+                " and at most {} along the valley ({} stations) for the range",
+                opts.valley * valley::STATION_EVALUATIONS,
+                opts.valley
+            )
         } else {
             String::new()
         },
@@ -405,6 +414,7 @@ pub fn run(root: &Path, opts: &Options) -> Result<()> {
         xtol: opts.xtol,
         ftol: opts.ftol,
         profile: opts.profile,
+        valley: opts.valley,
     };
     let c = calibrate(&params, &model, &settings)?;
     let range = uncertainty::range(&c);

@@ -25,6 +25,7 @@ use argmin::solver::neldermead::NelderMead;
 
 use super::brent::{self, Bracket};
 use super::uncertainty;
+use super::valley::{self, Valley};
 
 /// One calibrated parameter: bounds, start and scale.
 #[derive(Clone, Debug, PartialEq)]
@@ -151,6 +152,8 @@ pub enum Stage {
     Refine,
     /// pinning an edge of the range Δχ² ≤ 1
     Profile,
+    /// a station of the profile along the valley (2-D)
+    Valley,
 }
 
 impl Stage {
@@ -161,6 +164,7 @@ impl Stage {
             Stage::Scan => "scan",
             Stage::Refine => "refine",
             Stage::Profile => "profile",
+            Stage::Valley => "valley",
         }
     }
 }
@@ -195,6 +199,9 @@ pub struct Settings {
     pub ftol: f64,
     /// at most this many evaluations per side pinning the edges of the range (1-D)
     pub profile: usize,
+    /// stations of the profile of χ² along the loosely constrained parameter (2-D, 0: none;
+    /// [`super::valley`]), at most [`super::valley::STATION_EVALUATIONS`] evaluations each
+    pub valley: usize,
 }
 
 /// A finished calibration.
@@ -206,6 +213,8 @@ pub struct Calibration {
     pub evaluations: Vec<Evaluation>,
     /// index of the best evaluation
     pub best: usize,
+    /// the profile of χ² along the valley (2-D with `Settings::valley` stations)
+    pub valley: Option<Valley>,
 }
 
 impl Calibration {
@@ -438,6 +447,59 @@ fn pin_edges(ev: &Evaluator, settings: &Settings) -> Result<()> {
     Ok(())
 }
 
+/// The profile of χ² along the parameter the region is loosest along ([`valley`]): its
+/// stations evenly spaced over the box, walked outward from the best evaluation in two
+/// chains (run at once when `settings.jobs` ≥ 2).
+fn trace_valley(ev: &Evaluator, settings: &Settings) -> Result<Valley> {
+    let units = |e: &Evaluation| [ev.params[0].unit(e.x[0]), ev.params[1].unit(e.x[1])];
+    let (points, best) = {
+        let done = ev.done.lock().expect("no poisoned lock");
+        let points: Vec<([f64; 2], f64)> = done
+            .iter()
+            .filter(|e| e.chi2.is_finite())
+            .map(|e| (units(e), e.chi2))
+            .collect();
+        let best = best_index(&done).map(|k| (units(&done[k]), done[k].chi2));
+        (points, best.expect("the scan had one"))
+    };
+    let threshold = || {
+        let done = ev.done.lock().expect("no poisoned lock");
+        best_index(&done).map_or(f64::INFINITY, |k| done[k].chi2) + uncertainty::DELTA_CHI2_2D
+    };
+    let along = valley::loose_axis(&points, best.1, best.1 + uncertainty::DELTA_CHI2_2D);
+    let across = 1 - along;
+    let (right, left) = valley::chains(&scan_points(settings.valley), best.0[along]);
+    let chi2 = |q: f64, t: f64| -> Result<Option<f64>> {
+        let mut u = [0.0; 2];
+        (u[along], u[across]) = (q, t);
+        let x: Vec<f64> = (0..2).map(|d| ev.params[d].value(u[d])).collect();
+        let f = ev.evaluate(x, Stage::Valley)?;
+        Ok(Some(if f.is_finite() { f } else { ev.penalty }))
+    };
+    let walked = Mutex::new(Vec::new());
+    let first_error = Mutex::new(None);
+    crate::jobs::run_queue(
+        [right, left],
+        settings.jobs.min(2),
+        || first_error.lock().expect("no poisoned lock").is_none(),
+        |qs| match valley::walk_chain(&qs, best.0[across], settings.xtol, threshold, chi2) {
+            Ok(stations) => walked.lock().expect("no poisoned lock").extend(stations),
+            Err(e) => {
+                first_error
+                    .lock()
+                    .expect("no poisoned lock")
+                    .get_or_insert(e);
+            }
+        },
+    )?;
+    if let Some(e) = first_error.into_inner().expect("no poisoned lock") {
+        return Err(e);
+    }
+    let mut stations = walked.into_inner().expect("no poisoned lock");
+    stations.sort_by(|a, b| a.q.total_cmp(&b.q));
+    Ok(Valley { along, stations })
+}
+
 /// The grid indices of evaluation `best` if it is a scan point (of a scan of two or more
 /// points per parameter).
 fn grid_cell(
@@ -507,15 +569,21 @@ pub fn calibrate(params: &[Param], model: &dyn Model, settings: &Settings) -> Re
             refine_2d_without_scan(&ev, u0, settings)?;
         }
     }
-    if params.len() == 1 {
+    let valley = if params.len() == 1 {
         pin_edges(&ev, settings)?;
-    }
+        None
+    } else if settings.valley > 0 {
+        Some(trace_valley(&ev, settings)?)
+    } else {
+        None
+    };
     let evaluations = ev.done.into_inner().expect("no poisoned lock");
     let best = best_index(&evaluations).expect("the scan had one");
     Ok(Calibration {
         params: params.to_vec(),
         evaluations,
         best,
+        valley,
     })
 }
 
@@ -541,6 +609,7 @@ mod tests {
             xtol: 1e-6,
             ftol: 1e-12,
             profile: 0,
+            valley: 0,
         }
     }
 

@@ -205,6 +205,7 @@ mod tests {
             xtol: 0.002,
             ftol: 0.05,
             profile,
+            valley: 0,
         }
     }
 
@@ -360,7 +361,8 @@ mod tests {
     /// 1 mm, a 3 × 3 scan of φ ∈ [0.1, 0.5] (log) × e_w ∈ [0.5, 0.95] and Nelder–Mead from the
     /// best scan cell: the region Δχ² ≤ 2.30 contains the truth. (The wall friction angle is
     /// the floor's third field, but the front hardly moves with it: 0.4 mm at 0.3 s from 11°
-    /// to 20°, docs/calibrate.md.) About 20 smoke runs.
+    /// to 20°, docs/calibrate.md.) The region follows the valley of χ² (5 stations of its
+    /// profile). About 20 smoke runs and up to 35 along the valley.
     #[test]
     fn smoke_truth_of_two_wall_parameters_is_recovered_within_its_region() {
         let dir = scratch("two");
@@ -369,7 +371,10 @@ mod tests {
             None,
             Measured::Front(vec![0.1, 0.15, 0.2, 0.25, 0.28, 0.3]),
             1e-3,
-            settings(3, 10, 0),
+            Settings {
+                valley: 5,
+                ..settings(3, 10, 0)
+            },
         );
         let r = recover(&root(), &study, &dir).unwrap();
         assert_recovered(&r, "φ, e_w from fronts, σ = 1 mm");
@@ -557,9 +562,10 @@ mod tests {
     }
 
     /// The two-parameter row of docs/calibrate.md: family M at coarse fidelity, truth
-    /// (φ, e_w) = (0.3, 0.7), its fronts at 0.2–1.0 s with σ = 5 mm, a 3 × 3 scan and
-    /// Nelder–Mead (it misses the truth: φ and e_w trade off along a valley of the fronts'
-    /// χ², docs/calibrate.md); `cargo test --release -p runout-study recovery_table_two_parameters --
+    /// (φ, e_w) = (0.3, 0.7), its fronts at 0.2–1.0 s with σ = 5 mm, a 3 × 3 scan,
+    /// Nelder–Mead and 7 stations of the profile along the valley (φ and e_w trade off along
+    /// a valley of the fronts' χ²: without the profile the region missed the truth,
+    /// docs/calibrate.md); `cargo test --release -p runout-study recovery_table_two_parameters --
     /// --ignored --nocapture`.
     #[test]
     #[ignore]
@@ -570,7 +576,10 @@ mod tests {
             None,
             Measured::Front(times),
             0.005,
-            settings(3, 12, 0),
+            Settings {
+                valley: 7,
+                ..settings(3, 12, 0)
+            },
         );
         table_row("phi0.3-ew0.7", &study);
     }
@@ -588,7 +597,10 @@ mod tests {
             None,
             Measured::Front(times),
             0.005,
-            settings(3, 12, 0),
+            Settings {
+                valley: 7,
+                ..settings(3, 12, 0)
+            },
         );
         table_row("phi0.3-dint30", &study);
     }

@@ -124,14 +124,41 @@ pub fn range(c: &Calibration) -> Range {
             .iter()
             .map(|e| ([c.params[0].unit(e.x[0]), c.params[1].unit(e.x[1])], e.chi2))
             .collect();
-        let fitted = ellipse::projections(&units, DELTA_CHI2_2D);
-        if let Some(axes) = fitted {
+        let widened = match &c.valley {
+            Some(v) => {
+                let (q, t) = (v.along, 1 - v.along);
+                let u = [c.params[0].unit(best.x[0]), c.params[1].unit(best.x[1])];
+                v.projections((u[q], u[t], best.chi2), threshold)
+                    .map(|[pq, pt]| {
+                        let mut axes = [(0.0, 0.0); 2];
+                        (axes[q], axes[t]) = (pq, pt);
+                        axes
+                    })
+            }
+            None => ellipse::projections(&units, DELTA_CHI2_2D),
+        };
+        if let Some(axes) = widened {
             for (d, (lo, hi)) in axes.into_iter().enumerate() {
                 let p = &c.params[d];
                 bounds[d].0 = bounds[d].0.min(p.value(lo.clamp(0.0, 1.0)));
                 bounds[d].1 = bounds[d].1.max(p.value(hi.clamp(0.0, 1.0)));
             }
         }
+        let how = match (&c.valley, widened.is_some()) {
+            (Some(v), true) => format!(
+                ", widened to the projections of the profile of χ² along {} ({} stations, \
+                 calibrate/valley.rs)",
+                c.params[v.along].name,
+                v.stations.len()
+            ),
+            (Some(_), false) => " (no station of the profile along the valley lies inside)".into(),
+            (None, true) => ", widened to the projections of the region Δχ² ≤ 2.30 of a quadratic \
+                             fitted to the best evaluations"
+                .into(),
+            (None, false) => " (the quadratic fitted to the best evaluations has no minimum: the \
+                              scan grid and the simplex's points only)"
+                .into(),
+        };
         return Range {
             delta_chi2: DELTA_CHI2_2D,
             threshold,
@@ -139,15 +166,8 @@ pub fn range(c: &Calibration) -> Range {
             bracketed: (false, false),
             elsewhere: 0,
             method: format!(
-                "the bounding box of the {} evaluations with Δχ² ≤ 2.30{}",
-                inside.len(),
-                if fitted.is_some() {
-                    ", widened to the projections of the region Δχ² ≤ 2.30 of a quadratic \
-                     fitted to the best evaluations"
-                } else {
-                    " (the quadratic fitted to the best evaluations has no minimum: the scan \
-                     grid and the simplex's points only)"
-                }
+                "the bounding box of the {} evaluations with Δχ² ≤ 2.30{how}",
+                inside.len()
             ),
         };
     }
@@ -197,6 +217,7 @@ mod tests {
             xtol: 1e-4,
             ftol: 1e-3,
             profile,
+            valley: 0,
         }
     }
 
@@ -321,5 +342,47 @@ mod tests {
             let width = |b: &[(f64, f64)]| b[d].1 - b[d].0;
             assert!(width(&boxes[1]) <= width(&boxes[0]), "{boxes:?}");
         }
+    }
+
+    /// A curved valley where the optimum found is not the truth: χ² of a banana whose floor
+    /// t = 0.3 + 0.8 (q − 0.6)² lies within Δχ² ≤ 2.30 from q = 0.22 to 0.98, the truth at
+    /// (0.6, 0.3), a 3 × 3 scan and 6 Nelder–Mead steps (a short refinement, as a real one
+    /// is). The profile along the valley (9 stations) gives the region's projections to
+    /// the stations' spacing, where the box of the evaluations and the fitted quadratic alone
+    /// do not reach the ends of q's range.
+    #[test]
+    fn a_curved_valley_is_followed_to_its_ends() {
+        let banana = |x: &[f64]| {
+            let floor = 0.3 + 0.8 * (x[0] - 0.6).powi(2);
+            ((x[1] - floor) / 0.03).powi(2) + ((x[0] - 0.6) / 0.25).powi(2)
+        };
+        let (mut q, mut t) = (param(0.0, 1.0, 0.1), param(0.0, 1.0, 0.1));
+        (q.name, t.name) = ("q".into(), "t".into());
+        let params = [q, t];
+        let short = Settings {
+            valley: 0,
+            ..settings(3, 6, 0)
+        };
+        let without = range(&calibrate(&params, &banana, &short).unwrap());
+        let with = range(&calibrate(&params, &banana, &Settings { valley: 9, ..short }).unwrap());
+        // brute force: q ∈ 0.6 ± 0.25 √2.30, t from 0.3 − 0.03 √2.30 to ~0.416
+        let q_edges = (0.6 - 0.25 * 2.30f64.sqrt(), 0.6 + 0.25 * 2.30f64.sqrt());
+        let (q_low, q_high) = with.bounds[0];
+        assert!((q_low - q_edges.0).abs() < 0.01, "{with:?}");
+        assert!((q_high - q_edges.1).abs() < 0.01, "{with:?}");
+        let (t_low, t_high) = with.bounds[1];
+        assert!(
+            (t_low - (0.3 - 0.03 * 2.30f64.sqrt())).abs() < 0.01,
+            "{with:?}"
+        );
+        assert!(t_high > 0.40 && t_high < 0.43, "{with:?}");
+        assert!(
+            with.method.contains("profile of χ² along q"),
+            "{}",
+            with.method
+        );
+        let span = |r: &Range| r.bounds[0].1 - r.bounds[0].0;
+        println!("without the profile: {without:?}\nwith it: {with:?}");
+        assert!(span(&without) < 0.9 * span(&with), "{without:?} {with:?}");
     }
 }
