@@ -7,6 +7,7 @@ use anyhow::{Context, Result};
 use serde::Serialize;
 
 use super::optimise::{Calibration, Param};
+use super::scatter::{self, Scatter};
 use super::uncertainty::Range;
 use crate::plots::{self, HeatCell, Heatmap, Mark, Panel, Series, BLACK_INDEX};
 use crate::sweep::csv_field;
@@ -80,6 +81,7 @@ struct Summary<'a> {
     rms_at_optimum: f64,
     reduced_chi2: f64,
     range: &'a Range,
+    model_scatter: Option<Scatter>,
     evaluations: usize,
     evaluations_without_misfit: usize,
 }
@@ -101,6 +103,35 @@ fn reduced_chi2(c: &Calibration, points: usize) -> f64 {
         f64::NAN
     } else {
         c.optimum().chi2 / dof as f64
+    }
+}
+
+/// The summary's line on the model's scatter between neighbouring runs ([`scatter`]).
+fn scatter_note(s: Option<&Scatter>, cx: &StudyInfo) -> String {
+    let Some(s) = s else {
+        return format!(
+            "\nThe model's scatter: no two evaluations within {} of each other (unit \
+             coordinates) to measure it.\n",
+            scatter::CLOSE
+        );
+    };
+    let measured = format!(
+        "\nThe model's scatter between neighbouring runs ({} pairs at most {:.3} apart in unit \
+         coordinates): σ_model = {:.2} σ ({}).",
+        s.pairs, s.widest, s.ratio, cx.sigma
+    );
+    if s.reliable() {
+        format!("{measured}\n")
+    } else {
+        format!(
+            "{measured} **Above {:.2} σ: the range is not reliable.** χ² moves by about 2 × {:.2} \
+             √n between runs that differ only by the grid's wiggle, so its minimum sits on a \
+             favourable wiggle; a σ of at least 3 σ_model ({:.2} × the σ used) is one the \
+             scatter does not dominate, or a finer fidelity scatters less.\n",
+            scatter::RELIABLE_RATIO,
+            s.ratio,
+            3.0 * s.ratio
+        )
     }
 }
 
@@ -136,6 +167,7 @@ pub fn write_summary(dir: &Path, c: &Calibration, r: &Range, cx: &StudyInfo) -> 
         rms_at_optimum: best.rms,
         reduced_chi2: reduced,
         range: r,
+        model_scatter: scatter::of(c),
         evaluations: c.evaluations.len(),
         evaluations_without_misfit: c.evaluations.iter().filter(|e| !e.chi2.is_finite()).count(),
     };
@@ -203,6 +235,7 @@ pub fn write_summary(dir: &Path, c: &Calibration, r: &Range, cx: &StudyInfo) -> 
              would be wider).\n"
         ));
     }
+    md.push_str(&scatter_note(summary.model_scatter.as_ref(), cx));
     for (p, x) in c.params.iter().zip(&best.x) {
         if *x == p.lo || *x == p.hi {
             md.push_str(&format!(
@@ -324,7 +357,8 @@ pub fn draw(path: &Path, c: &Calibration, r: &Range, cx: &StudyInfo) -> Result<(
 
 #[cfg(test)]
 mod tests {
-    use super::super::optimise::{calibrate, Settings};
+    use super::super::optimise::{calibrate, Model, Outcome, Settings};
+    use super::super::uncertainty;
     use super::*;
 
     fn param(lo: f64, hi: f64) -> Param {
@@ -373,6 +407,58 @@ mod tests {
         let csv = std::fs::read_to_string(dir.join("evaluations.csv")).unwrap();
         assert_eq!(csv.lines().count(), c.evaluations.len() + 1);
         assert!(dir.join("landscape.svg").exists() && dir.join("summary.json").exists());
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    /// A model whose outputs wiggle by 0.5 σ from run to run: the summary measures the
+    /// scatter from Brent's clustered runs and says the range is not reliable; a smooth model
+    /// is said to be reliable.
+    #[test]
+    fn the_summary_states_the_model_scatter() {
+        struct Wiggly(f64);
+        impl Model for Wiggly {
+            fn evaluate(&self, x: &[f64]) -> Result<Outcome> {
+                let wiggle = |i: usize| self.0 * ((x[0] * 7919.0 + i as f64 * 13.0).sin());
+                let residuals: Vec<f64> = (0..6).map(|i| (x[0] - 0.3) * 10.0 + wiggle(i)).collect();
+                Ok(Outcome {
+                    chi2: residuals.iter().map(|r| r * r).sum(),
+                    rms: f64::NAN,
+                    note: String::new(),
+                    residuals,
+                })
+            }
+        }
+        let cx = StudyInfo {
+            title: "test".into(),
+            measurements: "none".into(),
+            unit: "m/s",
+            sigma: "σ = 1".into(),
+            points: 6,
+            command: "cargo xtask calibrate".into(),
+            fields: vec![vec!["a".into()]],
+        };
+        let settings = Settings {
+            scan: 5,
+            refine: 12,
+            jobs: 1,
+            xtol: 0.002,
+            ftol: 0.05,
+            profile: 2,
+            valley: 0,
+        };
+        let dir = std::env::temp_dir().join(format!("runout-scatter-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        for (amplitude, reliable) in [(0.7, false), (0.0, true)] {
+            let c = calibrate(&[param(0.0, 1.0)], &Wiggly(amplitude), &settings).unwrap();
+            let s = scatter::of(&c).expect("Brent clusters its runs");
+            assert_eq!(s.reliable(), reliable, "{s:?}");
+            let md = write_summary(&dir, &c, &uncertainty::range(&c), &cx).unwrap();
+            assert!(
+                md.contains("The model's scatter between neighbouring runs"),
+                "{md}"
+            );
+            assert_eq!(md.contains("the range is not reliable"), !reliable, "{md}");
+        }
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

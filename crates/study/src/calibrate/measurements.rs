@@ -75,6 +75,8 @@ pub struct Misfit {
     pub missing: Vec<String>,
     /// what the run's front is (front measurements)
     pub front: Option<FrontDefinition>,
+    /// (s_i − m_i)/σ_i of every measured point in order; empty if a point is missing
+    pub residuals: Vec<f64>,
 }
 
 impl Misfit {
@@ -89,12 +91,18 @@ impl Misfit {
         } else {
             (f64::INFINITY, f64::INFINITY)
         };
+        let residuals = if missing.is_empty() {
+            diffs.iter().map(|(d, s)| d / s).collect()
+        } else {
+            Vec::new()
+        };
         Misfit {
             chi2,
             rms,
             compared: n,
             missing,
             front: None,
+            residuals,
         }
     }
 }

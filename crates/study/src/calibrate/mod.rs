@@ -18,6 +18,7 @@ pub mod optimise;
 pub mod path;
 #[cfg(test)]
 pub mod recovery;
+pub mod scatter;
 pub mod synthetic;
 pub mod uncertainty;
 pub mod valley;
@@ -174,6 +175,7 @@ impl Model for CaseModel<'_> {
                     chi2: f64::NAN,
                     rms: f64::NAN,
                     note: format!("{e:#}"),
+                    residuals: Vec::new(),
                 })
             }
         };
@@ -210,10 +212,12 @@ impl Model for CaseModel<'_> {
                         chi2: f64::NAN,
                         rms: f64::NAN,
                         note: format!("{shown_dir}: {why}"),
+                        residuals: Vec::new(),
                     });
                 }
             }
         };
+        let mut residuals = Vec::new();
         let (chi2, rms, note) = match self.measurements.misfit(&done) {
             Ok(m) if m.missing.is_empty() => {
                 let front = match m.front {
@@ -222,6 +226,7 @@ impl Model for CaseModel<'_> {
                     }
                     _ => "",
                 };
+                residuals = m.residuals;
                 (m.chi2, m.rms, format!("{shown_dir} ({how}{front})"))
             }
             Ok(m) => (
@@ -239,7 +244,12 @@ impl Model for CaseModel<'_> {
                 "no misfit".into()
             },
         );
-        Ok(Outcome { chi2, rms, note })
+        Ok(Outcome {
+            chi2,
+            rms,
+            note,
+            residuals,
+        })
     }
 }
 

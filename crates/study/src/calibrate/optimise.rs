@@ -122,6 +122,8 @@ pub struct Outcome {
     pub rms: f64,
     /// what to note beside it (the run folder, why it has no misfit)
     pub note: String,
+    /// (s_i − m_i)/σ_i per measured point, in the measurements' order (empty if none)
+    pub residuals: Vec<f64>,
 }
 
 /// The thing calibrated: parameter values → χ². An `Err` stops the calibration (an
@@ -137,6 +139,7 @@ impl<F: Fn(&[f64]) -> f64 + Sync> Model for F {
             chi2: self(x),
             rms: f64::NAN,
             note: String::new(),
+            residuals: Vec::new(),
         })
     }
 }
@@ -182,6 +185,8 @@ pub struct Evaluation {
     pub stage: Stage,
     /// the model's note
     pub note: String,
+    /// (s_i − m_i)/σ_i per measured point (empty if none)
+    pub residuals: Vec<f64>,
 }
 
 /// How to calibrate.
@@ -253,6 +258,7 @@ impl Evaluator<'_> {
             rms: outcome.rms,
             stage,
             note: outcome.note,
+            residuals: outcome.residuals,
         });
         Ok(outcome.chi2)
     }

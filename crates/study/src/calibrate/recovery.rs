@@ -190,6 +190,7 @@ pub fn recover(root: &Path, study: &TruthStudy, dir: &Path) -> Result<Recovered>
 
 #[cfg(test)]
 mod tests {
+    use super::super::scatter;
     use super::*;
     use runout_case::{BulkSeries, FrontTracker, Profile};
 
@@ -294,11 +295,12 @@ mod tests {
     /// Asserts that the range contains the truth and the optimum, per parameter.
     fn assert_recovered(r: &Recovered, what: &str) {
         println!(
-            "{what}: truth {:?}, optimum {:?}, range {:?}, {} runs",
+            "{what}: truth {:?}, optimum {:?}, range {:?}, {} runs, model scatter {:?}",
             r.truth,
             r.optimum(),
             r.range.bounds,
-            r.calibration.evaluations.len()
+            r.calibration.evaluations.len(),
+            scatter::of(&r.calibration)
         );
         assert!(r.contains_truth().iter().all(|&c| c), "{what}");
         for (&(lo, hi), o) in r.range.bounds.iter().zip(r.optimum()) {
@@ -494,8 +496,16 @@ mod tests {
                 )
             })
             .collect();
+        let scatter = scatter::of(&r.calibration).map_or("none".into(), |s| {
+            format!(
+                "{:.2} σ ({} pairs, reliable: {})",
+                s.ratio,
+                s.pairs,
+                s.reliable()
+            )
+        });
         println!(
-            "| {tag} | σ = {} | {} | {} runs |",
+            "| {tag} | σ = {} | {} | {} runs | model scatter {scatter} |",
             study.sigma,
             cells.join(" | "),
             r.calibration.evaluations.len()
