@@ -12,10 +12,13 @@
 //!
 //! over each evaluation and its nearest neighbour (if within [`CLOSE`]), the variance of a
 //! difference of two independent draws being twice each one's. The smooth change of r over
-//! the pair's distance adds to it, so it is an upper bound; near χ²'s minimum, where Brent
-//! and Nelder–Mead cluster their points, that change is small. When
-//! σ_model/σ exceeds [`RELIABLE_RATIO`] the summary says so and names the σ the scatter
-//! would not dominate (3 σ_model).
+//! the pair's distance adds to it (near χ²'s minimum, where Brent and Nelder–Mead cluster
+//! their points, that change is small). A wiggle that decorrelates only over distances
+//! longer than the pairs' is not seen: the coarse gate speeds of family M differ by
+//! ~0.02 m/s between runs 1 % apart in φ but by ~0.1 m/s between runs 5 % apart
+//! (docs/calibrate.md), so a small σ_model/σ is necessary for a trustworthy range, not
+//! sufficient. When σ_model/σ exceeds [`RELIABLE_RATIO`] the summary says so and names the σ
+//! the scatter would not dominate (3 σ_model).
 
 use serde::Serialize;
 
