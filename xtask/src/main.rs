@@ -38,6 +38,7 @@ mod error_time;
 mod figure;
 mod mfix_slope;
 mod report;
+mod solver_stamp;
 mod stability;
 mod sweep;
 mod verify;

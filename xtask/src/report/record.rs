@@ -18,9 +18,8 @@ use runout_output::RunStatus;
 use runout_post::case_data::CaseData;
 use runout_post::metrics::FLOW_THRESHOLD;
 
-/// The file of a run folder holding `git describe --always --dirty` of the build that ran it
-/// (written by `cargo xtask sweep`); without it the solver is "unknown".
-pub const SOLVER_FILE: &str = "git_describe";
+use crate::solver_stamp::SOLVER_FILE;
+
 /// The solver of a run whose folder does not record it.
 pub const UNKNOWN_SOLVER: &str = "unknown";
 /// Times at which the bulk monitor's front x and mean u_s are recorded [s] (family M's
@@ -146,7 +145,8 @@ fn station_of(d: &CaseData) -> Result<Station, String> {
     })
 }
 
-/// The solver a run folder records, or [`UNKNOWN_SOLVER`].
+/// The solver a run folder records ([`SOLVER_FILE`], written by `cargo xtask sweep`), or
+/// [`UNKNOWN_SOLVER`].
 pub fn solver_of(dir: &Path) -> String {
     std::fs::read_to_string(dir.join(SOLVER_FILE))
         .ok()
