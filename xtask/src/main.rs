@@ -576,7 +576,12 @@ fn ledger_task(action: LedgerAction) -> Result<()> {
         fidelity: fidelity.as_deref().map(parse_fidelity).transpose()?,
         solver,
     };
-    report::ledger::add(&root().join("docs"), &run_dirs, &opts)
+    report::ledger::add(
+        &root().join("docs"),
+        &root().join("cases"),
+        &run_dirs,
+        &opts,
+    )
 }
 
 /// `cargo xtask bench <what> [args]`.

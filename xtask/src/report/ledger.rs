@@ -157,14 +157,53 @@ fn record_of(dir: &Path, opts: &AddOptions) -> Result<RunRecord> {
     Ok(r)
 }
 
-/// `cargo xtask ledger add RUN_DIR...`: records each run folder in the ledger under `docs`.
-pub fn add(docs: &Path, dirs: &[PathBuf], opts: &AddOptions) -> Result<()> {
+/// The grid of `case` at `f` in the paper's matrix under `cases`; `None` if it is not a
+/// case of the matrix.
+fn matrix_grid(cases: &Path, case: &str, f: Fidelity) -> Result<Option<(usize, usize)>> {
+    let matrix = crate::sweep::paper_matrix(cases)?;
+    let Some(run) = matrix.runs.iter().find(|r| r.case.name == case) else {
+        return Ok(None);
+    };
+    let grid = run.case.at_fidelity(f).grid()?;
+    Ok(Some((grid.nx(), grid.ny())))
+}
+
+/// Refuses a record whose grid is not its case's grid at its fidelity (a run of the
+/// error-time ladder says "paper" at every level); notes a case outside the matrix.
+fn check_grid(cases: &Path, r: &RunRecord) -> Result<()> {
+    match matrix_grid(cases, &r.case, r.fidelity)? {
+        Some(g) if g != r.cells => bail!(
+            "{} ran on {} × {} cells, not the {} grid of the matrix ({} × {}): give the \
+             fidelity whose grid it is (--fidelity)",
+            r.case,
+            r.cells.0,
+            r.cells.1,
+            r.fidelity,
+            g.0,
+            g.1
+        ),
+        Some(_) => Ok(()),
+        None => {
+            println!(
+                "note: `{}` is not a case of the paper's matrix; its row is kept, the report \
+                 does not read it (--case names the matrix case)",
+                r.case
+            );
+            Ok(())
+        }
+    }
+}
+
+/// `cargo xtask ledger add RUN_DIR...`: records each run folder in the ledger under the
+/// docs directory `docs`, checked against the matrix of the case directory `cases`.
+pub fn add(docs: &Path, cases: &Path, dirs: &[PathBuf], opts: &AddOptions) -> Result<()> {
     if opts.case.is_some() && dirs.len() > 1 {
         bail!("--case names the case of one folder; give one RUN_DIR");
     }
     let mut ledger = Ledger::read(docs)?;
     for dir in dirs {
         let r = record_of(dir, opts)?;
+        check_grid(cases, &r).with_context(|| dir.display().to_string())?;
         let line = format!(
             "{} {} ({} × {}, to t = {} s, solver {})",
             r.case, r.fidelity, r.cells.0, r.cells.1, r.end_time, r.solver
@@ -234,7 +273,9 @@ mod tests {
         assert_eq!(a.station.as_ref().unwrap().air_cushion, Some(false));
         assert!(ledger.get(Fidelity::Coarse, "B").is_some());
 
-        // a folder elsewhere, with its solver stated; smoke is refused
+        // a folder elsewhere, with its solver stated; smoke is refused, and so is a run
+        // whose grid is not its case's at the fidelity it claims
+        let cases = Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases");
         let elsewhere = tmp.0.join("cluster");
         write_run(
             &elsewhere,
@@ -243,16 +284,26 @@ mod tests {
             1.25,
             &[(profile, CUSHION_PROFILE)],
         );
+        write_run(
+            &elsewhere,
+            "S-RJJ",
+            "paper",
+            1.25,
+            &[(profile, CUSHION_PROFILE)],
+        );
         let opts = AddOptions {
             solver: Some("5eeb3c3".into()),
             ..AddOptions::default()
         };
-        add(&docs, &[elsewhere.join("C").join("paper")], &opts).unwrap();
+        let add = |dir: PathBuf| add(&docs, &cases, &[dir], &opts).map_err(|e| format!("{e:#}"));
+        add(elsewhere.join("C").join("paper")).unwrap();
         let ledger = Ledger::read(&docs).unwrap();
         assert_eq!(ledger.get(Fidelity::Paper, "C").unwrap().solver, "5eeb3c3");
-        let err = add(&docs, &[runs.join("A").join("smoke")], &opts).unwrap_err();
+        let err = add(runs.join("A").join("smoke")).unwrap_err();
+        assert!(err.contains("smoke runs are not recorded"), "{err}");
+        let err = add(elsewhere.join("S-RJJ").join("paper")).unwrap_err();
         assert!(
-            err.to_string().contains("smoke runs are not recorded"),
+            err.contains("ran on 10 × 4 cells, not the paper grid of the matrix (1000 × 90)"),
             "{err}"
         );
     }

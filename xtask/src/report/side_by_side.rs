@@ -206,3 +206,46 @@ pub fn section(
         md.push('\n');
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use runout_post::fixture::*;
+
+    #[test]
+    fn a_finding_whose_verdict_differs_between_fidelities_is_listed() {
+        let tmp = TempDir::new("side-by-side");
+        let runs = tmp.0.join("runs");
+        let p = "profile_x11_t1.25.csv";
+        write_run(
+            &runs,
+            "S-JJ-phi_phi=1",
+            "coarse",
+            1.25,
+            &[(p, CUSHION_PROFILE)],
+        );
+        write_run(
+            &runs,
+            "S-JJ-phi_phi=1",
+            "paper",
+            1.25,
+            &[(p, DENSE_PROFILE)],
+        );
+        let names: Vec<String> = ["S-JJ-phi_phi=1", "S-RJJ", "F-JEN"]
+            .map(String::from)
+            .to_vec();
+        let store = Store::load(&runs, &names);
+        let ledger = Ledger::read(&tmp.0.join("docs")).unwrap();
+        let mut md = String::new();
+        section(&mut md, &names, &store, &ledger, &[]);
+        assert!(
+            md.contains(
+                "- Fig. 4a: air cushion at the station (`S-JJ-phi_phi=1`) — coarse yes, paper no."
+            ),
+            "{md}"
+        );
+        // one of the two family-S cases ran; no count where the findings' cases did not run
+        assert!(md.contains("| paper | — (partial: "), "{md}");
+        assert!(md.contains("| 1 of 3 (0) | 1 of 2 |"), "{md}");
+    }
+}
