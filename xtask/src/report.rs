@@ -99,7 +99,7 @@ pub fn write_report(paths: &ReportPaths, requested: Option<Fidelity>) -> Result<
     tables::flume_section(&mut md, &records, &gates, &described);
     tables::mfix_section(&mut md, &records);
     tables::floors_section(&mut md, &paths.docs);
-    sensitivity::section(&mut md, &matrix, &paths.cases, &cases, &out)?;
+    sensitivity::section(&mut md, &matrix, &paths.cases, &records, &out)?;
     md.push_str("## Runs used\n\n");
     tables::runs_table(&mut md, &names, &records);
 

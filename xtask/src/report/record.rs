@@ -106,6 +106,9 @@ pub struct RunRecord {
     pub bulk: Vec<Result<(f64, f64), String>>,
     /// (front x, mean u_s) of bulk.csv at the station time
     pub bulk_station: Result<(f64, f64), String>,
+    /// (front x, mean u_s) of bulk.csv at the end time (the sensitivity's time of runs that
+    /// end before the station time)
+    pub bulk_end: Result<(f64, f64), String>,
     /// where it comes from (not written)
     pub source: Source,
 }
@@ -208,6 +211,7 @@ impl RunRecord {
             gates: d.gate_pairs(),
             bulk: BULK_TIMES.iter().map(|&t| d.bulk_at(t)).collect(),
             bulk_station: d.bulk_at(d.station_time),
+            bulk_end: d.bulk_at(s.simulated_time),
             source: Source::Store,
         })
     }
@@ -244,6 +248,21 @@ impl RunRecord {
             .and_then(|k| self.bulk.get(k))
             .cloned()
             .unwrap_or_else(|| Err(format!("no bulk reading at t = {t} s recorded")))
+    }
+
+    /// (front x, mean u_s) at the station time or the end time, the times a record keeps
+    /// besides [`BULK_TIMES`].
+    pub fn bulk_at_station_or_end(&self, t: f64) -> Result<(f64, f64), String> {
+        let near = |a: f64| (a - t).abs() <= 1e-9 * t.abs().max(1.0);
+        if near(self.station_time) {
+            self.bulk_station.clone()
+        } else if near(self.end_time) {
+            self.bulk_end.clone()
+        } else {
+            Err(format!(
+                "the record holds bulk.csv at the station time and the end time, not t = {t} s"
+            ))
+        }
     }
 
     /// The station's metrics where material flows there.

@@ -54,6 +54,8 @@ pub fn columns() -> Vec<String> {
     }
     c.push("front_x_station".into());
     c.push("mean_u_s_station".into());
+    c.push("front_x_end".into());
+    c.push("mean_u_s_end".into());
     c
 }
 
@@ -104,7 +106,7 @@ pub fn to_row(r: &RunRecord) -> Vec<String> {
         (1..=GATES)
             .map(|g| opt(gates.and_then(|list| list.iter().find(|p| p.0 == g).map(|p| p.1)))),
     );
-    for b in r.bulk.iter().chain([&r.bulk_station]) {
+    for b in r.bulk.iter().chain([&r.bulk_station, &r.bulk_end]) {
         let b = b.as_ref().ok();
         row.push(opt(b.map(|b| b.0)));
         row.push(opt(b.map(|b| b.1)));
@@ -214,6 +216,7 @@ pub fn from_row(c: &Cells) -> Result<RunRecord, String> {
         gates: Ok(Vec::new()),
         bulk: Vec::new(),
         bulk_station: Err(String::new()),
+        bulk_end: Err(String::new()),
         source: Source::Ledger,
     };
     let at = r.station_time;
@@ -226,7 +229,9 @@ pub fn from_row(c: &Cells) -> Result<RunRecord, String> {
     r.station = station_of(c)?.ok_or_else(|| missing("station profile", at));
     r.probe = match (c.number("probe_t_s")?, c.number("probe_h_wu")?) {
         (Some(t), Some(h)) => Ok((t, h)),
-        _ => Err(format!("no probe sample at or before t = {at} s")),
+        _ => Err(format!(
+            "the {fidelity} run's ledger row has no floor-probe sample at or before t = {at:.4} s"
+        )),
     };
     let mut gates = Vec::new();
     for g in 1..=GATES {
@@ -244,6 +249,9 @@ pub fn from_row(c: &Cells) -> Result<RunRecord, String> {
     }
     r.bulk_station = bulk_pair(c, "front_x_station", "mean_u_s_station", || {
         missing("bulk sample at the station time", at)
+    })?;
+    r.bulk_end = bulk_pair(c, "front_x_end", "mean_u_s_end", || {
+        format!("the {fidelity} run's ledger row has no bulk sample at its end")
     })?;
     r.bulk = bulk;
     Ok(r)
@@ -285,6 +293,7 @@ mod tests {
                 Ok((2.897, f64::MIN_POSITIVE)),
             ],
             bulk_station: Ok((13.0, 4.1)),
+            bulk_end: Ok((13.0, 4.1)),
             source: Source::Ledger,
         }
     }
@@ -314,6 +323,7 @@ mod tests {
         assert_eq!(back.bulk[0], r.bulk[0]);
         assert_eq!(back.bulk[2], r.bulk[2]);
         assert_eq!(back.bulk_station, r.bulk_station);
+        assert_eq!(back.bulk_end, r.bulk_end);
         assert!(back.bulk[1].is_err());
         // everything else, with the rebuilt reason in place of the original one
         let mut expect = r.clone();
@@ -337,6 +347,7 @@ mod tests {
         r.gates = Err("the smoke run has no gates.csv".into());
         r.bulk = vec![Err("a".into()), Err("b".into()), Err("c".into())];
         r.bulk_station = Err("d".into());
+        r.bulk_end = Err("e".into());
         let back = round_trip(&[r]).remove(0);
         assert_eq!(
             back.station.unwrap_err(),
@@ -344,7 +355,7 @@ mod tests {
         );
         assert_eq!(
             back.probe.unwrap_err(),
-            "no probe sample at or before t = 1.5356 s"
+            "the paper run's ledger row has no floor-probe sample at or before t = 1.5356 s"
         );
         assert_eq!(back.gates, Ok(Vec::new()));
         assert_eq!(
