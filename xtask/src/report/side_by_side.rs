@@ -73,12 +73,13 @@ fn column(
     }
 }
 
-/// The findings cell: "N of 64", or why there is no N.
+/// The findings cell: "N of 64" (reproduced of judged, as [`super::findings::summary_line`]),
+/// or why there is no N.
 fn findings_cell(c: &Column) -> String {
-    let total = c.judged.len();
     let (yes, n, missing) = counts(&c.judged, None);
     if c.complete() {
-        let mut s = format!("**{yes} of {total}**");
+        // of the findings judged, as the summary line counts them
+        let mut s = format!("**{yes} of {n}**");
         if missing > 0 {
             let _ = write!(s, " ({missing} without a value)");
         }
