@@ -17,6 +17,9 @@
 //! - `report [results] [--fidelity F]`: the runs of the sweep beside the paper, in
 //!   docs/results.md with SVG figures in docs/results/, and the elasticities of family S's
 //!   one-factor families ([`runout_study::sensitivity`]) as a table, a heat map and a CSV;
+//! - `ledger add RUN_DIR...`: records run folders made elsewhere in the metrics ledger
+//!   docs/results/ledger/<fidelity>.csv, which the report judges the findings from where a
+//!   case has no run folder ([`report::ledger`]);
 //! - `error-time`: issue 8's discretisation error of the station profiles and gate speeds
 //!   against wall time over a ladder of grids, for upwind and Superbee ([`error_time`]), in
 //!   docs/error-time.md;
@@ -35,6 +38,7 @@ mod error_time;
 mod figure;
 mod mfix_slope;
 mod report;
+mod solver_stamp;
 mod stability;
 mod sweep;
 mod verify;
@@ -260,6 +264,14 @@ enum Task {
         #[arg(long)]
         fidelity: Option<String>,
     },
+    /// The metrics ledger docs/results/ledger/<fidelity>.csv (one row of every scalar the
+    /// findings read per run; `cargo xtask report` also writes the rows of the run folders it
+    /// reads): `cargo xtask ledger add RUN_DIR...` records runs made elsewhere (a cluster,
+    /// the error-time ladder, another machine).
+    Ledger {
+        #[command(subcommand)]
+        action: LedgerAction,
+    },
     /// Benchmarks: `cargo xtask bench linsolve [-- --max-cells N]`, `cargo xtask bench
     /// two-fluid [--smoke] [--write] [--window T] [--refine 1,2,4] [--skip-paper]`.
     Bench {
@@ -275,6 +287,27 @@ enum Task {
         /// compare instead of writing
         #[arg(long)]
         check: bool,
+    },
+}
+
+#[derive(Subcommand)]
+enum LedgerAction {
+    /// Record finished run folders (each with a summary.json) in the ledger, replacing
+    /// their cases' rows at their fidelity; smoke runs are refused.
+    Add {
+        /// run folders, e.g. runs/S-JJ-phi_phi=0.1/paper
+        #[arg(required = true)]
+        run_dirs: Vec<PathBuf>,
+        /// the case's name in the matrix, if the summary's differs (one folder only)
+        #[arg(long)]
+        case: Option<String>,
+        /// record under this fidelity instead of the summary's (coarse, wall or paper)
+        #[arg(long)]
+        fidelity: Option<String>,
+        /// `git describe` of the build that made the runs, for folders that do not record
+        /// it (else "unknown")
+        #[arg(long)]
+        solver: Option<String>,
     },
 }
 
@@ -404,6 +437,7 @@ fn main() -> Result<()> {
             (&friction, aspect),
         ),
         Task::Report { what, fidelity } => report_task(&what, fidelity.as_deref()),
+        Task::Ledger { action } => ledger_task(action),
         Task::Bench { what, args } => bench_task(&what, &args),
         Task::CaseReference { check } => case_reference::run(&root(), check),
     }
@@ -533,6 +567,27 @@ fn report_task(what: &str, fidelity: Option<&str>) -> Result<()> {
         "release" => report::release::report(&root(), fidelity),
         other => bail!("unknown report `{other}` (known: results, analytic, release)"),
     }
+}
+
+/// `cargo xtask ledger add RUN_DIR... [--case C] [--fidelity F] [--solver S]`.
+fn ledger_task(action: LedgerAction) -> Result<()> {
+    let LedgerAction::Add {
+        run_dirs,
+        case,
+        fidelity,
+        solver,
+    } = action;
+    let opts = report::ledger::AddOptions {
+        case,
+        fidelity: fidelity.as_deref().map(parse_fidelity).transpose()?,
+        solver,
+    };
+    report::ledger::add(
+        &root().join("docs"),
+        &root().join("cases"),
+        &run_dirs,
+        &opts,
+    )
 }
 
 /// `cargo xtask bench <what> [args]`.

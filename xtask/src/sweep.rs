@@ -2,7 +2,8 @@
 //! cases of cases/stability/, which `cargo xtask stability` runs, and the column collapse
 //! of cases/collapse/, which `cargo xtask verify collapse` runs), run in parallel by the
 //! study engine ([`runout_study::sweep`]) into the workspace's `runs/` and
-//! `results/summary.csv`.
+//! `results/summary.csv`; each run folder it finished records the checkout's `git describe`
+//! ([`crate::solver_stamp`]).
 
 use std::path::Path;
 
@@ -40,5 +41,12 @@ pub fn sweep(root: &Path, cases_dir: &Path, study: Option<&str>, opts: SweepOpti
         gates: Some(root.join("cases").join("flume").join("gates.csv")),
         ..opts
     };
-    runout_study::sweep::sweep(root, &matrix, &opts)
+    let started = std::time::SystemTime::now();
+    let describe = crate::solver_stamp::git_describe(root);
+    let result = runout_study::sweep::sweep(root, &matrix, &opts);
+    if let (Some(d), false) = (describe, opts.list) {
+        let names = matrix.runs.iter().map(|r| r.case.name.as_str());
+        crate::solver_stamp::stamp_finished(&root.join("runs"), names, opts.fidelity, started, &d);
+    }
+    result
 }

@@ -65,20 +65,15 @@ fn series(
 impl CaseData {
     /// Reads what the report needs of `case` from its chosen run under `runs`.
     pub fn load(runs: &Path, case: &str, requested: Option<Fidelity>) -> CaseData {
-        let run = choose_run(runs, case, requested);
-        let Ok(r) = &run else {
-            let why = run.as_ref().err().cloned().unwrap_or_default();
-            return CaseData {
-                run,
-                profile: Err(why.clone()),
-                probe: Err(why.clone()),
-                front: Err(why.clone()),
-                gates: Err(why.clone()),
-                bulk: Err(why),
-                gate_origin: None,
-                station_time: PROFILE_TIME,
-            };
-        };
+        match choose_run(runs, case, requested) {
+            Ok(r) => CaseData::of_run(r),
+            Err(why) => CaseData::missing(&why),
+        }
+    }
+
+    /// Reads what the report needs of one run (its folder need not be under `runs/`).
+    pub fn of_run(run: Run) -> CaseData {
+        let r = &run;
         let resolved = read_resolved(&r.dir);
         let station_time = station_time(resolved.as_ref());
         let probe_file = first_csv(&r.dir, "wall_probe_south_x");
@@ -111,7 +106,7 @@ impl CaseData {
             },
             gate_origin: resolved.and_then(|c| c.monitors.front.map(|f| f.gate_origin)),
             station_time,
-            run,
+            run: Ok(run),
         }
     }
 
@@ -171,6 +166,16 @@ impl Cases {
                 .into_iter()
                 .map(|n| (n.to_string(), CaseData::load(runs, n, requested)))
                 .collect(),
+        }
+    }
+
+    /// Gives a case without a run the reason `why` instead (e.g. that its numbers come from
+    /// elsewhere); a case with a run is left as it is.
+    pub fn explain_missing(&mut self, case: &str, why: &str) {
+        if let Some(d) = self.data.get_mut(case) {
+            if d.run.is_err() {
+                *d = CaseData::missing(why);
+            }
         }
     }
 

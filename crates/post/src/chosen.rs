@@ -45,6 +45,28 @@ impl Run {
     }
 }
 
+impl Run {
+    /// The finished run in `dir` (any folder with a summary.json), at the fidelity its
+    /// summary names unless `fidelity` is given.
+    pub fn read(dir: &Path, fidelity: Option<Fidelity>) -> Result<Run, String> {
+        let summary = read_summary(dir)
+            .ok_or_else(|| format!("{}: no summary.json (not a finished run)", dir.display()))?
+            .map_err(|e| format!("{}: {e}", dir.display()))?;
+        let fidelity = match fidelity {
+            Some(f) => f,
+            None => summary
+                .fidelity
+                .parse()
+                .map_err(|e| format!("{}: fidelity `{}`: {e}", dir.display(), summary.fidelity))?,
+        };
+        Ok(Run {
+            fidelity,
+            dir: dir.to_path_buf(),
+            summary,
+        })
+    }
+}
+
 /// The run of `case` under `runs`: at `requested` fidelity, or the best that exists.
 pub fn choose_run(runs: &Path, case: &str, requested: Option<Fidelity>) -> Result<Run, String> {
     let candidates = requested.map_or(BEST_FIRST.to_vec(), |f| vec![f]);

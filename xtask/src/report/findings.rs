@@ -23,8 +23,9 @@ use std::fmt::Write as _;
 
 use super::cell;
 use super::paper::{Quantity, CUSHION_LIMIT_H_U, PAPER_NUMBERS};
-use super::reading::{flow_at_station, value, Reading};
-use runout_post::case_data::{CaseData, Cases};
+use super::reading::{value, Reading};
+use super::record::RunRecord;
+use super::records::Records;
 
 /// A single value of the paper is matched within this fraction of it.
 pub const RELATIVE_TOLERANCE: f64 = 0.2;
@@ -117,18 +118,20 @@ pub struct Trend {
     pub paper: &'static str,
     /// runout's judgement from the cases and the flume's described gate speeds:
     /// (reproduced, what the runs show), or why there is none
-    pub judge: fn(&Cases, &[(usize, f64)]) -> Verdict,
+    pub judge: fn(&Records, &[(usize, f64)]) -> Verdict,
 }
 
 /// One output of each case of a list, as (label, value); the first missing one is the error.
 fn outputs(
-    cases: &Cases,
+    records: &Records,
     list: &[(&'static str, &'static str)],
-    output: impl Fn(&CaseData) -> Result<f64, String>,
+    output: impl Fn(&RunRecord) -> Result<f64, String>,
 ) -> Result<Vec<(&'static str, f64)>, String> {
     list.iter()
         .map(|&(label, case)| {
-            output(&cases.get(case))
+            records
+                .get(case)
+                .and_then(&output)
                 .map(|v| (label, v))
                 .map_err(|e| format!("`{case}`: {e}"))
         })
@@ -160,37 +163,27 @@ fn largest<'a>(v: &[(&'a str, f64)]) -> &'a str {
         .map_or("", |p| p.0)
 }
 
-fn floor_eps_s(d: &CaseData) -> Result<f64, String> {
-    let p = d.profile.as_ref().map_err(Clone::clone)?;
-    p.eps_s
-        .first()
-        .copied()
-        .ok_or_else(|| "an empty profile".into())
+fn floor_eps_s(r: &RunRecord) -> Result<f64, String> {
+    Ok(r.station.as_ref().map_err(Clone::clone)?.floor_eps_s)
 }
 
-fn floor_theta(d: &CaseData) -> Result<f64, String> {
-    let p = d.profile.as_ref().map_err(Clone::clone)?;
-    p.theta
-        .first()
-        .copied()
-        .ok_or_else(|| "an empty profile".into())
+fn floor_theta(r: &RunRecord) -> Result<f64, String> {
+    Ok(r.station.as_ref().map_err(Clone::clone)?.floor_theta)
 }
 
-fn max_u_s(d: &CaseData) -> Result<f64, String> {
-    flow_at_station(d)?
-        .max_u_s
-        .ok_or_else(|| "no max u_s".into())
+fn max_u_s(r: &RunRecord) -> Result<f64, String> {
+    r.flow()?.max_u_s.ok_or_else(|| "no max u_s".into())
 }
 
-fn flow_thickness(d: &CaseData) -> Result<f64, String> {
-    flow_at_station(d)?
+fn flow_thickness(r: &RunRecord) -> Result<f64, String> {
+    r.flow()?
         .flow_thickness
         .ok_or_else(|| "no flow thickness".into())
 }
 
 /// The cushion thickness, 0 without a cushion.
-fn cushion_thickness(d: &CaseData) -> Result<f64, String> {
-    let m = flow_at_station(d)?;
+fn cushion_thickness(r: &RunRecord) -> Result<f64, String> {
+    let m = r.flow()?;
     match m.air_cushion {
         Some(true) => m
             .cushion_thickness
@@ -200,23 +193,23 @@ fn cushion_thickness(d: &CaseData) -> Result<f64, String> {
     }
 }
 
-fn has_cushion(d: &CaseData) -> Result<bool, String> {
-    flow_at_station(d)?
+fn has_cushion(r: &RunRecord) -> Result<bool, String> {
+    r.flow()?
         .air_cushion
         .ok_or_else(|| "cushion not defined for this profile".into())
 }
 
-fn probe_h_u(d: &CaseData, cases: &Cases) -> Result<f64, String> {
-    match value(Quantity::ProbeHu, d, cases, &[])? {
+fn probe_h_u(records: &Records, case: &str) -> Result<f64, String> {
+    match value(Quantity::ProbeHu, case, records, &[])? {
         Reading::Number { value, .. } => Ok(value),
         Reading::YesNo(_) => Err("not a number".into()),
     }
 }
 
-fn flume_mse(d: &CaseData, described: &[(usize, f64)]) -> Result<f64, String> {
-    crate::metrics::mse_vs_described(&d.gate_pairs()?, described)
+fn flume_mse(r: &RunRecord, described: &[(usize, f64)]) -> Result<f64, String> {
+    crate::metrics::mse_vs_described(r.gates.as_ref().map_err(Clone::clone)?, described)
         .map(|(e, _)| e)
-        .ok_or_else(|| d.no_gate_reached())
+        .ok_or_else(|| r.no_gate_reached())
 }
 
 const JJ_PHI: &[(&str, &str)] = &[
@@ -352,7 +345,10 @@ pub const TRENDS: &[Trend] = &[
             let mut all = true;
             let mut seen = Vec::new();
             for &(hu, case) in PS_HU {
-                let yes = has_cushion(&c.get(case)).map_err(|e| format!("`{case}`: {e}"))?;
+                let yes = c
+                    .get(case)
+                    .and_then(has_cushion)
+                    .map_err(|e| format!("`{case}`: {e}"))?;
                 all &= yes == (hu.parse::<f64>().unwrap_or(0.0) >= CUSHION_LIMIT_H_U);
                 seen.push(format!("{hu}: {}", yes_no(yes)));
             }
@@ -440,7 +436,14 @@ pub const TRENDS: &[Trend] = &[
                   φ = 0.01 > Jenkins",
         paper: "579 > 156 > 70–156 > 59 > 26 m⁻¹",
         judge: |c, _| {
-            let v = outputs(c, PROBE_RANKING, |d| probe_h_u(d, c))?;
+            let v = PROBE_RANKING
+                .iter()
+                .map(|&(l, case)| {
+                    probe_h_u(c, case)
+                        .map(|h| (l, h))
+                        .map_err(|e| format!("`{case}`: {e}"))
+                })
+                .collect::<Result<Vec<_>, String>>()?;
             let shown: Vec<String> = v.iter().map(|(l, h)| format!("{l} {h:.0}")).collect();
             Ok((decreasing(&v), format!("{} m⁻¹", shown.join(", "))))
         },
@@ -454,9 +457,11 @@ pub const TRENDS: &[Trend] = &[
             let mut all = true;
             let mut seen = Vec::new();
             for &(label, case) in PROBE_RANKING {
-                let d = c.get(case);
-                let h = probe_h_u(&d, c).map_err(|e| format!("`{case}`: {e}"))?;
-                let yes = has_cushion(&d).map_err(|e| format!("`{case}`: {e}"))?;
+                let h = probe_h_u(c, case).map_err(|e| format!("`{case}`: {e}"))?;
+                let yes = c
+                    .get(case)
+                    .and_then(has_cushion)
+                    .map_err(|e| format!("`{case}`: {e}"))?;
                 all &= yes == (h > CUSHION_LIMIT_H_U);
                 seen.push(format!("{label} {h:.0} m⁻¹, cushion {}", yes_no(yes)));
             }
@@ -482,8 +487,33 @@ pub const TRENDS: &[Trend] = &[
     },
 ];
 
-/// Every finding of the paper, judged from `cases`.
-pub fn judge_all(cases: &Cases, described: &[(usize, f64)]) -> Vec<Judged> {
+/// Every case a finding reads (the cases of [`PAPER_NUMBERS`] and of the trends' sweeps).
+pub fn cases_named() -> std::collections::BTreeSet<&'static str> {
+    let mut names: std::collections::BTreeSet<&str> = PAPER_NUMBERS
+        .iter()
+        .filter(|row| !matches!(row.quantity, Quantity::FlumeMse))
+        .flat_map(|row| match row.quantity {
+            Quantity::FlowThicknessAbove(other) => vec![row.case, other],
+            _ => vec![row.case],
+        })
+        .collect();
+    for list in [
+        JJ_PHI,
+        JJ_D,
+        JEN_D,
+        PS_HU,
+        PS_HU_ENDS,
+        PS_D_ENDS,
+        PROBE_RANKING,
+        FLUME_CASES,
+    ] {
+        names.extend(list.iter().map(|p| p.1));
+    }
+    names
+}
+
+/// Every finding of the paper, judged from `records`.
+pub fn judge_all(records: &Records, described: &[(usize, f64)]) -> Vec<Judged> {
     let mut out = Vec::new();
     for row in PAPER_NUMBERS {
         let Some(exp) = expected(row.paper) else {
@@ -492,7 +522,7 @@ pub fn judge_all(cases: &Cases, described: &[(usize, f64)]) -> Vec<Judged> {
         if matches!(row.quantity, Quantity::FlumeMse) {
             continue; // not the same error as the paper's (module doc)
         }
-        let reading = value(row.quantity, &cases.get(row.case), cases, described)
+        let reading = value(row.quantity, row.case, records, described)
             .map_err(|e| format!("`{}`: {e}", row.case));
         let (kind, verdict) = match exp {
             Expected::Yes | Expected::No => (
@@ -525,14 +555,14 @@ pub fn judge_all(cases: &Cases, described: &[(usize, f64)]) -> Vec<Judged> {
             finding: t.finding.to_string(),
             paper: t.paper.to_string(),
             kind: Kind::Trend,
-            verdict: (t.judge)(cases, described),
+            verdict: (t.judge)(records, described),
         });
     }
     out
 }
 
 /// Counts of one kind: (reproduced, judged, without a value).
-fn counts(judged: &[Judged], kind: Option<Kind>) -> (usize, usize, usize) {
+pub fn counts(judged: &[Judged], kind: Option<Kind>) -> (usize, usize, usize) {
     let of_kind = judged.iter().filter(|j| kind.is_none_or(|k| j.kind == k));
     let (mut yes, mut judged_n, mut missing) = (0, 0, 0);
     for j in of_kind {
@@ -573,8 +603,8 @@ pub fn summary_line(judged: &[Judged]) -> String {
 
 /// The summary section: the line, the findings not reproduced with what runout shows, the
 /// ones without a value, then every finding in a table.
-pub fn section(md: &mut String, cases: &Cases, described: &[(usize, f64)]) {
-    let judged = judge_all(cases, described);
+pub fn section(md: &mut String, records: &Records, described: &[(usize, f64)]) {
+    let judged = judge_all(records, described);
     md.push_str("## Summary: the paper's findings in runout's runs\n\n");
     let _ = writeln!(md, "{}\n", summary_line(&judged));
     md.push_str(
@@ -635,6 +665,7 @@ pub fn section(md: &mut String, cases: &Cases, described: &[(usize, f64)]) {
 
 #[cfg(test)]
 mod tests {
+    use super::super::records::from_runs;
     use super::*;
     use runout_case::Fidelity;
     use runout_post::fixture::*;
@@ -697,7 +728,7 @@ mod tests {
             &[(profile, DENSE_PROFILE)],
         );
         let names = ["S-JJ-phi_phi=1", "S-JJ-phi_phi=0.1", "S-JJ-phi_phi=0.01"];
-        let cases = Cases::load(&runs, names, Some(Fidelity::Coarse));
+        let cases = from_runs(&runs, &names, Some(Fidelity::Coarse));
         let judged = judge_all(&cases, &[]);
         let find = |figure: &str, finding: &str| {
             judged

@@ -2,9 +2,11 @@
 //! the flow metrics of a case's station profile, probe, gates and bulk monitor in the
 //! report's words, or why it is missing.
 
-use runout_post::case_data::{CaseData, Cases};
+use runout_post::case_data::CaseData;
 
 use super::paper::Quantity;
+use super::record::RunRecord;
+use super::records::Records;
 use crate::metrics::{mse_vs_described, FlowMetrics, FLOW_THRESHOLD};
 
 /// The metrics of a case's station profile; a profile without flowing material (which
@@ -85,97 +87,88 @@ impl std::fmt::Display for Reading {
     }
 }
 
-/// runout's value of `q` for `data` (the case) in the report's words, or why it is missing.
+/// runout's value of `q` for `case` in the report's words, or why it is missing.
 pub fn reading(
     q: Quantity,
-    data: &CaseData,
-    cases: &Cases,
+    case: &str,
+    records: &Records,
     described: &[(usize, f64)],
 ) -> Result<String, String> {
-    value(q, data, cases, described).map(|r| r.to_string())
+    value(q, case, records, described).map(|r| r.to_string())
 }
 
-/// runout's value of `q` for `data` (the case), or why it is missing.
+/// A gate reading: the gate chosen by `pick` among the run's gates, with its number.
+fn gate_reading(
+    r: &RunRecord,
+    pick: impl Fn(&[(usize, f64)]) -> Option<(usize, f64)>,
+) -> Result<Reading, String> {
+    let gates = r.gates.as_ref().map_err(Clone::clone)?;
+    let (gate, speed) = pick(gates).ok_or_else(|| r.no_gate_reached())?;
+    Ok(Reading::noted(speed, 2, format!("at L{gate}")))
+}
+
+/// runout's value of `q` for `case` (its record in `records`), or why it is missing.
 pub fn value(
     q: Quantity,
-    data: &CaseData,
-    cases: &Cases,
+    case: &str,
+    records: &Records,
     described: &[(usize, f64)],
 ) -> Result<Reading, String> {
-    let metrics = || flow_at_station(data);
+    let r = records.get(case)?;
+    let station = || r.station.as_ref().map_err(Clone::clone);
     let unknown = || "not defined for this profile".to_string();
     match q {
-        Quantity::AirCushion => Ok(Reading::YesNo(metrics()?.air_cushion.ok_or_else(unknown)?)),
-        Quantity::FloorEpsS => {
-            let p = data.profile.as_ref().map_err(Clone::clone)?;
-            Ok(Reading::number(*p.eps_s.first().ok_or_else(unknown)?, 3))
-        }
+        Quantity::AirCushion => Ok(Reading::YesNo(r.flow()?.air_cushion.ok_or_else(unknown)?)),
+        Quantity::FloorEpsS => Ok(Reading::number(station()?.floor_eps_s, 3)),
         Quantity::CushionThickness => {
-            let m = metrics()?;
+            let m = r.flow()?;
             Ok(match m.air_cushion {
                 Some(true) => Reading::number(m.cushion_thickness.ok_or_else(unknown)?, 3),
                 _ => Reading::noted(0.0, 0, "no cushion".into()),
             })
         }
-        Quantity::FloorTheta => {
-            let p = data.profile.as_ref().map_err(Clone::clone)?;
-            Ok(Reading::number(*p.theta.first().ok_or_else(unknown)?, 3))
-        }
-        Quantity::MaxUs => Ok(Reading::number(metrics()?.max_u_s.ok_or_else(unknown)?, 2)),
+        Quantity::FloorTheta => Ok(Reading::number(station()?.floor_theta, 3)),
+        Quantity::MaxUs => Ok(Reading::number(r.flow()?.max_u_s.ok_or_else(unknown)?, 2)),
         Quantity::FlowThickness => Ok(Reading::number(
-            metrics()?.flow_thickness.ok_or_else(unknown)?,
+            r.flow()?.flow_thickness.ok_or_else(unknown)?,
             3,
         )),
         Quantity::FlowThicknessAbove(other) => {
-            let own = metrics()?.flow_thickness.ok_or_else(unknown)?;
-            let theirs = flow_at_station(&cases.get(other))
+            let own = r.flow()?.flow_thickness.ok_or_else(unknown)?;
+            let theirs = records
+                .get(other)
+                .and_then(|o| o.flow().map(|s| s.flow_thickness))
                 .map_err(|e| format!("`{other}`: {e}"))?
-                .flow_thickness
                 .ok_or_else(unknown)?;
             Ok(Reading::number(own - theirs, 3))
         }
         Quantity::ProbeHu => {
-            let (t, h) = data.probe_at(data.station_time)?;
-            match data
-                .run
-                .as_ref()
-                .ok()
-                .and_then(|r| r.ended_before(data.station_time))
-            {
+            let (t, h) = r.probe.clone()?;
+            match r.ended_before(r.station_time) {
                 Some(why) => Err(format!("{why}; its last sample: {h:.0} at t = {t:.2} s")),
                 None => Ok(Reading::number(h, 0)),
             }
         }
         Quantity::FlumeMse => {
-            let (e, gates) = mse_vs_described(&data.gate_pairs()?, described)
-                .ok_or_else(|| data.no_gate_reached())?;
+            let gates = r.gates.as_ref().map_err(Clone::clone)?;
+            let (e, used) =
+                mse_vs_described(gates, described).ok_or_else(|| r.no_gate_reached())?;
             Ok(Reading::noted(
                 e,
                 2,
-                format!("{gates} of {} gates", described.len()),
+                format!("{used} of {} gates", described.len()),
             ))
         }
         Quantity::FlumeMaxGateSpeed => {
-            let gates = data.gates.as_ref().map_err(Clone::clone)?;
-            let g = gates
-                .iter()
-                .max_by(|a, b| a.speed.total_cmp(&b.speed))
-                .ok_or_else(|| data.no_gate_reached())?;
-            Ok(Reading::noted(g.speed, 2, format!("at L{}", g.gate)))
+            gate_reading(r, |g| g.iter().copied().max_by(|a, b| a.1.total_cmp(&b.1)))
         }
-        Quantity::FlumeLastGateSpeed => {
-            let gates = data.gates.as_ref().map_err(Clone::clone)?;
-            let g = gates
-                .iter()
-                .max_by_key(|g| g.gate)
-                .ok_or_else(|| data.no_gate_reached())?;
-            Ok(Reading::noted(g.speed, 2, format!("at L{}", g.gate)))
-        }
+        Quantity::FlumeLastGateSpeed => gate_reading(r, |g| g.iter().copied().max_by_key(|p| p.0)),
     }
 }
 
 #[cfg(test)]
 mod tests {
+    use super::super::records::from_runs;
     use super::*;
     use runout_post::fixture::*;
 
@@ -224,9 +217,9 @@ mod tests {
             0.4,
             &[("gates.csv", "gate,x,t_cross,speed\n")],
         );
-        let cases = Cases::load(&runs, ["wide", "cushion", "short", "flume", "stuck"], None);
+        let cases = from_runs(&runs, &["wide", "cushion", "short", "flume", "stuck"], None);
         let described = [(2, 4.0), (3, 4.0), (7, 5.4)];
-        let read = |q, case: &str| reading(q, &cases.get(case), &cases, &described);
+        let read = |q, case: &str| reading(q, case, &cases, &described);
         assert_eq!(read(Quantity::AirCushion, "cushion").unwrap(), "yes");
         assert_eq!(read(Quantity::AirCushion, "wide").unwrap(), "no");
         assert_eq!(read(Quantity::FloorEpsS, "cushion").unwrap(), "0.050");
@@ -287,8 +280,8 @@ mod tests {
                 "y,eps_s,u_s,theta\n0.01,0.002,4.3,1.1\n0.03,0.0,0.0,0.0\n",
             )],
         );
-        let cases = Cases::load(&runs, ["dilute"], None);
-        let read = |q| reading(q, &cases.get("dilute"), &cases, &described);
+        let cases = from_runs(&runs, &["dilute"], None);
+        let read = |q| reading(q, "dilute", &cases, &described);
         assert_eq!(
             read(Quantity::AirCushion).unwrap_err(),
             "no flow at the station: the largest εs is 2.0e-3 < 0.01"

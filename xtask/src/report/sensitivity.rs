@@ -9,14 +9,13 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use anyhow::{Context, Result};
-use runout_case::Case;
 
 use super::coverage::remove_stale;
 use super::plots::{self, HeatCell, Heatmap};
-use super::reading::flow_at_station;
+use super::record::RunRecord;
+use super::records::Records;
 use super::{cell, FIGURE_DIR};
 use crate::metrics::PROFILE_TIME;
-use runout_post::case_data::{CaseData, Cases};
 use runout_study::families::Family;
 use runout_study::sensitivity::{local, summary, Elasticity, Method, Summary};
 use runout_study::sweep::{csv_field, Matrix};
@@ -65,18 +64,27 @@ pub const OUTPUTS: [Output; 7] = [
     Output::ProbeHu,
 ];
 
-/// The largest x of the release blocks of the run's case (`resolved.ron`).
-fn release_front(d: &CaseData) -> Result<f64, String> {
-    let run = d.run.as_ref().map_err(Clone::clone)?;
-    // read, not validated: a resolved smoke case keeps the paper's profile time
-    let case: Case = runout_post::folder::read_resolved_unvalidated(&run.dir)
-        .map_err(|e| format!("the {} run's resolved.ron: {e}", run.fidelity))?;
-    case.initial
+/// The largest x of the release blocks of `case` in the matrix (the blocks are the same at
+/// every fidelity).
+fn release_front(matrix: &Matrix, case: &str) -> Result<f64, String> {
+    let run = matrix
+        .runs
+        .iter()
+        .find(|r| r.case.name == case)
+        .ok_or_else(|| "not in the case matrix".to_string())?;
+    run.case
+        .initial
         .regions
         .iter()
         .map(|b| b.x.1)
         .reduce(f64::max)
         .ok_or_else(|| "the case has no release block".into())
+}
+
+/// Whether the record's probe reading (the last sample at or before the station time) is
+/// its last sample at or before `t`: at the station time, or at or past its end.
+fn probe_holds_at(r: &RunRecord, t: f64) -> bool {
+    (t - r.station_time).abs() <= 1e-9 * t.max(1.0) || t >= r.end_time * (1.0 - 1e-9)
 }
 
 impl Output {
@@ -106,23 +114,23 @@ impl Output {
         }
     }
 
-    /// The output of the run of `d`; the time series at `t`.
-    pub fn read(self, d: &CaseData, t: f64) -> Result<f64, String> {
+    /// The output of the record `r` of `case`; the time series at `t`.
+    pub fn read(self, r: &RunRecord, t: f64, matrix: &Matrix) -> Result<f64, String> {
         let unknown = || "not defined for this profile".to_string();
         match self {
-            Output::MaxUs => flow_at_station(d)?.max_u_s.ok_or_else(unknown),
-            Output::FloorEpsS => flow_at_station(d)?.floor_eps_s.ok_or_else(unknown),
-            Output::FlowThickness => flow_at_station(d)?.flow_thickness.ok_or_else(unknown),
+            Output::MaxUs => r.flow()?.max_u_s.ok_or_else(unknown),
+            Output::FloorEpsS => Ok(r.flow()?.floor_eps_s),
+            Output::FlowThickness => r.flow()?.flow_thickness.ok_or_else(unknown),
             Output::CushionThickness => {
-                let m = flow_at_station(d)?;
+                let m = r.flow()?;
                 match m.air_cushion {
                     Some(true) => m.cushion_thickness.ok_or_else(unknown),
                     _ => Err("no air cushion (thickness 0)".into()),
                 }
             }
             Output::FrontTravel => {
-                let (x, _) = d.bulk_at(t)?;
-                let edge = release_front(d)?;
+                let (x, _) = bulk_at(r, t)?;
+                let edge = release_front(matrix, &r.case)?;
                 if x <= edge {
                     return Err(format!(
                         "the front has not passed the release's front edge (x = {edge} m) by \
@@ -131,12 +139,15 @@ impl Output {
                 }
                 Ok(x - edge)
             }
-            Output::MeanUs => Ok(d.bulk_at(t)?.1),
+            Output::MeanUs => Ok(bulk_at(r, t)?.1),
             Output::ProbeHu => {
-                if let Some(why) = d.run.as_ref().ok().and_then(|r| r.ended_before(t)) {
+                if let Some(why) = r.ended_before(t) {
                     return Err(why);
                 }
-                let (_, h) = d.probe_at(t)?;
+                if !probe_holds_at(r, t) {
+                    return Err(format!("no probe reading at t = {t} s recorded"));
+                }
+                let (_, h) = r.probe.clone()?;
                 if h == 0.0 {
                     return Err(format!(
                         "h_w^u = 0 at the floor probe at t = {t:.2} s (no solids at the probe yet)"
@@ -148,27 +159,32 @@ impl Output {
     }
 }
 
+/// (front x, mean u_s) of a record at `t`: why not if the run ended before `t`.
+fn bulk_at(r: &RunRecord, t: f64) -> Result<(f64, f64), String> {
+    if let Some(why) = r.ended_before(t) {
+        return Err(why);
+    }
+    r.bulk_at_station_or_end(t)
+}
+
 /// The station time of a family's runs: the paper's t = 1.25 s in their clock (1.25 s after
 /// the impact for family S, docs/impact.md §4), the same for every run of a family.
-fn family_station_time(family: &Family, cases: &Cases) -> f64 {
+fn family_station_time(family: &Family, records: &Records) -> f64 {
     family
         .points
         .iter()
-        .find_map(|(_, c)| {
-            let d = cases.get(c);
-            d.run.is_ok().then_some(d.station_time)
-        })
+        .find_map(|(_, c)| records.get(c).ok().map(|r| r.station_time))
         .unwrap_or(PROFILE_TIME)
 }
 
 /// A family's time of the time-series outputs: its station time, or the last time its runs
 /// reach if they all end before (smoke runs).
-fn family_time(family: &Family, cases: &Cases) -> f64 {
-    let station = family_station_time(family, cases);
+fn family_time(family: &Family, records: &Records) -> f64 {
+    let station = family_station_time(family, records);
     family
         .points
         .iter()
-        .filter_map(|(_, c)| Some(cases.get(c).run.as_ref().ok()?.summary.simulated_time))
+        .filter_map(|(_, c)| records.get(c).ok().map(|r| r.end_time))
         .reduce(f64::max)
         .map_or(station, |t| t.min(station))
 }
@@ -206,21 +222,21 @@ struct Computed {
     csv: String,
 }
 
-fn compute(families: Vec<Family>, cases: &Cases) -> Computed {
+fn compute(families: Vec<Family>, records: &Records, matrix: &Matrix) -> Computed {
     let mut csv = String::from(
         "family,parameter,output,kind,p_low,p_high,at,method,elasticity,points_used,reason\n",
     );
     let mut summaries = Vec::new();
     let mut times = Vec::new();
     for f in &families {
-        let t = family_time(f, cases);
+        let t = family_time(f, records);
         times.push(t);
         let mut row = Vec::new();
         for o in OUTPUTS {
             let points: Vec<(f64, Result<f64, String>)> = f
                 .points
                 .iter()
-                .map(|(p, case)| (*p, o.read(&cases.get(case), t)))
+                .map(|(p, case)| (*p, records.get(case).and_then(|r| o.read(r, t, matrix))))
                 .collect();
             let method = |m: Method| match m {
                 Method::LogLog => "log-log",
@@ -277,11 +293,11 @@ pub fn section(
     md: &mut String,
     matrix: &Matrix,
     cases_dir: &Path,
-    cases: &Cases,
+    records: &Records,
     out: &Path,
 ) -> Result<()> {
     md.push_str("## Sensitivity: elasticities of the one-factor families (issue 23)\n\n");
-    let c = compute(families(matrix, cases_dir)?, cases);
+    let c = compute(families(matrix, cases_dir)?, records, matrix);
     let svg = out.join(HEATMAP_FILE);
     let csv = out.join(CSV_FILE);
     if c.families.is_empty() {
@@ -291,7 +307,7 @@ pub fn section(
         return Ok(());
     }
     method(md);
-    let heat_cells = table(md, &c, cases);
+    let heat_cells = table(md, &c, records);
     heat_map(&c, heat_cells, &svg)?;
     runout_output::write_atomic(&csv, c.csv.as_bytes())
         .with_context(|| format!("writing {}", csv.display()))?;
@@ -364,7 +380,7 @@ fn note_number(notes: &mut Vec<String>, why: &str) -> usize {
 
 /// The table of summary elasticities, one row per family, and the notes on its "—" cells;
 /// returns the heat map's cells.
-fn table(md: &mut String, c: &Computed, cases: &Cases) -> Vec<Vec<HeatCell>> {
+fn table(md: &mut String, c: &Computed, records: &Records) -> Vec<Vec<HeatCell>> {
     let mut notes: Vec<String> = Vec::new();
     let _ = writeln!(
         md,
@@ -373,7 +389,7 @@ fn table(md: &mut String, c: &Computed, cases: &Cases) -> Vec<Vec<HeatCell>> {
     );
     let _ = writeln!(md, "|---|---|---|---|{}", "---|".repeat(OUTPUTS.len()));
     let heat_cells = (0..c.families.len())
-        .map(|k| table_row(md, c, k, cases, &mut notes))
+        .map(|k| table_row(md, c, k, records, &mut notes))
         .collect();
     md.push('\n');
     if !notes.is_empty() {
@@ -391,14 +407,14 @@ fn table_row(
     md: &mut String,
     c: &Computed,
     k: usize,
-    cases: &Cases,
+    records: &Records,
     notes: &mut Vec<String>,
 ) -> Vec<HeatCell> {
     let f = &c.families[k];
     let fidelities: BTreeSet<String> = f
         .points
         .iter()
-        .filter_map(|(_, case)| cases.get(case).fidelity().map(|x| x.to_string()))
+        .filter_map(|(_, case)| records.get(case).ok().map(|r| r.fidelity.to_string()))
         .collect();
     let fidelity = if fidelities.is_empty() {
         "—".to_string()
@@ -406,7 +422,7 @@ fn table_row(
         fidelities.into_iter().collect::<Vec<_>>().join(" + ")
     };
     let t = c.times[k];
-    let station = family_station_time(f, cases);
+    let station = family_station_time(f, records);
     let read_at = if t < station {
         format!("t = {t:.2} s (profile: {station:.3} s)")
     } else {
@@ -580,7 +596,7 @@ mod tests {
             );
         }
         let names: Vec<&str> = matrix.runs.iter().map(|r| r.case.name.as_str()).collect();
-        let cases = Cases::load(&runs, names, None);
+        let cases = super::super::records::from_runs(&runs, &names, None);
         let out = tmp.0.join("docs").join(FIGURE_DIR);
         std::fs::create_dir_all(&out).unwrap();
         let mut md = String::new();

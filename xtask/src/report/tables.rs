@@ -4,66 +4,72 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use runout_output::RunStatus;
 use runout_post::gates::DescribedGate;
 
 use super::figure_sets::{FLUME, FLUME_SIDEWALLS, MFIX_CASE, MFIX_SLIDE};
 use super::paper::PAPER_NUMBERS;
 use super::reading::reading;
+use super::record::{RunRecord, Source};
+use super::records::Records;
 use crate::metrics::mse_vs_described;
-use runout_post::case_data::Cases;
 
 /// A markdown table cell: `|` escaped.
 pub(super) fn cell(s: &str) -> String {
     s.replace('|', "\\|")
 }
 
-pub(super) fn runs_table(md: &mut String, names: &[String], cases: &Cases) {
+/// Where a record comes from, for the runs table.
+fn source_cell(r: &RunRecord) -> String {
+    match r.source {
+        Source::Store => "run folder".into(),
+        Source::Ledger => format!("ledger ({}, solver {})", r.date, r.solver),
+    }
+}
+
+/// Every case's record: fidelity, source, how the run ended, its size and cost.
+pub(super) fn runs_table(md: &mut String, names: &[String], records: &Records) {
     md.push_str(
-        "| case | fidelity | status | simulated [s] | cells | steps (rejected) | wall [s] |\n\
-         |---|---|---|---|---|---|---|\n",
+        "| case | fidelity | source | status | simulated [s] | cells | steps (rejected) | wall [s] |\n\
+         |---|---|---|---|---|---|---|---|\n",
     );
     for name in names {
-        let d = cases.get(name);
-        match &d.run {
+        match records.get(name) {
             Ok(r) => {
-                let s = &r.summary;
-                let status = match &s.status {
-                    RunStatus::Diverged { .. } => "diverged".to_string(),
-                    other => format!("{other:?}"),
-                };
                 let _ = writeln!(
                     md,
-                    "| `{name}` | {} | {status} | {:.2} | {} × {} | {} ({}) | {:.1} |",
+                    "| `{name}` | {} | {} | {} | {:.2} | {} × {} | {} ({}) | {:.1} |",
                     r.fidelity,
-                    s.simulated_time,
-                    s.cells.0,
-                    s.cells.1,
-                    s.steps,
-                    s.rejected_steps,
-                    s.wall_time
+                    cell(&source_cell(r)),
+                    r.status,
+                    r.end_time,
+                    r.cells.0,
+                    r.cells.1,
+                    r.steps,
+                    r.rejected_steps,
+                    r.wall_time
                 );
             }
             Err(why) => {
-                let _ = writeln!(md, "| `{name}` | — | {} | | | | |", cell(why));
+                let _ = writeln!(md, "| `{name}` | — | — | {} | | | | |", cell(&why));
             }
         }
     }
     md.push('\n');
 }
 
-fn paper_table(md: &mut String, cases: &Cases, described: &[(usize, f64)]) {
+fn paper_table(md: &mut String, records: &Records, described: &[(usize, f64)]) {
     md.push_str(
         "| paper Fig. | quantity | case | paper (MFIX) | runout | fidelity |\n\
          |---|---|---|---|---|---|\n",
     );
     for row in PAPER_NUMBERS {
-        let d = cases.get(row.case);
-        let value = match reading(row.quantity, &d, cases, described) {
+        let value = match reading(row.quantity, row.case, records, described) {
             Ok(v) => v,
             Err(why) => format!("— ({why})"),
         };
-        let fidelity = d.fidelity().map_or("—".into(), |f| f.to_string());
+        let fidelity = records
+            .get(row.case)
+            .map_or("—".into(), |r| r.fidelity.to_string());
         let _ = writeln!(
             md,
             "| {} | {} | `{}` | {} | {} | {} |",
@@ -80,7 +86,7 @@ fn paper_table(md: &mut String, cases: &Cases, described: &[(usize, f64)]) {
 
 fn flume_table(
     md: &mut String,
-    cases: &Cases,
+    records: &Records,
     gates: &[DescribedGate],
     described: &[(usize, f64)],
 ) {
@@ -101,9 +107,10 @@ fn flume_table(
             .join(" | ")
     );
     for (case, _, paper_mse) in FLUME.iter().chain(FLUME_SIDEWALLS) {
-        let d = cases.get(case);
-        let (fidelity, speeds, mse) = match d.gate_pairs() {
-            Ok(pairs) => {
+        let record = records.get(case);
+        let gates = record.and_then(|r| r.gates.clone().map(|g| (r, g)));
+        let (fidelity, speeds, mse) = match gates {
+            Ok((r, pairs)) => {
                 let speeds = numbers
                     .iter()
                     .map(|g| {
@@ -115,14 +122,10 @@ fn flume_table(
                     .collect::<Vec<_>>()
                     .join(" | ");
                 let mse = mse_vs_described(&pairs, described).map_or_else(
-                    || format!("— ({})", d.no_gate_reached()),
+                    || format!("— ({})", r.no_gate_reached()),
                     |(e, k)| format!("{e:.2} ({k} gates)"),
                 );
-                (
-                    d.fidelity().map_or("—".into(), |f| f.to_string()),
-                    speeds,
-                    mse,
-                )
+                (r.fidelity.to_string(), speeds, mse)
             }
             Err(why) => (
                 "—".into(),
@@ -140,15 +143,17 @@ fn flume_table(
     md.push('\n');
 }
 
-fn mfix_table(md: &mut String, cases: &Cases) {
-    let d = cases.get(MFIX_CASE);
-    let fidelity = d.fidelity().map_or("—".into(), |f| f.to_string());
+fn mfix_table(md: &mut String, records: &Records) {
+    let record = records.get(MFIX_CASE);
+    let fidelity = record
+        .as_ref()
+        .map_or("—".into(), |r| r.fidelity.to_string());
     md.push_str(
         "| t [s] | MFIX front x [m] | runout front x [m] | MFIX mean u_s [m/s] | runout mean u_s [m/s] | fidelity |\n\
          |---|---|---|---|---|---|\n",
     );
     for &(t, front, mean) in MFIX_SLIDE {
-        let (ours_front, ours_mean, f) = match d.bulk_at(t) {
+        let (ours_front, ours_mean, f) = match record.clone().and_then(|r| r.bulk_at(t)) {
             Ok((x, u)) => (format!("{x:.2}"), format!("{u:.2}"), fidelity.clone()),
             Err(why) => (format!("— ({why})"), "—".into(), "—".into()),
         };
@@ -162,19 +167,19 @@ fn mfix_table(md: &mut String, cases: &Cases) {
 }
 
 /// The section of every number the paper reports beside runout's.
-pub(super) fn paper_section(md: &mut String, cases: &Cases, described: &[(usize, f64)]) {
+pub(super) fn paper_section(md: &mut String, records: &Records, described: &[(usize, f64)]) {
     md.push_str(
         "## Every number the paper reports, beside runout's\n\n\
          Profile quantities at the station x = 11 m, t = 1.25 s; \"—\" says why runout has no \
          value.\n\n",
     );
-    paper_table(md, cases, described);
+    paper_table(md, records, described);
 }
 
 /// The section of the flume's gate speeds (paper §4, Fig. 12).
 pub(super) fn flume_section(
     md: &mut String,
-    cases: &Cases,
+    records: &Records,
     gates: &[DescribedGate],
     described: &[(usize, f64)],
 ) {
@@ -188,17 +193,17 @@ pub(super) fn flume_section(
          the channel's side walls (0.30 m apart, the floor's solids condition, gas no-slip; \
          docs/model.md §8), which the paper's 2-D runs and the `F-` rows leave out.\n\n",
     );
-    flume_table(md, cases, gates, described);
+    flume_table(md, records, gates, described);
 }
 
 /// The section of family M against MFIX.
-pub(super) fn mfix_section(md: &mut String, cases: &Cases) {
+pub(super) fn mfix_section(md: &mut String, records: &Records) {
     md.push_str(
         "## Family M: the slide run in MFIX (cross-check, not a paper number)\n\n\
          Front x and εs-weighted mean u_s from runout's bulk.csv against MFIX 21.3.2 on the same \
          case (shared/docs/cases.md family M).\n\n",
     );
-    mfix_table(md, cases);
+    mfix_table(md, records);
 }
 
 /// The floor-variant comparison of family M (issue 9, item 4) as `cargo xtask verify
