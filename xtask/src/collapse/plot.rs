@@ -74,6 +74,20 @@ pub(super) fn draw(outcomes: &[Outcome], path: &Path) -> Result<()> {
         .y_desc("(L∞ − L0)/L0")
         .draw()
         .map_err(plot_error)?;
+    draw_laws(&mut chart, (a_lo, a_hi))?;
+    draw_runs(&mut chart, outcomes)?;
+    legend(&mut chart, SeriesLabelPosition::LowerRight).map_err(plot_error)?;
+    root.present().map_err(plot_error)?;
+    Ok(())
+}
+
+/// The runout figure's axes: log a against log (L∞ − L0)/L0.
+type RunoutChart<'a, 'b> =
+    ChartContext<'a, SVGBackend<'b>, Cartesian2d<LogCoord<f64>, LogCoord<f64>>>;
+
+/// The laws over [`a_lo`, `a_hi`]: each branch over its side of a0, Kumar's reading of
+/// Lajeunesse et al. dashed.
+fn draw_laws(chart: &mut RunoutChart, (a_lo, a_hi): (f64, f64)) -> Result<()> {
     let samples =
         |from: f64, to: f64| (0..=100).map(move |k| from * (to / from).powf(k as f64 / 100.0));
     let law_label = |law: &ScalingLaw| {
@@ -128,6 +142,12 @@ pub(super) fn draw(outcomes: &[Outcome], path: &Path) -> Result<()> {
                 .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 8, y)], blue));
         }
     }
+    Ok(())
+}
+
+/// Each closure's runs: filled squares the grain edge, circles the εs ≥ 0.01 front,
+/// triangles where it reached the end wall.
+fn draw_runs(chart: &mut RunoutChart, outcomes: &[Outcome]) -> Result<()> {
     for mu_i in [true, false] {
         let runs: Vec<&Outcome> = outcomes.iter().filter(|o| o.mu_i == mu_i).collect();
         if runs.is_empty() {
@@ -169,8 +189,6 @@ pub(super) fn draw(outcomes: &[Outcome], path: &Path) -> Result<()> {
             }))
             .map_err(plot_error)?;
     }
-    legend(&mut chart, SeriesLabelPosition::LowerRight).map_err(plot_error)?;
-    root.present().map_err(plot_error)?;
     Ok(())
 }
 
