@@ -65,7 +65,12 @@ fn series(
 impl CaseData {
     /// Reads what the report needs of `case` from its chosen run under `runs`.
     pub fn load(runs: &Path, case: &str, requested: Option<Fidelity>) -> CaseData {
-        let run = choose_run(runs, case, requested);
+        CaseData::of_run(choose_run(runs, case, requested))
+    }
+
+    /// Reads what the report needs from `run` (a finished run in any folder, e.g. a level of
+    /// `cargo xtask error-time`), or says for every part why the run is missing.
+    pub fn of_run(run: Result<Run, String>) -> CaseData {
         let Ok(r) = &run else {
             let why = run.as_ref().err().cloned().unwrap_or_default();
             return CaseData {
