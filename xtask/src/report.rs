@@ -18,10 +18,10 @@ mod curves;
 mod fields;
 mod figure_sets;
 mod findings;
-mod paper;
+pub(crate) mod paper;
 /// The SVG panels, drawn by the study engine's plots.
 use runout_study::plots;
-mod reading;
+pub(crate) mod reading;
 pub mod release;
 mod sensitivity;
 mod tables;
