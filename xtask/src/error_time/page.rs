@@ -101,7 +101,11 @@ fn levels_section(md: &mut String, levels: &[Level], cases: &[Case]) -> Result<(
          file's, as in the sweep's runs. `h` is √(paper cells / cells).\n"
     );
     let names: Vec<String> = cases.iter().map(|c| format!("{} cells", c.name)).collect();
-    let _ = writeln!(md, "| level | grid | run here | {} |", names.join(" | "));
+    let _ = writeln!(
+        md,
+        "| level | grid | in this command | {} |",
+        names.join(" | ")
+    );
     let _ = writeln!(md, "|---|---|---|{}", "---:|".repeat(cases.len()));
     for level in Level::ALL {
         let grid = match level {
@@ -113,7 +117,7 @@ fn levels_section(md: &mut String, levels: &[Level], cases: &[Case]) -> Result<(
             Level::Finer => "paper grid refined 2× in x and y",
         };
         let run = if levels.contains(&level) {
-            "yes"
+            "in `--levels` (whether it ran: Runs)"
         } else {
             "**no**: not in `--levels` of this command"
         };

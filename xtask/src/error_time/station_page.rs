@@ -117,7 +117,8 @@ fn cushion_line(ladder: &Ladder) -> String {
         .map(|(l, b)| format!("{l} {}", if *b { "yes" } else { "no" }))
         .collect();
     match seen.first() {
-        None => "- Air cushion: no level has a station profile with flow.".into(),
+        None => "- Air cushion: no level has a reading (no finished run with flow at the station)."
+            .into(),
         Some(&(_, first)) if seen.iter().all(|&(_, b)| b == first) => format!(
             "- Air cushion: the same at every level ({}).",
             listed.join(", ")
