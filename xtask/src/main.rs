@@ -20,9 +20,9 @@
 //! - `ledger add RUN_DIR...`: records run folders made elsewhere in the metrics ledger
 //!   docs/results/ledger/<fidelity>.csv, which the report judges the findings from where a
 //!   case has no run folder ([`report::ledger`]);
-//! - `error-time`: issue 8's discretisation error of the station profiles and gate speeds
-//!   against wall time over a ladder of grids, for upwind and Superbee ([`error_time`]), in
-//!   docs/error-time.md;
+//! - `error-time`: the discretisation error of the paper's station and probe numbers (with
+//!   Roache's GCI), the station profiles, gate speeds and bulk histories against CPU time
+//!   over a ladder of grids ([`error_time`]), in docs/error-time.md;
 //! - `calibrate`: fits one or two numeric fields of a case to measurements (front speeds at
 //!   gates, front positions or a profile) by minimising the RMS misfit: a landscape scan,
 //!   then Brent (1-D) or Nelder–Mead (2-D) from argmin ([`calibrate`], docs/calibrate.md);
@@ -192,18 +192,20 @@ enum Task {
         #[arg(long, default_value_t = 1)]
         jobs: usize,
     },
-    /// Discretisation error of the station profiles and gate speeds against wall time
-    /// (issue 8): each case on a ladder of grids, one run at a time, with each scheme; writes
-    /// docs/error-time.md, docs/error-time/error_time.csv and SVG figures.
+    /// Discretisation error of the paper's station and probe numbers, the station profiles,
+    /// gate speeds and bulk histories against CPU time (issues 8, 45): each case on a ladder
+    /// of grids, one run at a time, with the observed order, Richardson and Roache's GCI;
+    /// writes docs/error-time.md, docs/error-time/error_time.csv and SVG figures.
     ErrorTime {
-        /// comma-separated levels: tiny (pipeline check), smoke, coarse, paper, finer
-        #[arg(long, default_value = "smoke,coarse,paper,finer")]
+        /// comma-separated levels: tiny (pipeline check), smoke, coarse, half (the paper grid
+        /// coarsened 2×), paper, finer
+        #[arg(long, default_value = error_time::DEFAULT_LEVELS)]
         levels: String,
         /// comma-separated case names of the matrix
         #[arg(long, default_value = error_time::DEFAULT_CASES)]
         cases: String,
-        /// comma-separated convection schemes: upwind, superbee
-        #[arg(long, default_value = "upwind,superbee")]
+        /// comma-separated convection schemes: upwind, superbee (default: each case's own)
+        #[arg(long, default_value = "")]
         schemes: String,
         /// reuse finished runs of unchanged cases instead of rerunning them
         #[arg(long)]

@@ -19,12 +19,12 @@ mod fields;
 mod figure_sets;
 mod findings;
 pub mod ledger;
-mod paper;
+pub(crate) mod paper;
 /// The SVG panels, drawn by the study engine's plots.
 use runout_study::plots;
-mod reading;
+pub(crate) mod reading;
 mod record;
-mod records;
+pub(crate) mod records;
 pub mod release;
 mod row;
 mod sensitivity;

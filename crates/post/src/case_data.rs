@@ -201,7 +201,7 @@ impl CaseData {
     }
 
     /// A case with nothing, for `why`.
-    fn missing(why: &str) -> CaseData {
+    pub fn missing(why: &str) -> CaseData {
         let why = why.to_string();
         CaseData {
             run: Err(why.clone()),

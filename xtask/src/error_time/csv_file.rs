@@ -1,11 +1,14 @@
 //! `docs/error-time/error_time.csv`: one row per case, scheme, level and quantity, with the
-//! run's grid, cost and status and the quantity's errors and observed order.
+//! run's grid, cost (wall and CPU time, threads) and status, the quantity's value (station
+//! numbers), its errors and observed order, and for station numbers the GCI of the ladder's
+//! finest level (repeated on every row of the quantity).
 
 use std::path::Path;
 
 use anyhow::Result;
 use runout_output::RunStatus;
 
+use super::gci::ScalarConvergence;
 use super::ladder::scheme_name;
 use super::richardson::asymptotic;
 use super::{opt, Ladder};
@@ -22,6 +25,8 @@ pub(super) fn write_csv(path: &Path, ladders: &[Ladder]) -> Result<()> {
         "status",
         "simulated_time_s",
         "wall_time_s",
+        "threads",
+        "cpu_time_s",
         "steps",
         "quantity",
         "norm",
@@ -32,12 +37,20 @@ pub(super) fn write_csv(path: &Path, ladders: &[Ladder]) -> Result<()> {
         "richardson_error",
         "observed_order",
         "order_asymptotic",
+        "value",
+        "richardson_value",
+        "gci_fine",
+        "gci_fine_relative",
+        "gci_safety_factor",
+        "gci_order",
     ])?;
     let e = |v: Option<f64>| opt(v, |x| format!("{x:.6e}"));
     for ladder in ladders {
         for (q, errors) in &ladder.errors {
             let reference = errors.reference.map(|k| ladder.runs[k].level.name());
             let p = errors.order.as_ref().and_then(|o| o.p);
+            let gci = ladder.gci.iter().find(|(k, _)| k == q).map(|(_, g)| g);
+            let g = |f: fn(&ScalarConvergence) -> f64| opt(gci.map(f), |x| format!("{x:.6e}"));
             for (k, run) in ladder.runs.iter().enumerate() {
                 let (status, time, wall, steps) = match &run.summary {
                     Ok(s) => (
@@ -63,6 +76,9 @@ pub(super) fn write_csv(path: &Path, ladders: &[Ladder]) -> Result<()> {
                     status,
                     time,
                     wall,
+                    run.cost.map_or(String::new(), |c| c.threads.to_string()),
+                    run.cost
+                        .map_or(String::new(), |c| format!("{:.3}", c.cpu_seconds)),
                     steps,
                     q.name().into(),
                     q.norm().into(),
@@ -73,6 +89,12 @@ pub(super) fn write_csv(path: &Path, ladders: &[Ladder]) -> Result<()> {
                     e(errors.richardson[k]),
                     opt(p, |x| format!("{x:.3}")),
                     p.map_or(String::new(), |p| asymptotic(p, &ladder.scheme).to_string()),
+                    e(run.data.station.get(*q)),
+                    g(|s| s.extrapolated),
+                    g(|s| s.gci_fine_absolute),
+                    g(|s| s.gci_fine),
+                    g(|s| s.safety_factor),
+                    g(|s| s.gci_order),
                 ])?;
             }
         }

@@ -29,8 +29,12 @@ pub struct QuantityErrors {
 
 /// The errors of `quantity` over `ladder` (levels in any order).
 pub fn quantity_errors(quantity: Quantity, ladder: &[LevelData]) -> QuantityErrors {
+    if quantity.source() == Source::Station {
+        return super::station_errors::station_errors(quantity, ladder);
+    }
     let n = ladder.len();
     let has = |l: &LevelData| match quantity.source() {
+        Source::Station => unreachable!("station numbers return above"),
         Source::Profile => l.profile.is_some(),
         Source::Gates => l.gates.is_some(),
         Source::History => l.history.as_ref().is_some_and(|h| !h.t.is_empty()),
@@ -62,6 +66,7 @@ pub fn quantity_errors(quantity: Quantity, ladder: &[LevelData]) -> QuantityErro
         }
     }
     let samples = match quantity.source() {
+        Source::Station => unreachable!("station numbers return above"),
         Source::Profile => profile_samples(quantity, ladder, reference),
         Source::Gates => gate_samples(ladder),
         Source::History => history_samples(quantity, ladder, reference),
@@ -69,6 +74,7 @@ pub fn quantity_errors(quantity: Quantity, ladder: &[LevelData]) -> QuantityErro
     out.samples = samples.weights.len();
     if samples.weights.is_empty() {
         out.note = Some(match quantity.source() {
+            Source::Station => unreachable!("station numbers return above"),
             Source::Profile => format!("no run has εs ≥ {FLOW_THRESHOLD} at the station"),
             Source::Gates => "no gate reached by every run".into(),
             Source::History => "no sample time common to every run".into(),
@@ -143,6 +149,7 @@ mod tests {
                     .collect(),
             ),
             history: Some(synthetic_history(h, c, p, 0.0)),
+            ..LevelData::default()
         }
     }
 

@@ -5,8 +5,8 @@ use std::str::FromStr;
 
 use runout_case::{Case, Convection};
 
-/// Refinement factor of the `finer` level over the paper grid (and extra coarsening of
-/// `tiny` over the smoke grid).
+/// Refinement factor of the `finer` level over the paper grid, coarsening of `half` from it
+/// (and extra coarsening of `tiny` over the smoke grid).
 const LEVEL_STEP: u32 = 2;
 
 /// A grid of the ladder, coarsest first.
@@ -18,6 +18,9 @@ pub enum Level {
     Smoke,
     /// the coarse preset's grid
     Coarse,
+    /// the paper grid coarsened 2×: with `coarse`, `paper` and `finer` a ladder refined 2×
+    /// at every step (family S: 250 × 23, 500 × 45, 1000 × 90, 2000 × 180)
+    Half,
     /// the case's own (the paper's) grid
     Paper,
     /// the paper grid refined 2×
@@ -26,10 +29,11 @@ pub enum Level {
 
 impl Level {
     /// Every level, coarsest first.
-    pub const ALL: [Level; 5] = [
+    pub const ALL: [Level; 6] = [
         Level::Tiny,
         Level::Smoke,
         Level::Coarse,
+        Level::Half,
         Level::Paper,
         Level::Finer,
     ];
@@ -40,6 +44,7 @@ impl Level {
             Level::Tiny => "tiny",
             Level::Smoke => "smoke",
             Level::Coarse => "coarse",
+            Level::Half => "half",
             Level::Paper => "paper",
             Level::Finer => "finer",
         }
@@ -56,6 +61,7 @@ impl Level {
             Level::Tiny => coarsen(LEVEL_STEP * case.fidelity.smoke.coarsen, &mut c),
             Level::Smoke => coarsen(case.fidelity.smoke.coarsen, &mut c),
             Level::Coarse => coarsen(case.fidelity.coarse.coarsen, &mut c),
+            Level::Half => coarsen(LEVEL_STEP, &mut c),
             Level::Paper => {}
             Level::Finer => {
                 c.domain.x = case.domain.x.refined(LEVEL_STEP);
@@ -79,7 +85,7 @@ impl FromStr for Level {
             .into_iter()
             .find(|l| l.name() == s.trim())
             .ok_or_else(|| {
-                format!("unknown level `{s}`: expected tiny, smoke, coarse, paper or finer")
+                format!("unknown level `{s}`: expected tiny, smoke, coarse, half, paper or finer")
             })
     }
 }
@@ -140,6 +146,7 @@ mod tests {
             (g.nx(), g.ny())
         };
         assert_eq!(cells(Level::Paper), (1000, 90));
+        assert_eq!(cells(Level::Half), (500, 45));
         assert_eq!(cells(Level::Finer), (2000, 180));
         assert_eq!(
             cells(Level::Coarse),

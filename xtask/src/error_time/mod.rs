@@ -1,17 +1,27 @@
-//! `cargo xtask error-time`: the discretisation error of the station profiles and the gate
-//! speeds against wall time (issue 8), for first-order upwind and Superbee.
+//! `cargo xtask error-time`: the discretisation error of the paper's station and probe
+//! numbers, the station profiles, the gate speeds and the bulk histories against CPU time
+//! (issues 8 and 45), with the observed order, Richardson extrapolation and Roache's GCI.
 //!
-//! Each case (default S-JJ-phi φ = 0.1 and F-JJ φ = 0.1) runs on a ladder of grids, one run
-//! at a time, into `runs/error-time/<case>/<level>-<scheme>/`:
+//! Each case (default S-JJ-phi φ = 0.1 and S-JEN-d d = 0.5 mm) runs on a ladder of grids, one
+//! run at a time, with its own convection scheme (or those of `--schemes`), into
+//! `runs/error-time/<case>/<level>-<scheme>/`:
 //! - `tiny`: the smoke grid coarsened 2× more (a pipeline check, not a fidelity preset);
 //! - `smoke`, `coarse`: the grids of the case's fidelity presets;
-//! - `paper`: the case's own grid; `finer`: the paper grid refined 2× ([`Segment::refined`]).
+//! - `half`: the paper grid coarsened 2×; `paper`: the case's own grid; `finer`: the paper
+//!   grid refined 2× ([`Segment::refined`]). For family S, coarse, half, paper and finer
+//!   (250 × 23, 500 × 45, 1000 × 90, 2000 × 180) are a uniform ladder, 2× per step.
 //!
 //! Every level runs to the case's own end time (the presets' shorter smoke end time would
 //! stop before the profile time and the gates), so only the grid changes between levels;
 //! `--end-time T` stops every level at T instead and compares the profiles there.
 //!
 //! Errors, for each case and scheme:
+//! - **the paper's station and probe numbers** (air-cushion thickness, flow thickness, εs and
+//!   θ of the floor cell, max u_s at the station at the profile time, h_w^u at the floor
+//!   probe), read by the report's own functions ([`station`]): |q − q_ref| in their unit,
+//!   and from the three finest levels the trend, observed order, Richardson extrapolation
+//!   and Roache's GCI ([`gci`]); a cushion present at one level and not the next is said to
+//!   be a ladder that does not converge;
 //! - **station profiles** (εs, u_s, θ at the x and last time of the case's first profile
 //!   monitor): every run's profile is interpolated linearly onto the cell-centre heights of
 //!   the reference run (extended linearly over the half cell at either end) and compared on
@@ -36,24 +46,29 @@
 //! fronts, 2 where smooth); otherwise, or when the differences do not shrink, the page says
 //! so and the Richardson numbers are to be read as indicative only.
 //!
-//! Every level runs with MFIX's outer iteration (wall closures not relaxed, see
-//! `mfix_iteration` in [`run`]), whatever the case file sets.
+//! Every level runs with the case file's numerics (outer iteration, time-step controller),
+//! as the sweep's runs do, so the paper level is the sweep's paper run. Each run's CPU time
+//! and threads are kept beside it ([`cost`]).
 //!
-//! Output: `docs/error-time.md` (date, command, levels not run and why, tables),
-//! `docs/error-time/error_time.csv` and one log–log SVG of error against wall time per case
+//! Output: `docs/error-time.md` (date, command, the hand-kept notes of
+//! `docs/error-time/notes.md`, levels not run and why, tables),
+//! `docs/error-time/error_time.csv` and one log–log SVG of error against CPU time per case
 //! and quantity in `docs/error-time/`.
 //!
 //! The parts, one a file: [`ladder`] (the levels and schemes), [`quantity`] (what is
-//! compared), [`run`] (running or reusing one level) and [`read`] (reading its files),
-//! [`measures`] (interpolation, norms, shared samples), [`errors`] (the errors against the
-//! reference and the Richardson extrapolation), [`richardson`] (the observed order),
-//! [`csv_file`], [`page`] and [`plot`] (the outputs); this file holds the options and the
-//! study's stages.
+//! compared), [`run`] (running or reusing one level), [`cost`] (its CPU time), [`read`] and
+//! [`station`] (reading its files), [`measures`] (interpolation, norms, shared samples),
+//! [`errors`] and [`station_errors`] (the errors against the reference and the Richardson
+//! extrapolation), [`richardson`] (the observed order), [`gci`] (Roache's GCI),
+//! [`csv_file`], [`page`], [`station_page`] and [`plot`] (the outputs); this file holds the
+//! options and the study's stages.
 //!
 //! [`Segment::refined`]: runout_mesh::Segment::refined
 
+mod cost;
 mod csv_file;
 mod errors;
+mod gci;
 mod ladder;
 mod measures;
 mod page;
@@ -62,6 +77,9 @@ mod quantity;
 mod read;
 mod richardson;
 mod run;
+mod station;
+mod station_errors;
+mod station_page;
 
 use std::path::Path;
 
@@ -69,15 +87,20 @@ use anyhow::{bail, Context, Result};
 use runout_case::{Case, Convection};
 
 use self::errors::{quantity_errors, QuantityErrors};
+use self::gci::ScalarConvergence;
 pub use self::ladder::parse_scheme;
 use self::ladder::{ending_at, scheme_name, Level};
 use self::quantity::{quantities, LevelData, Quantity};
 use self::run::{run_level, Run};
+use self::station_errors::station_gci;
 use crate::stability::today;
 use crate::sweep::matrix;
 
-/// The cases of issue 8's error-against-time study.
-pub const DEFAULT_CASES: &str = "S-JJ-phi_phi=0.1,F-JJ_phi=0.1";
+/// The cases of the error-against-time study: family S on the Johnson–Jackson φ = 0.1 floor
+/// and on the Jenkins floor with d = 0.5 mm (issue 45).
+pub const DEFAULT_CASES: &str = "S-JJ-phi_phi=0.1,S-JEN-d_d=0.0005";
+/// The uniform ladder of family S: every level 2× the cells of the previous in x and y.
+pub const DEFAULT_LEVELS: &str = "coarse,half,paper,finer";
 /// What `--no-run` reports for a level without a finished run.
 const NOT_RUN: &str = "not run (--no-run)";
 /// Run folders, relative to the workspace root.
@@ -86,6 +109,9 @@ const RUNS_DIR: &str = "runs/error-time";
 const PAGE: &str = "docs/error-time.md";
 /// CSV and figures, relative to the workspace root.
 const OUTPUT_DIR: &str = "docs/error-time";
+/// The notes kept by hand (which commit ran which level, caveats), in [`OUTPUT_DIR`]: the
+/// page puts them under its header.
+const NOTES: &str = "notes.md";
 
 /// Options of the study.
 pub struct Options {
@@ -93,7 +119,7 @@ pub struct Options {
     pub levels: Vec<Level>,
     /// case names (expanded sweep names, e.g. `S-JJ-phi_phi=0.1`)
     pub cases: Vec<String>,
-    /// convection schemes
+    /// convection schemes; empty: each case's own (`numerics.convection` of its file)
     pub schemes: Vec<Convection>,
     /// read finished runs of an unchanged case instead of rerunning them
     pub reuse: bool,
@@ -108,11 +134,18 @@ impl Options {
     /// The command line that reproduces these options.
     pub fn command(&self) -> String {
         let join = |v: Vec<&str>| v.join(",");
+        let schemes = if self.schemes.is_empty() {
+            String::new()
+        } else {
+            format!(
+                " --schemes {}",
+                join(self.schemes.iter().map(scheme_name).collect())
+            )
+        };
         format!(
-            "cargo xtask error-time --levels {} --cases {} --schemes {}{}{}",
+            "cargo xtask error-time --levels {} --cases {}{schemes}{}{}",
             join(self.levels.iter().map(|l| l.name()).collect()),
             join(self.cases.iter().map(String::as_str).collect()),
-            join(self.schemes.iter().map(scheme_name).collect()),
             self.end_time
                 .map_or(String::new(), |t| format!(" --end-time {t}")),
             if self.no_run {
@@ -132,12 +165,14 @@ struct Ladder {
     scheme: Convection,
     runs: Vec<Run>,
     errors: Vec<(Quantity, QuantityErrors)>,
+    /// Roache's GCI of each station number with three levels or more
+    gci: Vec<(Quantity, ScalarConvergence)>,
 }
 
 /// Runs the study and writes its page, CSV and figures.
 pub fn error_time(root: &Path, opts: &Options) -> Result<()> {
-    if opts.levels.is_empty() || opts.cases.is_empty() || opts.schemes.is_empty() {
-        bail!("--levels, --cases and --schemes need at least one entry each");
+    if opts.levels.is_empty() || opts.cases.is_empty() {
+        bail!("--levels and --cases need at least one entry each");
     }
     let mut levels = opts.levels.clone();
     levels.sort();
@@ -207,7 +242,13 @@ fn run_ladders(
     let mut ladders = Vec::new();
     for case in cases {
         let paper_cells = case.grid()?.cell_count();
-        for scheme in &opts.schemes {
+        let own = [case.numerics.convection.clone()];
+        let schemes = if opts.schemes.is_empty() {
+            &own[..]
+        } else {
+            &opts.schemes[..]
+        };
+        for scheme in schemes {
             let runs = levels
                 .iter()
                 .map(|&level| run_level(root, case, scheme, level, paper_cells, opts))
@@ -217,11 +258,16 @@ fn run_ladders(
                 .into_iter()
                 .map(|q| (q, quantity_errors(q, &data)))
                 .collect();
+            let gci = quantities(case)
+                .into_iter()
+                .filter_map(|q| Some((q, station_gci(q, &data, scheme)?)))
+                .collect();
             ladders.push(Ladder {
                 case: case.name.clone(),
                 scheme: scheme.clone(),
                 runs,
                 errors,
+                gci,
             });
         }
     }
@@ -248,7 +294,16 @@ fn write_outputs(
             }
         }
     }
-    let page = page::markdown(command, &today(), levels, cases, ladders, &figures)?;
+    let notes = std::fs::read_to_string(out.join(NOTES)).ok();
+    let page = page::markdown(
+        command,
+        &today(),
+        levels,
+        cases,
+        ladders,
+        &figures,
+        notes.as_deref(),
+    )?;
     runout_output::write_atomic(&root.join(PAGE), page.as_bytes())
         .with_context(|| format!("writing {PAGE}"))?;
     println!(

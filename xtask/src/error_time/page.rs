@@ -1,6 +1,8 @@
-//! `docs/error-time.md`: the date and command, the levels (run or not, and why), the error
-//! measures, one table per case with the references and observed orders, the figures and
-//! every run's folder and status.
+//! `docs/error-time.md`: the date and command, the notes kept by hand in
+//! `docs/error-time/notes.md` (which commit ran which level, caveats), the levels (run or
+//! not, and why), the error measures, one section per case (the paper's station numbers with
+//! their GCI, [`super::station_page`]; the errors of every quantity with the references and
+//! observed orders), the figures and every run's folder and status.
 
 use std::fmt::Write as _;
 
@@ -13,7 +15,7 @@ use super::ladder::{scheme_name, Level};
 use super::quantity::{quantities, Quantity, Source};
 use super::richardson::{asymptotic, ASYMPTOTIC_BAND};
 use super::run::Run;
-use super::{opt, Ladder, NOT_RUN, OUTPUT_DIR};
+use super::{opt, station_page, Ladder, NOT_RUN, OUTPUT_DIR};
 use crate::metrics::FLOW_THRESHOLD;
 
 /// Whether the page describes a pipeline check rather than a study.
@@ -21,8 +23,8 @@ fn pipeline_check(levels: &[Level]) -> bool {
     levels.contains(&Level::Tiny) || levels.len() < 3
 }
 
-/// The page: date, command, levels (run or not, and why), definitions, one table per case
-/// with the references and observed orders, the figures and every run's folder and status.
+/// The page. `notes`, if any, goes under the header as it is (the hand-kept notes of
+/// `docs/error-time/notes.md`, so regenerating the page keeps them).
 pub(super) fn markdown(
     command: &str,
     date: &str,
@@ -30,14 +32,21 @@ pub(super) fn markdown(
     cases: &[Case],
     ladders: &[Ladder],
     figures: &[(String, Quantity, String)],
+    notes: Option<&str>,
 ) -> Result<String> {
     let mut md = String::new();
-    let _ = writeln!(md, "# Discretisation error against run time (issue 8)\n");
     let _ = writeln!(
         md,
-        "Generated on {date} by `{command}` (one run at a time, {} rayon thread(s)).\n",
-        rayon::current_num_threads()
+        "# Discretisation error against run time (issues 8, 45)\n"
     );
+    let _ = writeln!(
+        md,
+        "Generated on {date} by `{command}` (one run at a time; each run's threads and CPU \
+         time are in its row).\n"
+    );
+    if let Some(notes) = notes {
+        let _ = writeln!(md, "{}\n", notes.trim_end());
+    }
     if pipeline_check(levels) {
         let _ = writeln!(
             md,
@@ -87,24 +96,28 @@ fn levels_section(md: &mut String, levels: &[Level], cases: &[Case]) -> Result<(
         md,
         "Every level runs a case to the same end time (given with the case below; the smoke \
          preset's shorter end time is not used: it would stop before the profile time and the \
-         gates); only the grid changes. Every level iterates as MFIX does (the wall closures \
-         as computed: `numerics.relaxation.wall_closures` = 1, which the sensitivity base \
-         relaxes where they cycle for the sweep's speed; it changes the outer iterations' path, \
-         not the converged step). `h` is √(paper cells / cells).\n"
+         gates); only the grid changes: every other setting (the convection scheme unless \
+         `--schemes` names one, the outer iteration, the time-step controller) is the case \
+         file's, as in the sweep's runs. `h` is √(paper cells / cells).\n"
     );
     let names: Vec<String> = cases.iter().map(|c| format!("{} cells", c.name)).collect();
-    let _ = writeln!(md, "| level | grid | run here | {} |", names.join(" | "));
+    let _ = writeln!(
+        md,
+        "| level | grid | in this command | {} |",
+        names.join(" | ")
+    );
     let _ = writeln!(md, "|---|---|---|{}", "---:|".repeat(cases.len()));
     for level in Level::ALL {
         let grid = match level {
             Level::Tiny => "smoke preset coarsened 2× more (pipeline check)",
             Level::Smoke => "smoke preset's coarsening",
             Level::Coarse => "coarse preset's coarsening",
+            Level::Half => "paper grid coarsened 2× in x and y",
             Level::Paper => "the case's own grid",
             Level::Finer => "paper grid refined 2× in x and y",
         };
         let run = if levels.contains(&level) {
-            "yes"
+            "in `--levels` (whether it ran: Runs)"
         } else {
             "**no**: not in `--levels` of this command"
         };
@@ -148,6 +161,13 @@ fn definitions_section(md: &mut String) {
          shrink, the extrapolation is not reliable and the page says so.\n",
         ASYMPTOTIC_BAND.0, ASYMPTOTIC_BAND.1
     );
+    station_page::definitions(md);
+    let _ = writeln!(
+        md,
+        "- **Cost**: the CPU time of each run (getrusage of the process that ran it, user + \
+         system, all threads, kept in the run's `cost.json`), with its thread count; the \
+         figures plot each level's error against it.\n"
+    );
 }
 
 /// The section of one case: what is compared, one row per run (grid, cost, status and the
@@ -169,6 +189,10 @@ fn case_section(
     }
     case_setting(md, case);
     let ladders: Vec<&Ladder> = ladders.iter().filter(|l| l.case == case.name).collect();
+    for ladder in &ladders {
+        station_page::station_section(md, ladder);
+    }
+    let _ = writeln!(md, "### Every quantity against the finest level\n");
     runs_table(md, case, &qs, &ladders);
     let _ = writeln!(md);
     for ladder in &ladders {
@@ -182,10 +206,19 @@ fn case_section(
 
 /// The end time, the station and the gates of a case, and how to read the error cells.
 fn case_setting(md: &mut String, case: &Case) {
-    let _ = writeln!(md, "Every level runs to t = {} s.", case.run.end_time);
+    let _ = writeln!(
+        md,
+        "Every level runs to the case's end time, t = {} s on the case's clock (for a clock \
+         from the impact, later by the tilt time: the time reached is under Runs).",
+        case.run.end_time
+    );
     if let Some(m) = case.monitors.profiles.first() {
         let t = m.times.last().copied().unwrap_or(f64::NAN);
-        let _ = writeln!(md, "Station profile at x = {} m, t = {t} s.", m.x);
+        let _ = writeln!(
+            md,
+            "Station profile at x = {} m, t = {t} s on the case's clock.",
+            m.x
+        );
     }
     if let Some(f) = &case.monitors.front {
         let gates: Vec<String> = f.gates.iter().map(f64::to_string).collect();
@@ -214,7 +247,7 @@ fn runs_table(md: &mut String, case: &Case, qs: &[Quantity], ladders: &[&Ladder]
     let headings: Vec<&str> = qs.iter().map(|q| q.heading()).collect();
     let _ = writeln!(
         md,
-        "| scheme | level | cells | h | wall time [s] | steps | status |{} {} |",
+        "| scheme | level | cells | h | wall time [s] | CPU [s] | steps | status |{} {} |",
         if case.monitors.front.is_some() {
             " speed step [m/s] |"
         } else {
@@ -224,7 +257,7 @@ fn runs_table(md: &mut String, case: &Case, qs: &[Quantity], ladders: &[&Ladder]
     );
     let _ = writeln!(
         md,
-        "|---|---|---:|---:|---:|---:|---|{}{}",
+        "|---|---|---:|---:|---:|---:|---:|---|{}{}",
         if case.monitors.front.is_some() {
             "---:|"
         } else {
@@ -237,12 +270,18 @@ fn runs_table(md: &mut String, case: &Case, qs: &[Quantity], ladders: &[&Ladder]
             let (wall, steps, status) = run_cost(run);
             let _ = writeln!(
                 md,
-                "| {} | {} | {} × {} | {:.2} | {wall} | {steps} | {status} |{} {} |",
+                "| {} | {} | {} × {} | {:.2} | {wall} | {} | {steps} | {status} |{} {} |",
                 scheme_name(&ladder.scheme),
                 run.level,
                 run.cells.0,
                 run.cells.1,
                 run.data.h,
+                run.cost.map_or(String::new(), |c| format!(
+                    "{:.0} ({} thread{})",
+                    c.cpu_seconds,
+                    c.threads,
+                    if c.threads == 1 { "" } else { "s" }
+                )),
                 run.speed_quantum
                     .map_or(String::new(), |q| format!(" {q:.2} |")),
                 error_cells(ladder, k).join(" | ")
@@ -309,7 +348,7 @@ fn case_figures(
     for (_, q, file) in figures.iter().filter(|(c, _, _)| c == &case.name) {
         let _ = writeln!(
             md,
-            "![{} {}: error against wall time]({}/{file})\n",
+            "![{} {}: error against CPU time]({}/{file})\n",
             case.name,
             q.name(),
             OUTPUT_DIR.trim_start_matches("docs/")
@@ -333,6 +372,7 @@ fn order_line(ladder: &Ladder, q: Quantity, e: &QuantityErrors) -> String {
     match e.reference {
         Some(r) => {
             let what = match q.source() {
+                Source::Station => "value",
                 Source::Profile => "heights in the flow band",
                 Source::Gates => "gates",
                 Source::History => "sample times",

@@ -1,5 +1,7 @@
-//! The figures: log–log error against wall time, one per case and quantity, one colour per
-//! scheme (solid against the reference, dashed against the Richardson extrapolation).
+//! The figures: log–log error against CPU time (`cost.json` of each run: all threads, so a
+//! user reads off what a tolerance costs whatever the thread count), one per case and
+//! quantity, one colour per scheme (solid against the reference, dashed against the
+//! Richardson extrapolation). A run without a recorded CPU time has no point.
 
 use std::path::Path;
 
@@ -39,7 +41,7 @@ fn decades(values: impl Iterator<Item = f64>) -> (f64, f64) {
     (lo, hi)
 }
 
-/// Log–log error against wall time for one case and quantity, one colour per scheme: solid
+/// Log–log error against CPU time for one case and quantity, one colour per scheme: solid
 /// against the reference, dashed against the Richardson extrapolation. Returns false (and
 /// writes nothing) when no level has a positive error.
 pub(super) fn draw(
@@ -48,7 +50,7 @@ pub(super) fn draw(
     quantity: Quantity,
     ladders: &[Ladder],
 ) -> Result<bool> {
-    // (scheme, against reference, against Richardson), points (wall time, error, level)
+    // (scheme, against reference, against Richardson), points (CPU time, error, level)
     type Points = Vec<(f64, f64, &'static str)>;
     let mut lines: Vec<(&'static str, Points, Points)> = Vec::new();
     for ladder in ladders.iter().filter(|l| l.case == case) {
@@ -61,9 +63,10 @@ pub(super) fn draw(
                 .iter()
                 .zip(errors)
                 .filter_map(|(r, e)| {
-                    let wall = r.summary.as_ref().ok()?.wall_time;
+                    r.summary.as_ref().ok()?;
+                    let cpu = r.cost?.cpu_seconds;
                     let e = (*e)?;
-                    (e > 0.0 && e.is_finite() && wall > 0.0).then_some((wall, e, r.level.name()))
+                    (e > 0.0 && e.is_finite() && cpu > 0.0).then_some((cpu, e, r.level.name()))
                 })
                 .collect()
         };
@@ -96,7 +99,7 @@ pub(super) fn draw(
         .map_err(plot_error)?;
     chart
         .configure_mesh()
-        .x_desc("wall time [s] (labels: level)")
+        .x_desc("CPU time [s], all threads (labels: level)")
         .y_desc(format!(
             "error: solid vs finest run, dashed vs Richardson ({})",
             quantity.norm()

@@ -1,13 +1,28 @@
-//! What is compared: the quantities (station profiles, gate speeds, front position and mean
-//! speed against time), where each comes from, and what one level of a ladder gives.
+//! What is compared: the quantities (the paper's station and probe numbers, station
+//! profiles, gate speeds, front position and mean speed against time), where each comes
+//! from, and what one level of a ladder gives.
 
 use runout_case::Case;
 
 use runout_post::profile::Profile;
 
+use super::station::StationValues;
+
 /// The quantities compared.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Quantity {
+    /// air-cushion thickness at the station (0 without a cushion) [m]
+    CushionThickness,
+    /// flow thickness at the station [m]
+    FlowThickness,
+    /// εs of the floor cell at the station
+    FloorEpsS,
+    /// θ of the floor cell at the station [m²/s²]
+    FloorTheta,
+    /// largest u_s of the station profile [m/s]
+    MaxUs,
+    /// h_w^u at the floor probe at the profile time [1/m]
+    ProbeHu,
     /// εs at the station
     EpsS,
     /// u_s at the station
@@ -25,6 +40,8 @@ pub enum Quantity {
 /// Where a quantity comes from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(super) enum Source {
+    /// one number of the station profile or the floor probe, read as the report reads it
+    Station,
     /// the station profile
     Profile,
     /// gates.csv
@@ -35,7 +52,13 @@ pub(super) enum Source {
 
 impl Quantity {
     /// Every quantity.
-    pub const ALL: [Quantity; 6] = [
+    pub const ALL: [Quantity; 12] = [
+        Quantity::CushionThickness,
+        Quantity::FlowThickness,
+        Quantity::FloorEpsS,
+        Quantity::FloorTheta,
+        Quantity::MaxUs,
+        Quantity::ProbeHu,
         Quantity::EpsS,
         Quantity::UsS,
         Quantity::Theta,
@@ -47,6 +70,12 @@ impl Quantity {
     /// Name in files and the CSV.
     pub fn name(self) -> &'static str {
         match self {
+            Quantity::CushionThickness => "cushion_thickness",
+            Quantity::FlowThickness => "flow_thickness",
+            Quantity::FloorEpsS => "floor_eps_s",
+            Quantity::FloorTheta => "floor_theta",
+            Quantity::MaxUs => "max_u_s",
+            Quantity::ProbeHu => "probe_h_w_u",
             Quantity::EpsS => "eps_s",
             Quantity::UsS => "u_s",
             Quantity::Theta => "theta",
@@ -59,6 +88,12 @@ impl Quantity {
     /// Heading in tables and figures.
     pub(super) fn heading(self) -> &'static str {
         match self {
+            Quantity::CushionThickness => "cushion thickness [m]",
+            Quantity::FlowThickness => "flow thickness [m]",
+            Quantity::FloorEpsS => "floor εs",
+            Quantity::FloorTheta => "floor θ [m²/s²]",
+            Quantity::MaxUs => "max u_s [m/s]",
+            Quantity::ProbeHu => "h_w^u at the probe [1/m]",
             Quantity::EpsS => "εs profile L1/range",
             Quantity::UsS => "u_s profile L1/range",
             Quantity::Theta => "θ profile L1/range",
@@ -73,12 +108,23 @@ impl Quantity {
         match self {
             Quantity::GateSpeed | Quantity::MeanSpeed => "rms_m_per_s",
             Quantity::FrontPosition => "rms_m",
+            Quantity::CushionThickness | Quantity::FlowThickness => "abs_m",
+            Quantity::FloorEpsS => "abs",
+            Quantity::FloorTheta => "abs_m2_per_s2",
+            Quantity::MaxUs => "abs_m_per_s",
+            Quantity::ProbeHu => "abs_per_m",
             _ => "l1_over_range",
         }
     }
 
     pub(super) fn source(self) -> Source {
         match self {
+            Quantity::CushionThickness
+            | Quantity::FlowThickness
+            | Quantity::FloorEpsS
+            | Quantity::FloorTheta
+            | Quantity::MaxUs
+            | Quantity::ProbeHu => Source::Station,
             Quantity::EpsS | Quantity::UsS | Quantity::Theta => Source::Profile,
             Quantity::GateSpeed => Source::Gates,
             Quantity::FrontPosition | Quantity::MeanSpeed => Source::History,
@@ -119,6 +165,8 @@ pub struct LevelData {
     pub gates: Option<Vec<(usize, f64)>>,
     /// the bulk monitor's history, or none
     pub history: Option<History>,
+    /// the paper's station and probe numbers, each with why it is missing
+    pub station: StationValues,
 }
 
 /// A run's bulk monitor (`bulk.csv`), times increasing.
@@ -137,6 +185,10 @@ pub(super) fn quantities(case: &Case) -> Vec<Quantity> {
     Quantity::ALL
         .into_iter()
         .filter(|q| match q.source() {
+            Source::Station => {
+                !case.monitors.profiles.is_empty()
+                    && (*q != Quantity::ProbeHu || !case.monitors.wall_probes.is_empty())
+            }
             Source::Profile => !case.monitors.profiles.is_empty(),
             Source::Gates => case.monitors.front.is_some(),
             Source::History => case.monitors.bulk.is_some(),

@@ -1,27 +1,13 @@
-//! Reading a finished run of the ladder: its station profile, its gate speeds and its bulk
-//! monitor history (each `None` where the run or the case has none).
+//! Reading a finished run of the ladder: its gate speeds and its bulk monitor history (each
+//! `None` where the run or the case has none; the station profile and numbers are read as
+//! the report reads them, [`super::station`]).
 
 use std::path::Path;
 
 use runout_case::Case;
 
 use super::quantity::History;
-use runout_post::profile::Profile;
 use runout_post::table::Table;
-
-/// The station profile of a finished run: the case's first profile monitor at its last time.
-pub(super) fn read_profile(dir: &Path, case: &Case) -> Option<Profile> {
-    let monitor = case.monitors.profiles.first()?;
-    let t = monitor.times.last()?;
-    let file = dir.join(format!("profile_x{}_t{t}.csv", monitor.x));
-    let table = Table::read(&file).ok()?;
-    Some(Profile {
-        y: table.column("y").ok()?,
-        eps_s: table.column("eps_s").ok()?,
-        u_s: table.column("u_s").ok()?,
-        theta: table.column("theta").ok()?,
-    })
-}
 
 /// Front speeds per gate of a finished run with a front monitor; none if its front reached
 /// no gate (such a run is left out rather than emptying the common gates of the ladder).

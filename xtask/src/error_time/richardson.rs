@@ -10,7 +10,7 @@ pub(super) const ASYMPTOTIC_BAND: (f64, f64) = (0.5, 1.5);
 
 /// The nominal order range of a scheme (upwind: 1; Superbee: 1 at extrema and fronts where
 /// the limiter falls back to upwind, 2 where the solution is smooth).
-fn nominal_order(scheme: &Convection) -> (f64, f64) {
+pub(super) fn nominal_order(scheme: &Convection) -> (f64, f64) {
     match scheme {
         Convection::Upwind => (1.0, 1.0),
         Convection::Superbee => (1.0, 2.0),

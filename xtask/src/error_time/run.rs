@@ -1,18 +1,20 @@
 //! Running one level of a ladder (or reading its finished run): the case on the level's grid
-//! with the scheme and MFIX's outer iteration, run into `runs/error-time/<case>/<level>-<scheme>/`.
+//! with the scheme, its numerics otherwise as the case file sets them (the iteration and
+//! time-step controller of the sweep's runs), run into
+//! `runs/error-time/<case>/<level>-<scheme>/`.
 
 use std::path::Path;
 
 use anyhow::{bail, Result};
-use runout_case::{
-    validate_case, Case, Convection, DiluteCellClass, Fidelity, WallRelaxationScope,
-};
+use runout_case::{validate_case, Case, Convection, Fidelity};
 use runout_output::RunSummary;
 use runout_run::store::{self, finished_run, Request, Reuse};
 
+use super::cost::{read_cost, write_cost, RunCost};
 use super::ladder::{scheme_name, Level};
 use super::quantity::LevelData;
-use super::read::{read_gates, read_history, read_profile};
+use super::read::{read_gates, read_history};
+use super::station::{case_data, station_values, StationValues};
 use super::{Options, NOT_RUN, RUNS_DIR};
 
 /// One run of the ladder.
@@ -26,26 +28,10 @@ pub(super) struct Run {
     /// its summary, or why the run failed
     pub(super) summary: Result<RunSummary, String>,
     pub(super) reused: bool,
+    /// its threads and CPU time, where the run folder holds them
+    pub(super) cost: Option<RunCost>,
     /// its folder, relative to the workspace root
     pub(super) dir: String,
-}
-
-/// Every level iterates as MFIX does: the wall closures as computed, not relaxed where they
-/// cycle (`numerics.relaxation.wall_closures` = 1, which the sensitivity base sets to 0.5 at
-/// cycling nodes for the sweep's speed). The relaxation changes the path of the outer
-/// iterations, not the converged step (S-JJ-phi φ = 0.1 at coarse: mean u_s at 1.25 s
-/// 4.108170 against 4.108188 m/s with it, docs/history/performance-log.md session 6); fixing it keeps
-/// the study's runs, made before the sensitivity base relaxed, one solver configuration.
-/// Likewise every θ row is classified dilute or dense by the current εs at every outer
-/// iteration (`numerics.dilute_cells`), and Δt follows MFIX's controller (a change per 5
-/// converged steps, × `factor` after a failed one), which the sensitivity and flume bases
-/// change for speed (docs/history/performance-log.md, session 7).
-fn mfix_iteration(case: &mut Case) {
-    case.numerics.relaxation.wall_closures = 1.0;
-    case.numerics.relaxation.wall_closures_at = WallRelaxationScope::Everywhere;
-    case.numerics.dilute_cells = DiluteCellClass::EveryIteration;
-    case.run.dt.steps_per_change = 5;
-    case.run.dt.failure_factor = None;
 }
 
 /// Runs (or with `reuse` reads) one level of one case with one scheme.
@@ -59,7 +45,6 @@ pub(super) fn run_level(
 ) -> Result<Run> {
     let mut resolved = level.case(case);
     resolved.numerics.convection = scheme.clone();
-    mfix_iteration(&mut resolved);
     if let Err(errors) = validate_case(&resolved) {
         let list: Vec<String> = errors.iter().map(ToString::to_string).collect();
         bail!(
@@ -102,6 +87,8 @@ pub(super) fn run_level(
         );
         // `Paper` runs the resolved case as it is (at_fidelity(Paper) is the identity); the
         // summary names the level, not the `Paper` the runner was handed
+        let resumed = runout_run::checkpoint::exists(&store::partial_dir(&done));
+        let cpu_before = crate::mfix_slope::cpu_seconds();
         let request = Request {
             reuse: Reuse::Never,
             label: Some(format!("error-time {level}")),
@@ -118,6 +105,14 @@ pub(super) fn run_level(
         }) {
             Ok(stored) => {
                 let s = stored.summary().clone();
+                let cost = RunCost {
+                    threads: rayon::current_num_threads(),
+                    cpu_seconds: crate::mfix_slope::cpu_seconds() - cpu_before,
+                    resumed,
+                };
+                if let Err(e) = write_cost(&done, &cost) {
+                    println!("  could not write its cost: {e}");
+                }
                 println!(
                     "  {:?} at t = {:.3} s: {} steps, {:.1} s wall",
                     s.status, s.simulated_time, s.steps, s.wall_time
@@ -130,9 +125,15 @@ pub(super) fn run_level(
             }
         }
     };
+    // the station profile and numbers as the report reads them (at the profile time in the
+    // run's clock: later than the case's `times` by the tilt time for a clock from impact)
+    let report_data = summary.as_ref().ok().map(|_| case_data(&done, level));
     let data = LevelData {
         h: (paper_cells as f64 / (cells.0 * cells.1) as f64).sqrt(),
-        profile: summary.as_ref().ok().and(read_profile(&done, &resolved)),
+        profile: report_data.as_ref().and_then(|d| d.profile.clone().ok()),
+        station: report_data
+            .as_ref()
+            .map_or_else(StationValues::default, station_values),
         gates: summary.as_ref().ok().and(read_gates(&done, &resolved)),
         history: summary
             .as_ref()
@@ -147,6 +148,7 @@ pub(super) fn run_level(
         data,
         summary,
         reused,
+        cost: read_cost(&done),
         dir: format!("{RUNS_DIR}/{}/{tag}", case.name),
     })
 }

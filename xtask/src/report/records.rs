@@ -6,7 +6,7 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 use runout_case::Fidelity;
-use runout_post::case_data::Cases;
+use runout_post::case_data::{CaseData, Cases};
 use runout_post::chosen::BEST_FIRST;
 
 use super::ledger::Ledger;
@@ -85,6 +85,18 @@ impl Records {
             })
             .collect();
         Records { by_case }
+    }
+
+    /// The one run read into `data`, as the record of `case` (a run folder outside the
+    /// matrix's store, e.g. a level of `cargo xtask error-time`).
+    pub fn of_one(case: &str, data: &CaseData) -> Records {
+        let record = RunRecord::from_store(case, data).ok_or_else(|| match &data.run {
+            Err(why) => why.clone(),
+            Ok(_) => "the run has not ended for good".to_string(),
+        });
+        Records {
+            by_case: BTreeMap::from([(case.to_string(), record)]),
+        }
     }
 
     /// The record of `case`, or why it has none.
