@@ -19,6 +19,7 @@ use runout_post::case_data::CaseData;
 use runout_post::metrics::FLOW_THRESHOLD;
 
 use crate::solver_stamp::SOLVER_FILE;
+use crate::stability;
 
 /// The solver of a run whose folder does not record it.
 pub const UNKNOWN_SOLVER: &str = "unknown";
@@ -158,18 +159,9 @@ pub fn solver_of(dir: &Path) -> String {
         .unwrap_or_else(|| UNKNOWN_SOLVER.into())
 }
 
-/// A day as YYYY-MM-DD (UTC), from days since 1970-01-01 (the proleptic Gregorian
-/// calendar's civil date of a day count).
+/// A day as YYYY-MM-DD (UTC), from days since 1970-01-01 ([`stability::civil_date`]).
 fn civil_date(days: i64) -> String {
-    let z = days + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z - era * 146_097;
-    let yoe = (doe - doe / 1_460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let day = doy - (153 * mp + 2) / 5 + 1;
-    let month = if mp < 10 { mp + 3 } else { mp - 9 };
-    let year = yoe + era * 400 + i64::from(month <= 2);
+    let (year, month, day) = stability::civil_date(days);
     format!("{year:04}-{month:02}-{day:02}")
 }
 

@@ -361,6 +361,19 @@ mod tests {
     use super::super::uncertainty;
     use super::*;
 
+    /// A test study of six points in m/s with σ = 1, one case field per parameter.
+    fn info(fields: &[&str]) -> StudyInfo<'static> {
+        StudyInfo {
+            title: "test".into(),
+            measurements: "none".into(),
+            unit: "m/s",
+            sigma: "σ = 1".into(),
+            points: 6,
+            command: "cargo xtask calibrate".into(),
+            fields: fields.iter().map(|f| vec![f.to_string()]).collect(),
+        }
+    }
+
     fn param(lo: f64, hi: f64) -> Param {
         Param {
             name: "a".into(),
@@ -391,15 +404,7 @@ mod tests {
         assert!(r.bounds[1].0 >= -2.0 && r.bounds[1].1 <= 2.0);
         let dir = std::env::temp_dir().join(format!("runout-calibrate-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
-        let cx = StudyInfo {
-            title: "test".into(),
-            measurements: "none".into(),
-            unit: "m/s",
-            sigma: "σ = 1".into(),
-            points: 6,
-            command: "cargo xtask calibrate".into(),
-            fields: vec![vec!["a".into()], vec!["b".into()]],
-        };
+        let cx = info(&["a", "b"]);
         write_csv(&dir.join("evaluations.csv"), &c).unwrap();
         let md = write_summary(&dir, &c, &r, &cx).unwrap();
         assert!(md.contains("| a |"));
@@ -428,15 +433,7 @@ mod tests {
                 })
             }
         }
-        let cx = StudyInfo {
-            title: "test".into(),
-            measurements: "none".into(),
-            unit: "m/s",
-            sigma: "σ = 1".into(),
-            points: 6,
-            command: "cargo xtask calibrate".into(),
-            fields: vec![vec!["a".into()]],
-        };
+        let cx = info(&["a"]);
         let settings = Settings {
             scan: 5,
             refine: 12,

@@ -580,18 +580,10 @@ mod tests {
     #[test]
     #[ignore]
     fn recovery_table_two_parameters() {
-        let times: Vec<f64> = (2..=10).map(|k| k as f64 / 10.0).collect();
-        let study = coarse(
+        two_parameter_front_row(
+            "phi0.3-ew0.7",
             specularity_and_wall_restitution(["0.05:1:0.1:log", "0.5:0.95:0.6"]),
-            None,
-            Measured::Front(times),
-            0.005,
-            Settings {
-                valley: 7,
-                ..settings(3, 12, 0)
-            },
         );
-        table_row("phi0.3-ew0.7", &study);
     }
 
     /// The second two-parameter row: (φ, δ_int) = (0.3, 30°) from the same fronts, to see
@@ -601,9 +593,18 @@ mod tests {
     #[test]
     #[ignore]
     fn recovery_table_friction_angle() {
+        two_parameter_front_row(
+            "phi0.3-dint30",
+            specularity_and_friction_angle(["0.05:1:0.1:log", "20:45:35"]),
+        );
+    }
+
+    /// A two-parameter row: family M at coarse fidelity, its fronts at 0.2–1.0 s with
+    /// σ = 5 mm, a 3 × 3 scan, 12 Nelder–Mead steps and 7 stations along the valley.
+    fn two_parameter_front_row(tag: &str, params: Vec<TrueParam>) {
         let times: Vec<f64> = (2..=10).map(|k| k as f64 / 10.0).collect();
         let study = coarse(
-            specularity_and_friction_angle(["0.05:1:0.1:log", "20:45:35"]),
+            params,
             None,
             Measured::Front(times),
             0.005,
@@ -612,6 +613,6 @@ mod tests {
                 ..settings(3, 12, 0)
             },
         );
-        table_row("phi0.3-dint30", &study);
+        table_row(tag, &study);
     }
 }
