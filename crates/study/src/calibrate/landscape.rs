@@ -106,8 +106,9 @@ fn reduced_chi2(c: &Calibration, points: usize) -> f64 {
     }
 }
 
-/// The summary's line on the model's scatter between neighbouring runs ([`scatter`]).
-fn scatter_note(s: Option<&Scatter>, cx: &StudyInfo) -> String {
+/// The summary's line on the model's scatter between neighbouring runs ([`scatter`]);
+/// `smoothed`: the stated range includes the smooth response's ([`super::smooth`]).
+fn scatter_note(s: Option<&Scatter>, cx: &StudyInfo, smoothed: bool) -> String {
     let Some(s) = s else {
         return format!(
             "\nThe model's scatter: no two evaluations within {} of each other (unit \
@@ -122,6 +123,13 @@ fn scatter_note(s: Option<&Scatter>, cx: &StudyInfo) -> String {
     );
     if s.reliable() {
         format!("{measured}\n")
+    } else if smoothed {
+        format!(
+            "{measured} Above {:.2} σ the evaluations' own χ² is not reliable (its minimum sits \
+             on a favourable wiggle); the stated range is widened to the smooth response's, \
+             which allows for the scatter (below).\n",
+            scatter::RELIABLE_RATIO
+        )
     } else {
         format!(
             "{measured} **Above {:.2} σ: the range is not reliable.** χ² moves by about 2 × {:.2} \
@@ -235,7 +243,35 @@ pub fn write_summary(dir: &Path, c: &Calibration, r: &Range, cx: &StudyInfo) -> 
              would be wider).\n"
         ));
     }
-    md.push_str(&scatter_note(summary.model_scatter.as_ref(), cx));
+    md.push_str(&scatter_note(
+        summary.model_scatter.as_ref(),
+        cx,
+        r.smooth.is_some(),
+    ));
+    if let Some(s) = &r.smooth {
+        md.push_str(&format!(
+            "\nThe model's scatter about its smooth trend (local quadratic regression over {} \
+             evaluations, calibrate/smooth.rs): σ_model = {:.2} σ, a wiggle that decorrelates \
+             over any distance shorter than the regression's window. The stated range \
+             includes it: the smooth response's range, with σ_eff = σ √(1 + {:.2}²), is {} – {}.\n",
+            s.evaluations,
+            s.scatter,
+            s.scatter,
+            number(s.bounds.0),
+            number(s.bounds.1)
+        ));
+        if s.scatter > scatter::RELIABLE_RATIO {
+            md.push_str(&format!(
+                "\nAbove {:.2} σ the scatter (or the trend's curvature over the window, which \
+                 counts as scatter) is comparable to σ: the smooth range then depends on the \
+                 assumed smoothness scale (calibrate/smooth.rs, HALF_WIDTH) and the stated \
+                 range is a guide, not a 68 % interval. A σ of at least 3 σ_model ({:.2} × the \
+                 σ used), or a finer fidelity, is one the scatter does not dominate.\n",
+                scatter::RELIABLE_RATIO,
+                3.0 * s.scatter
+            ));
+        }
+    }
     for (p, x) in c.params.iter().zip(&best.x) {
         if *x == p.lo || *x == p.hi {
             md.push_str(&format!(
@@ -416,8 +452,9 @@ mod tests {
     }
 
     /// A model whose outputs wiggle by 0.5 σ from run to run: the summary measures the
-    /// scatter from Brent's clustered runs and says the range is not reliable; a smooth model
-    /// is said to be reliable.
+    /// scatter from Brent's clustered runs, says the runs' own χ² is not reliable and states
+    /// the smooth response's range, which contains the truth 0.3 where the runs' own range
+    /// need not; a smooth model is said to be reliable and its range is the exact one.
     #[test]
     fn the_summary_states_the_model_scatter() {
         struct Wiggly(f64);
@@ -449,12 +486,27 @@ mod tests {
             let c = calibrate(&[param(0.0, 1.0)], &Wiggly(amplitude), &settings).unwrap();
             let s = scatter::of(&c).expect("Brent clusters its runs");
             assert_eq!(s.reliable(), reliable, "{s:?}");
-            let md = write_summary(&dir, &c, &uncertainty::range(&c), &cx).unwrap();
+            let r = uncertainty::range(&c);
+            let md = write_summary(&dir, &c, &r, &cx).unwrap();
             assert!(
                 md.contains("The model's scatter between neighbouring runs"),
                 "{md}"
             );
-            assert_eq!(md.contains("the range is not reliable"), !reliable, "{md}");
+            assert_eq!(md.contains("is not reliable"), !reliable, "{md}");
+            assert!(
+                md.contains("The model's scatter about its smooth trend"),
+                "{md}"
+            );
+            let (lo, hi) = r.bounds[0];
+            assert!(lo <= 0.3 && 0.3 <= hi, "{r:?}");
+            if reliable {
+                // χ² = 6 × 100 (x − 0.3)²: Δχ² ≤ 1 for |x − 0.3| ≤ 1/√600
+                let half = 1.0 / 600f64.sqrt();
+                assert!(
+                    (lo - (0.3 - half)).abs() < 2e-3 && (hi - (0.3 + half)).abs() < 2e-3,
+                    "{r:?}"
+                );
+            }
         }
         std::fs::remove_dir_all(&dir).unwrap();
     }

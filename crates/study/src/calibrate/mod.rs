@@ -19,6 +19,7 @@ pub mod path;
 #[cfg(test)]
 pub mod recovery;
 pub mod scatter;
+pub mod smooth;
 pub mod synthetic;
 pub mod uncertainty;
 pub mod valley;

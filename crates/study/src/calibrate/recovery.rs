@@ -458,14 +458,19 @@ mod tests {
             ("phi0.15".into(), one(0.15, 0.005, None)),
             ("phi0.15-noise".into(), one(0.15, 0.005, Some(2))),
         ];
-        println!("| truth | σ [mm] | noise | optimum | error | range Δχ² ≤ 1 | contains | runs |");
+        println!(
+            "| truth | σ [mm] | noise | optimum | error | range Δχ² ≤ 1 | contains | runs | smooth response |"
+        );
         for (tag, study) in rows {
             let dir = root.join("runs/calibrate/recovery").join(&tag);
             std::fs::create_dir_all(&dir).unwrap();
             let r = recover(&root, &study, &dir).unwrap();
             let (lo, hi) = r.range.bounds[0];
+            let smooth = r.range.smooth.as_ref().map_or("none".into(), |s| {
+                format!("{:.2} σ, {:.4}–{:.4}", s.scatter, s.bounds.0, s.bounds.1)
+            });
             println!(
-                "| {} | {} | {} | {:.4} | {:+.1} % | {lo:.4}–{hi:.4} | {} | {} |",
+                "| {} | {} | {} | {:.4} | {:+.1} % | {lo:.4}–{hi:.4} | {} | {} | {smooth} |",
                 r.truth[0],
                 1e3 * study.sigma,
                 study.noise.map_or("none".into(), |s| format!("seed {s}")),
@@ -504,8 +509,14 @@ mod tests {
                 s.reliable()
             )
         });
+        let smooth = r.range.smooth.as_ref().map_or("none".into(), |s| {
+            format!(
+                "{:.2} σ, range {:.4}–{:.4}",
+                s.scatter, s.bounds.0, s.bounds.1
+            )
+        });
         println!(
-            "| {tag} | σ = {} | {} | {} runs | model scatter {scatter} |",
+            "| {tag} | σ = {} | {} | {} runs | model scatter {scatter} | smooth response: {smooth} |",
             study.sigma,
             cells.join(" | "),
             r.calibration.evaluations.len()

@@ -11,11 +11,17 @@
 //! the range is the bounding box of the evaluations inside, widened to the projections of
 //! the region of a quadratic fitted to the best evaluations ([`super::ellipse`]) where the
 //! fit has a minimum.
+//!
+//! In 1-D the stated range is the hull of that range and the range of the smooth response
+//! ([`super::smooth`]: the residuals smoothed by local regression, the model's scatter about
+//! them added to σ in quadrature), so that a model whose outputs wiggle between neighbouring
+//! runs does not state a range as narrow as its luckiest wiggle.
 
 use serde::Serialize;
 
 use super::ellipse;
 use super::optimise::{Calibration, Evaluation};
+use super::smooth;
 
 /// Δχ² of the 68.3 % interval of one parameter.
 pub const DELTA_CHI2_1D: f64 = 1.0;
@@ -38,6 +44,25 @@ pub struct Range {
     pub elsewhere: usize,
     /// how the range was found
     pub method: String,
+    /// the range of the smooth response (1-D, with residuals; [`super::smooth`])
+    pub smooth: Option<SmoothPart>,
+}
+
+/// The range of the smooth response in the parameter's units ([`super::smooth`]).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SmoothPart {
+    /// (low, high) of Δχ²_s ≤ 1
+    pub bounds: (f64, f64),
+    /// whether each end is bracketed (not a bound of the study)
+    pub bracketed: (bool, bool),
+    /// where the smooth χ²_s is least
+    pub optimum: f64,
+    /// χ²_s there
+    pub chi2_min: f64,
+    /// σ_model/σ, the model's scatter about its smooth trend
+    pub scatter: f64,
+    /// evaluations smoothed
+    pub evaluations: usize,
 }
 
 /// Where √(f − f_min) reaches √Δ between `inside` and `outside` (u, f), linearly.
@@ -169,6 +194,7 @@ pub fn range(c: &Calibration) -> Range {
                 "the bounding box of the {} evaluations with Δχ² ≤ 2.30{how}",
                 inside.len()
             ),
+            smooth: None,
         };
     }
     let p = &c.params[0];
@@ -182,16 +208,59 @@ pub fn range(c: &Calibration) -> Range {
         .enumerate()
         .filter(|(j, q)| (*j < lo || *j > hi) && q.1 <= threshold)
         .count();
+    let direct = "√Δχ² interpolated linearly between the evaluations either side of each edge \
+                  (exact for a quadratic χ²)";
+    let with_residuals: Vec<(f64, &[f64])> = finite
+        .iter()
+        .filter(|e| !e.residuals.is_empty())
+        .map(|e| (p.unit(e.x[0]), e.residuals.as_slice()))
+        .collect();
+    let smooth = smooth::range(&with_residuals, DELTA_CHI2_1D).map(|s| SmoothPart {
+        bounds: (p.value(s.bounds.0), p.value(s.bounds.1)),
+        bracketed: s.bracketed,
+        optimum: p.value(s.at_min),
+        chi2_min: s.chi2_min,
+        scatter: s.scatter,
+        evaluations: s.evaluations,
+    });
+    let (mut bounds, mut bracketed) = ((p.value(low), p.value(high)), (lo_ok, hi_ok));
+    let method = match &smooth {
+        None => direct.to_string(),
+        Some(s) => {
+            if s.bounds.0 < bounds.0 {
+                (bounds.0, bracketed.0) = (s.bounds.0, s.bracketed.0);
+            }
+            if s.bounds.1 > bounds.1 {
+                (bounds.1, bracketed.1) = (s.bounds.1, s.bracketed.1);
+            }
+            format!(
+                "the hull of the evaluations' own range ({direct}: {}–{}) and the smooth \
+                 response's ({}–{}: the residuals of {} evaluations smoothed by local quadratic \
+                 regression, the model's scatter about them, {:.2} σ, added to σ in quadrature; \
+                 calibrate/smooth.rs)",
+                short(p.value(low)),
+                short(p.value(high)),
+                short(s.bounds.0),
+                short(s.bounds.1),
+                s.evaluations,
+                s.scatter
+            )
+        }
+    };
     Range {
         delta_chi2: DELTA_CHI2_1D,
         threshold,
-        bounds: vec![(p.value(low), p.value(high))],
-        bracketed: (lo_ok, hi_ok),
+        bounds: vec![bounds],
+        bracketed,
         elsewhere,
-        method: "√Δχ² interpolated linearly between the evaluations either side of each edge \
-                 (exact for a quadratic χ²)"
-            .into(),
+        method,
+        smooth,
     }
+}
+
+/// Four decimals.
+fn short(v: f64) -> String {
+    format!("{v:.4}")
 }
 
 #[cfg(test)]
