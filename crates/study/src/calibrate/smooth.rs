@@ -39,6 +39,10 @@
 //! [`super::uncertainty::range`] states the hull of this range and the one read from the
 //! evaluations' own χ²: with a smooth model (s ≈ 0) the two agree; with a wiggling one the
 //! smooth range is the honest one; with too few evaluations the direct one stands alone.
+//! Where the trend curves strongly within W the local quadratic is biased and its "scatter"
+//! is mostly lack of fit: for the coarse fronts of family M (46 mm between φ = 0.1 and 0.3)
+//! the smooth range alone misses the truth by 1–2 % of φ, the runs' own range does not,
+//! hence the hull (docs/calibrate.md, the recovery table).
 
 use nalgebra::{Matrix3, Vector3};
 use serde::Serialize;
