@@ -7,7 +7,7 @@
 
 use std::path::{Path, PathBuf};
 use std::process::{Child, Command, Output, Stdio};
-use std::time::{Duration, Instant};
+use std::time::{Duration, Instant, SystemTime};
 
 use runout_run::lock::{lock_path, RunLock};
 use runout_run::RunError;
@@ -64,6 +64,29 @@ fn freeze_holding(child: &Child, dir: &Path) {
     }
 }
 
+/// Waits until a file of `dir` other than its lock was modified at or after `since`.
+fn wait_for_a_file_written_since(dir: &Path, since: SystemTime) {
+    let lock = lock_path(dir).unwrap();
+    let start = Instant::now();
+    let written = || {
+        std::fs::read_dir(dir).is_ok_and(|entries| {
+            entries.flatten().any(|e| {
+                e.path() != lock
+                    && e.metadata()
+                        .and_then(|m| m.modified())
+                        .is_ok_and(|t| t >= since)
+            })
+        })
+    };
+    while !written() {
+        assert!(
+            start.elapsed() < Duration::from_secs(120),
+            "nothing written"
+        );
+        std::thread::sleep(Duration::from_millis(2));
+    }
+}
+
 fn assert_complete(dir: &Path) {
     let summary = runout_post::folder::read_summary(dir)
         .expect("a summary")
@@ -95,9 +118,16 @@ fn a_second_run_into_a_running_folder_is_refused_whatever_the_flags() {
     assert!(o.status.success(), "{}", text(&o));
     assert_complete(&dir);
 
-    // a holder killed with SIGKILL: its lock is free at once, its files an earlier run
+    // a holder killed with SIGKILL: its lock is free at once, its files an earlier run. It
+    // is frozen once it has written a file of its own: `--overwrite` first removes the
+    // earlier run's files, and a holder killed between that and its first write leaves an
+    // empty folder, which the next run may take (seen on a loaded machine).
+    let since = SystemTime::now();
     let killed = runout(&dir, &["--overwrite"]).spawn().unwrap();
     freeze_holding(&killed, &dir);
+    signal(&killed, libc::SIGCONT);
+    wait_for_a_file_written_since(&dir, since);
+    signal(&killed, libc::SIGSTOP);
     signal(&killed, libc::SIGKILL);
     killed.wait_with_output().unwrap();
     let o = runout(&dir, &[]).output().unwrap();
