@@ -143,6 +143,52 @@ fn scatter_note(s: Option<&Scatter>, cx: &StudyInfo, smoothed: bool) -> String {
     }
 }
 
+/// The summary's lines on the smooth response ([`super::smooth`]); empty without one.
+fn smooth_note(r: &Range) -> String {
+    let Some(s) = &r.smooth else {
+        return String::new();
+    };
+    let mut md = format!(
+        "\nThe model's scatter about its smooth trend (local quadratic regression over {} \
+         evaluations, calibrate/smooth.rs): σ_model = {:.2} σ, a wiggle that decorrelates \
+         over any distance shorter than the regression's window. The stated range \
+         includes it: the smooth response's range, with σ_eff = σ √(1 + {:.2}²), is {} – {}.\n",
+        s.evaluations,
+        s.scatter,
+        s.scatter,
+        number(s.bounds.0),
+        number(s.bounds.1)
+    );
+    if s.scatter > scatter::RELIABLE_RATIO {
+        md.push_str(&format!(
+            "\nAbove {:.2} σ the scatter (or the trend's curvature over the window, which \
+             counts as scatter) is comparable to σ: the smooth range then depends on the \
+             assumed smoothness scale (calibrate/smooth.rs, HALF_WIDTH) and the stated \
+             range is a guide, not a 68 % interval. A σ of at least 3 σ_model ({:.2} × the \
+             σ used), or a finer fidelity, is one the scatter does not dominate.\n",
+            scatter::RELIABLE_RATIO,
+            3.0 * s.scatter
+        ));
+    }
+    md
+}
+
+/// The summary's note for each parameter whose optimum lies on a bound.
+fn bound_notes(c: &Calibration) -> String {
+    c.params
+        .iter()
+        .zip(&c.optimum().x)
+        .filter(|(p, x)| **x == p.lo || **x == p.hi)
+        .map(|(p, x)| {
+            format!(
+                "\nThe optimum lies on a bound of {} ({x}): the minimum may lie beyond it; \
+                 widen the bounds to find it.\n",
+                p.name
+            )
+        })
+        .collect()
+}
+
 /// Writes summary.json and summary.md; returns the Markdown.
 pub fn write_summary(dir: &Path, c: &Calibration, r: &Range, cx: &StudyInfo) -> Result<String> {
     let best = c.optimum();
@@ -248,39 +294,8 @@ pub fn write_summary(dir: &Path, c: &Calibration, r: &Range, cx: &StudyInfo) -> 
         cx,
         r.smooth.is_some(),
     ));
-    if let Some(s) = &r.smooth {
-        md.push_str(&format!(
-            "\nThe model's scatter about its smooth trend (local quadratic regression over {} \
-             evaluations, calibrate/smooth.rs): σ_model = {:.2} σ, a wiggle that decorrelates \
-             over any distance shorter than the regression's window. The stated range \
-             includes it: the smooth response's range, with σ_eff = σ √(1 + {:.2}²), is {} – {}.\n",
-            s.evaluations,
-            s.scatter,
-            s.scatter,
-            number(s.bounds.0),
-            number(s.bounds.1)
-        ));
-        if s.scatter > scatter::RELIABLE_RATIO {
-            md.push_str(&format!(
-                "\nAbove {:.2} σ the scatter (or the trend's curvature over the window, which \
-                 counts as scatter) is comparable to σ: the smooth range then depends on the \
-                 assumed smoothness scale (calibrate/smooth.rs, HALF_WIDTH) and the stated \
-                 range is a guide, not a 68 % interval. A σ of at least 3 σ_model ({:.2} × the \
-                 σ used), or a finer fidelity, is one the scatter does not dominate.\n",
-                scatter::RELIABLE_RATIO,
-                3.0 * s.scatter
-            ));
-        }
-    }
-    for (p, x) in c.params.iter().zip(&best.x) {
-        if *x == p.lo || *x == p.hi {
-            md.push_str(&format!(
-                "\nThe optimum lies on a bound of {} ({x}): the minimum may lie beyond it; \
-                 widen the bounds to find it.\n",
-                p.name
-            ));
-        }
-    }
+    md.push_str(&smooth_note(r));
+    md.push_str(&bound_notes(c));
     md.push_str(&format!(
         "\n{} evaluations ({} without a misfit): evaluations.csv; landscape: landscape.svg.\n",
         summary.evaluations, summary.evaluations_without_misfit

@@ -127,76 +127,90 @@ pub fn edge_proposals(pts: &[(f64, f64)], delta: f64, xtol: f64) -> Vec<f64> {
 
 /// The range of `c` ([`DELTA_CHI2_1D`] in 1-D, [`DELTA_CHI2_2D`] in 2-D).
 pub fn range(c: &Calibration) -> Range {
-    let best = c.optimum();
     let finite: Vec<&Evaluation> = c
         .evaluations
         .iter()
         .filter(|e| e.chi2.is_finite())
         .collect();
     if c.params.len() == 2 {
-        let threshold = best.chi2 + DELTA_CHI2_2D;
-        let inside: Vec<&&Evaluation> = finite.iter().filter(|e| e.chi2 <= threshold).collect();
-        let mut bounds: Vec<(f64, f64)> = (0..2)
-            .map(|d| {
-                inside
-                    .iter()
-                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), e| {
-                        (l.min(e.x[d]), h.max(e.x[d]))
-                    })
-            })
-            .collect();
-        let units: Vec<([f64; 2], f64)> = finite
-            .iter()
-            .map(|e| ([c.params[0].unit(e.x[0]), c.params[1].unit(e.x[1])], e.chi2))
-            .collect();
-        let widened = match &c.valley {
-            Some(v) => {
-                let (q, t) = (v.along, 1 - v.along);
-                let u = [c.params[0].unit(best.x[0]), c.params[1].unit(best.x[1])];
-                v.projections((u[q], u[t], best.chi2), threshold)
-                    .map(|[pq, pt]| {
-                        let mut axes = [(0.0, 0.0); 2];
-                        (axes[q], axes[t]) = (pq, pt);
-                        axes
-                    })
-            }
-            None => ellipse::projections(&units, DELTA_CHI2_2D),
-        };
-        if let Some(axes) = widened {
-            for (d, (lo, hi)) in axes.into_iter().enumerate() {
-                let p = &c.params[d];
-                bounds[d].0 = bounds[d].0.min(p.value(lo.clamp(0.0, 1.0)));
-                bounds[d].1 = bounds[d].1.max(p.value(hi.clamp(0.0, 1.0)));
-            }
-        }
-        let how = match (&c.valley, widened.is_some()) {
-            (Some(v), true) => format!(
-                ", widened to the projections of the profile of χ² along {} ({} stations, \
-                 calibrate/valley.rs)",
-                c.params[v.along].name,
-                v.stations.len()
-            ),
-            (Some(_), false) => " (no station of the profile along the valley lies inside)".into(),
-            (None, true) => ", widened to the projections of the region Δχ² ≤ 2.30 of a quadratic \
-                             fitted to the best evaluations"
-                .into(),
-            (None, false) => " (the quadratic fitted to the best evaluations has no minimum: the \
-                              scan grid and the simplex's points only)"
-                .into(),
-        };
-        return Range {
-            delta_chi2: DELTA_CHI2_2D,
-            threshold,
-            bounds,
-            bracketed: (false, false),
-            elsewhere: 0,
-            method: format!(
-                "the bounding box of the {} evaluations with Δχ² ≤ 2.30{how}",
-                inside.len()
-            ),
-            smooth: None,
-        };
+        range_2d(c, &finite)
+    } else {
+        range_1d(c, &finite)
     }
+}
+
+/// The 2-D range: the box of the evaluations inside Δχ² ≤ 2.30, widened to the valley
+/// profile's or the fitted quadratic's projections (module doc).
+fn range_2d(c: &Calibration, finite: &[&Evaluation]) -> Range {
+    let best = c.optimum();
+    let threshold = best.chi2 + DELTA_CHI2_2D;
+    let inside: Vec<&&Evaluation> = finite.iter().filter(|e| e.chi2 <= threshold).collect();
+    let mut bounds: Vec<(f64, f64)> = (0..2)
+        .map(|d| {
+            inside
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), e| {
+                    (l.min(e.x[d]), h.max(e.x[d]))
+                })
+        })
+        .collect();
+    let units: Vec<([f64; 2], f64)> = finite
+        .iter()
+        .map(|e| ([c.params[0].unit(e.x[0]), c.params[1].unit(e.x[1])], e.chi2))
+        .collect();
+    let widened = match &c.valley {
+        Some(v) => {
+            let (q, t) = (v.along, 1 - v.along);
+            let u = [c.params[0].unit(best.x[0]), c.params[1].unit(best.x[1])];
+            v.projections((u[q], u[t], best.chi2), threshold)
+                .map(|[pq, pt]| {
+                    let mut axes = [(0.0, 0.0); 2];
+                    (axes[q], axes[t]) = (pq, pt);
+                    axes
+                })
+        }
+        None => ellipse::projections(&units, DELTA_CHI2_2D),
+    };
+    if let Some(axes) = widened {
+        for (d, (lo, hi)) in axes.into_iter().enumerate() {
+            let p = &c.params[d];
+            bounds[d].0 = bounds[d].0.min(p.value(lo.clamp(0.0, 1.0)));
+            bounds[d].1 = bounds[d].1.max(p.value(hi.clamp(0.0, 1.0)));
+        }
+    }
+    let how = match (&c.valley, widened.is_some()) {
+        (Some(v), true) => format!(
+            ", widened to the projections of the profile of χ² along {} ({} stations, \
+             calibrate/valley.rs)",
+            c.params[v.along].name,
+            v.stations.len()
+        ),
+        (Some(_), false) => " (no station of the profile along the valley lies inside)".into(),
+        (None, true) => ", widened to the projections of the region Δχ² ≤ 2.30 of a quadratic \
+                         fitted to the best evaluations"
+            .into(),
+        (None, false) => " (the quadratic fitted to the best evaluations has no minimum: the \
+                          scan grid and the simplex's points only)"
+            .into(),
+    };
+    Range {
+        delta_chi2: DELTA_CHI2_2D,
+        threshold,
+        bounds,
+        bracketed: (false, false),
+        elsewhere: 0,
+        method: format!(
+            "the bounding box of the {} evaluations with Δχ² ≤ 2.30{how}",
+            inside.len()
+        ),
+        smooth: None,
+    }
+}
+
+/// The 1-D range: the hull of the evaluations' own Δχ² ≤ 1 and the smooth response's
+/// (module doc).
+fn range_1d(c: &Calibration, finite: &[&Evaluation]) -> Range {
+    let best = c.optimum();
     let p = &c.params[0];
     let mut pts: Vec<(f64, f64)> = finite.iter().map(|e| (p.unit(e.x[0]), e.chi2)).collect();
     pts.sort_by(|a, b| a.0.total_cmp(&b.0));
