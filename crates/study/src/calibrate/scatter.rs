@@ -115,11 +115,11 @@ pub fn of(c: &Calibration) -> Option<Scatter> {
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
 
     /// A deterministic draw in [−1, 1) (a hash of k), of variance 1/3.
-    fn draw(k: u64) -> f64 {
+    pub(in crate::calibrate) fn draw(k: u64) -> f64 {
         let mut z = k.wrapping_mul(0x9E37_79B9_7F4A_7C15);
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
         z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);

@@ -58,7 +58,7 @@ pub const MIN_DISTINCT: usize = 4;
 /// Points of [0, 1] on which χ²_s is evaluated.
 pub const GRID: usize = 1001;
 
-/// The range of the smooth response (unit coordinates).
+/// The range of the smooth response, in the parameter's units (the `value` of [`range`]).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct SmoothRange {
     /// (low, high) of Δχ²_s ≤ Δχ² around χ²_s's minimum
@@ -67,7 +67,7 @@ pub struct SmoothRange {
     /// study)
     pub bracketed: (bool, bool),
     /// where χ²_s is least
-    pub at_min: f64,
+    pub optimum: f64,
     /// χ²_s there
     pub chi2_min: f64,
     /// s = σ_model/σ, the scatter about the trend in units of σ
@@ -126,9 +126,14 @@ fn trend(l: &[f64], residuals: &[&[f64]]) -> Vec<f64> {
 }
 
 /// The smooth range Δχ²_s ≤ `delta` from evaluations given as (unit coordinate, normalised
-/// residuals); `None` with fewer than [`MIN_DISTINCT`] distinct evaluated values with
-/// residuals of one length, or without a degree of freedom for the scatter.
-pub fn range(evaluations: &[(f64, &[f64])], delta: f64) -> Option<SmoothRange> {
+/// residuals), stated through `value` (unit coordinate → the parameter's value); `None` with
+/// fewer than [`MIN_DISTINCT`] distinct evaluated values with residuals of one length, or
+/// without a degree of freedom for the scatter.
+pub fn range(
+    evaluations: &[(f64, &[f64])],
+    delta: f64,
+    value: impl Fn(f64) -> f64,
+) -> Option<SmoothRange> {
     let columns = evaluations.iter().find(|e| !e.1.is_empty())?.1.len();
     let usable: Vec<&(f64, &[f64])> = evaluations
         .iter()
@@ -183,14 +188,14 @@ pub fn range(evaluations: &[(f64, &[f64])], delta: f64) -> Option<SmoothRange> {
     while hi + 1 < GRID && inside(hi + 1) {
         hi += 1;
     }
-    let unit = |k: usize| k as f64 / (GRID - 1) as f64;
+    let at = |k: usize| value(k as f64 / (GRID - 1) as f64);
     Some(SmoothRange {
-        bounds: (unit(lo), unit(hi)),
+        bounds: (at(lo), at(hi)),
         bracketed: (
             lo > 0 && chi2[lo - 1].is_some(),
             hi + 1 < GRID && chi2[hi + 1].is_some(),
         ),
-        at_min: unit(k_min),
+        optimum: at(k_min),
         chi2_min,
         scatter: s2.sqrt(),
         evaluations: fitted,
@@ -199,15 +204,8 @@ pub fn range(evaluations: &[(f64, &[f64])], delta: f64) -> Option<SmoothRange> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::scatter::tests::draw;
     use super::*;
-
-    /// A deterministic draw in [−1, 1) (a hash of k), of variance 1/3.
-    fn draw(k: u64) -> f64 {
-        let mut z = k.wrapping_mul(0x9E37_79B9_7F4A_7C15);
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        (z ^ (z >> 31)) as f64 / u64::MAX as f64 * 2.0 - 1.0
-    }
 
     fn view(runs: &[(f64, Vec<f64>)]) -> Vec<(f64, &[f64])> {
         runs.iter().map(|(u, r)| (*u, r.as_slice())).collect()
@@ -224,7 +222,7 @@ mod tests {
             .chain([0.44, 0.46, 0.451])
             .map(|u| (u, slopes.iter().map(|a| a * (u - 0.45)).collect()))
             .collect();
-        let r = range(&view(&runs), 1.0).unwrap();
+        let r = range(&view(&runs), 1.0, |u| u).unwrap();
         let half = 1.0 / slopes.iter().map(|a| a * a).sum::<f64>().sqrt();
         assert!(r.scatter < 1e-6, "{r:?}");
         assert!((r.bounds.0 - (0.45 - half)).abs() <= 1e-3, "{r:?}");
@@ -256,7 +254,7 @@ mod tests {
                 (u, r)
             })
             .collect();
-        let r = range(&view(&runs), 1.0).unwrap();
+        let r = range(&view(&runs), 1.0, |u| u).unwrap();
         println!("{r:?}");
         assert!((r.scatter / a - 1.0).abs() < 0.25, "{r:?}");
         assert!(r.bounds.0 <= truth && truth <= r.bounds.1, "{r:?}");
@@ -269,7 +267,7 @@ mod tests {
     #[test]
     fn sparse_evaluations_widen_the_window() {
         let runs: Vec<(f64, Vec<f64>)> = (0..3).map(|k| (k as f64 / 2.0, vec![1.0])).collect();
-        assert!(range(&view(&runs), 1.0).is_none());
+        assert!(range(&view(&runs), 1.0, |u| u).is_none());
         let mut runs: Vec<(f64, Vec<f64>)> = (0..8)
             .map(|k| {
                 let u = 0.5 + 0.01 * k as f64;
@@ -278,7 +276,7 @@ mod tests {
             .chain([(1.0, vec![2.0 * 0.47, 3.0])])
             .collect();
         runs.push((0.0, vec![1.0]));
-        let r = range(&view(&runs), 1.0).unwrap();
+        let r = range(&view(&runs), 1.0, |u| u).unwrap();
         assert_eq!(r.evaluations, 9);
         assert!(r.scatter < 1e-6, "{r:?}");
         // Δχ² ≤ 1 for |u − 0.53| ≤ 0.5

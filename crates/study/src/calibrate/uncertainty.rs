@@ -21,7 +21,7 @@ use serde::Serialize;
 
 use super::ellipse;
 use super::optimise::{Calibration, Evaluation};
-use super::smooth;
+use super::smooth::{self, SmoothRange};
 
 /// Δχ² of the 68.3 % interval of one parameter.
 pub const DELTA_CHI2_1D: f64 = 1.0;
@@ -45,24 +45,7 @@ pub struct Range {
     /// how the range was found
     pub method: String,
     /// the range of the smooth response (1-D, with residuals; [`super::smooth`])
-    pub smooth: Option<SmoothPart>,
-}
-
-/// The range of the smooth response in the parameter's units ([`super::smooth`]).
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct SmoothPart {
-    /// (low, high) of Δχ²_s ≤ 1
-    pub bounds: (f64, f64),
-    /// whether each end is bracketed (not a bound of the study)
-    pub bracketed: (bool, bool),
-    /// where the smooth χ²_s is least
-    pub optimum: f64,
-    /// χ²_s there
-    pub chi2_min: f64,
-    /// σ_model/σ, the model's scatter about its smooth trend
-    pub scatter: f64,
-    /// evaluations smoothed
-    pub evaluations: usize,
+    pub smooth: Option<SmoothRange>,
 }
 
 /// Where √(f − f_min) reaches √Δ between `inside` and `outside` (u, f), linearly.
@@ -229,14 +212,7 @@ fn range_1d(c: &Calibration, finite: &[&Evaluation]) -> Range {
         .filter(|e| !e.residuals.is_empty())
         .map(|e| (p.unit(e.x[0]), e.residuals.as_slice()))
         .collect();
-    let smooth = smooth::range(&with_residuals, DELTA_CHI2_1D).map(|s| SmoothPart {
-        bounds: (p.value(s.bounds.0), p.value(s.bounds.1)),
-        bracketed: s.bracketed,
-        optimum: p.value(s.at_min),
-        chi2_min: s.chi2_min,
-        scatter: s.scatter,
-        evaluations: s.evaluations,
-    });
+    let smooth = smooth::range(&with_residuals, DELTA_CHI2_1D, |u| p.value(u));
     let (mut bounds, mut bracketed) = ((p.value(low), p.value(high)), (lo_ok, hi_ok));
     let method = match &smooth {
         None => direct.to_string(),
