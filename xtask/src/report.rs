@@ -15,6 +15,8 @@
 
 mod coverage;
 mod curves;
+mod error_bars;
+mod explain;
 mod fields;
 mod figure_sets;
 mod findings;
@@ -30,6 +32,7 @@ mod row;
 mod sensitivity;
 mod side_by_side;
 mod tables;
+mod trends;
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -39,6 +42,8 @@ use runout_case::Fidelity;
 use runout_post::case_data::Cases;
 use runout_post::gates::{read_described_gates, speeds_of, DescribedGate};
 
+use error_bars::Ladders;
+use explain::Releases;
 use figure_sets::{FIELD_FIGURES, PROFILE_FIGURES};
 use ledger::Ledger;
 use record::Source;
@@ -92,8 +97,10 @@ pub fn write_report(paths: &ReportPaths, requested: Option<Fidelity>) -> Result<
 
     let mut md = String::new();
     preamble(&mut md, &names, &records, requested);
-    side_by_side::section(&mut md, &names, &store, &ledger, &described);
-    findings::section(&mut md, &records, &described);
+    let ladders = Ladders::read(&paths.docs)?;
+    side_by_side::section(&mut md, &names, &store, &ledger, &described, &ladders);
+    let releases = Releases::read(&paths.docs)?;
+    findings::section(&mut md, &records, &described, &ladders, &releases);
     figures(&mut md, &cases, &gates, &paths.docs, &out)?;
     tables::paper_section(&mut md, &records, &described);
     tables::flume_section(&mut md, &records, &gates, &described);

@@ -53,6 +53,10 @@ pub struct ReleaseRow {
     pub floor_eps_s: Result<f64, String>,
     /// air cushion at the station at the profile time, or why not
     pub cushion: Result<bool, String>,
+    /// its thickness (0 without a cushion) [m], or why not
+    pub cushion_thickness: Result<f64, String>,
+    /// flow thickness at the station at the profile time [m], or why not
+    pub flow_thickness: Result<f64, String>,
     /// the run's fidelity, if it has a run
     pub fidelity: Option<Fidelity>,
 }
@@ -153,8 +157,20 @@ pub fn release_row(runs: &Path, c: &SourcedCase, requested: Option<Fidelity>) ->
             .map_err(brief)
             .and_then(|m| m.floor_eps_s.ok_or_else(|| "no profile".into())),
         cushion: flow
+            .clone()
             .map_err(brief)
             .and_then(|m| m.air_cushion.ok_or_else(|| "no profile".into())),
+        cushion_thickness: flow
+            .clone()
+            .map_err(brief)
+            .and_then(|m| match m.air_cushion {
+                Some(true) => m.cushion_thickness.ok_or_else(|| "no profile".into()),
+                Some(false) => Ok(0.0),
+                None => Err("no profile".into()),
+            }),
+        flow_thickness: flow
+            .map_err(brief)
+            .and_then(|m| m.flow_thickness.ok_or_else(|| "no profile".into())),
         fidelity: data.fidelity(),
     }
 }
@@ -206,6 +222,43 @@ pub fn table(rows: &[ReleaseRow]) -> String {
     md
 }
 
+/// The station numbers of the release rows, one CSV per fidelity beside the page
+/// (`reports/release/release_<fidelity>.csv`; an empty field where the row has no value),
+/// read by the results report's explanation of the findings ([`super::explain`]).
+pub const CSV_COLUMNS: [&str; 7] = [
+    "case",
+    "sweep",
+    "max_u_s",
+    "floor_eps_s",
+    "air_cushion",
+    "cushion_thickness",
+    "flow_thickness",
+];
+
+/// The CSV of `rows` (header [`CSV_COLUMNS`]).
+pub fn csv_text(rows: &[ReleaseRow]) -> String {
+    let mut text = CSV_COLUMNS.join(",");
+    text.push('\n');
+    let v = |r: &Result<f64, String>| r.as_ref().map_or(String::new(), |v| format!("{v:e}"));
+    for r in rows {
+        let cushion = r
+            .cushion
+            .as_ref()
+            .map_or(String::new(), |&b| u8::from(b).to_string());
+        let _ = writeln!(
+            text,
+            "{},{},{},{},{cushion},{},{}",
+            r.case,
+            r.sweep,
+            v(&r.max_u_s),
+            v(&r.floor_eps_s),
+            v(&r.cushion_thickness),
+            v(&r.flow_thickness)
+        );
+    }
+    text
+}
+
 /// Writes the page and its figures (one table and one figure per fidelity that has runs, or
 /// the requested one); returns the page.
 pub fn write(root: &Path, requested: Option<Fidelity>) -> Result<String> {
@@ -250,6 +303,8 @@ pub fn write(root: &Path, requested: Option<Fidelity>) -> Result<String> {
             .map(|&sweep| front_panel(&runs, &matrix.runs, sweep, Some(fidelity)))
             .collect();
         draw(&path, &panels, panels.len().max(1))?;
+        let csv = docs.join(format!("reports/release/release_{fidelity}.csv"));
+        std::fs::write(&csv, csv_text(&rows)).with_context(|| format!("{}", csv.display()))?;
         let _ = write!(md, "\n## {fidelity} fidelity\n\n{}", table(&rows));
         let _ = write!(
             md,
@@ -355,6 +410,11 @@ mod tests {
         // FreeFall from 0.40 m: sqrt(0.8 / 9.80665)
         assert!((row.tilt.unwrap() - 0.285_617_396_245_806_9).abs() < 1e-12);
         assert_eq!(row.arrival.as_ref().unwrap_err(), "not run");
+        let csv = csv_text(std::slice::from_ref(&row));
+        assert_eq!(
+            csv.lines().nth(1),
+            Some("R-JEN_release=L0.5-H0.2-F5.5-B0.4,R-JEN,,,,,")
+        );
         let md = table(&[row]);
         assert!(md.contains("| `R-JEN_release=L0.5-H0.2-F5.5-B0.4` | 5.00–5.50 | 0.40–0.60 | 120.0 | 0.2856 | — (not run) | 1.2500 |"), "{md}");
     }

@@ -8,6 +8,7 @@ use std::fmt::Write as _;
 
 use runout_case::Fidelity;
 
+use super::error_bars::Ladders;
 use super::findings::{cases_named, counts, judge_all, Judged};
 use super::ledger::{Ledger, LEDGER_FIDELITIES};
 use super::record::Source;
@@ -56,6 +57,7 @@ fn column(
     store: &Store,
     ledger: &Ledger,
     described: &[(usize, f64)],
+    ladders: &Ladders,
 ) -> Column {
     let records = Records::choose(names, store, ledger, Some(f));
     let has = |c: &str| records.get(c).is_ok();
@@ -63,7 +65,7 @@ fn column(
     let named = cases_named();
     Column {
         fidelity: f,
-        judged: judge_all(&records, described),
+        judged: judge_all(&records, described, ladders),
         run: (
             names.iter().filter(|n| has(n)).count(),
             records.with_source(Source::Ledger).len(),
@@ -137,10 +139,11 @@ pub fn section(
     store: &Store,
     ledger: &Ledger,
     described: &[(usize, f64)],
+    ladders: &Ladders,
 ) {
     let columns: Vec<Column> = LEDGER_FIDELITIES
         .iter()
-        .map(|&f| column(f, names, store, ledger, described))
+        .map(|&f| column(f, names, store, ledger, described, ladders))
         .collect();
     md.push_str("## The findings at each fidelity\n\n");
     md.push_str(
@@ -238,7 +241,7 @@ mod tests {
         let store = Store::load(&runs, &names);
         let ledger = Ledger::read(&tmp.0.join("docs")).unwrap();
         let mut md = String::new();
-        section(&mut md, &names, &store, &ledger, &[]);
+        section(&mut md, &names, &store, &ledger, &[], &Ladders::default());
         assert!(
             md.contains(
                 "- Fig. 4a: air cushion at the station (`S-JJ-phi_phi=1`) — coarse yes, paper no."
