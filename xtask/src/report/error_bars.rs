@@ -276,14 +276,11 @@ pub fn cushion_note(thickness: f64, bar: &ErrorBar) -> String {
     )
 }
 
+/// Two ladders in error_time.csv's columns: JJ with max u_s (coarse 7.0, paper 7.3,
+/// Richardson 7.32, Fs 3: bar 0.06) and a cushion that is 0 at coarse; JEN with max u_s
+/// 7.0 at paper (Richardson 7.1, Fs 1.25: bar 0.125). A history row is skipped.
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// Two ladders in error_time.csv's columns: JJ with max u_s (coarse 7.0, paper 7.3,
-    /// Richardson 7.32, Fs 3: bar 0.06) and a cushion that is 0 at coarse; JEN with max u_s
-    /// 7.0 at paper (Richardson 7.1, Fs 1.25: bar 0.125). A history row is skipped.
-    const CSV: &str = "\
+pub(super) const TEST_LADDER: &str = "\
 case,scheme,level,status,quantity,value,richardson_value,gci_safety_factor
 S-JJ-phi_phi=0.1,upwind,coarse,completed,max_u_s,7.0,7.32,3
 S-JJ-phi_phi=0.1,upwind,paper,completed,max_u_s,7.3,7.32,3
@@ -293,6 +290,12 @@ S-JJ-phi_phi=0.1,upwind,paper,completed,eps_s,,,
 S-JEN-d_d=0.0005,upwind,paper,completed,max_u_s,7.0,7.1,1.25
 S-JEN-d_d=0.0005,upwind,finer,failed: not run,max_u_s,,7.1,1.25
 ";
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const CSV: &str = TEST_LADDER;
 
     fn close(a: f64, b: f64) -> bool {
         (a - b).abs() < 1e-12

@@ -341,15 +341,9 @@ fn trend_line(j: &Judged, ladders: &Ladders) -> String {
 mod tests {
     use super::*;
 
-    /// The ladder of error_bars.rs's test: JJ max u_s coarse 7.0, paper 7.3 ± 0.06; the
-    /// cushion 0 at coarse, 0.015 ± 0.015 at paper.
-    const LADDER: &str = "\
-case,scheme,level,status,quantity,value,richardson_value,gci_safety_factor
-S-JJ-phi_phi=0.1,upwind,coarse,completed,max_u_s,7.0,7.32,3
-S-JJ-phi_phi=0.1,upwind,paper,completed,max_u_s,7.3,7.32,3
-S-JJ-phi_phi=0.1,upwind,coarse,completed,cushion_thickness,0,0.01,3
-S-JJ-phi_phi=0.1,upwind,paper,completed,cushion_thickness,0.015,0.01,3
-";
+    /// error_bars.rs's test ladder: JJ max u_s coarse 7.0, paper 7.3 ± 0.06; the cushion 0
+    /// at coarse, 0.015 ± 0.015 at paper; JEN max u_s at paper only.
+    const LADDER: &str = super::super::error_bars::TEST_LADDER;
 
     /// Three JJ blocks: the base at 7.0 m/s, one at 6.3 (−10 %), one at 7.7 (+10 %); one
     /// of them with a cushion.
