@@ -326,16 +326,14 @@ pub fn sweep(root: &Path, matrix: &Matrix, opts: &SweepOptions) -> Result<()> {
             continue;
         };
         let from = &selected[original].case.name;
-        // the repeat of a run going elsewhere waits for it likewise
-        let elsewhere = outcomes.iter().find_map(|(e, o)| match o {
-            Outcome::Elsewhere(holder) if *e == original => Some(holder.clone()),
-            _ => None,
-        });
-        let outcome = match elsewhere {
-            Some(holder) => Outcome::Elsewhere(holder),
-            None => crate::repeat::copy_run(&runs_dir, from, &selected[k].case.name, fidelity),
-        };
-        outcomes.push((k, outcome));
+        let of_original = outcomes
+            .iter()
+            .find(|(e, _)| *e == original)
+            .map(|(_, o)| o);
+        let copy = || crate::repeat::copy_run(&runs_dir, from, &selected[k].case.name, fidelity);
+        if let Some(outcome) = repeat_outcome(from, of_original, copy) {
+            outcomes.push((k, outcome));
+        }
     }
     outcomes.sort_by_key(|(k, _)| *k);
 
@@ -404,6 +402,26 @@ pub fn sweep(root: &Path, matrix: &Matrix, opts: &SweepOptions) -> Result<()> {
         );
     }
     Ok(())
+}
+
+/// The outcome of a repeat (the same case as `from`, [`duplicates`]) from its original's: a
+/// copy of a finished original's folder, the original's failure or lack of support, a wait
+/// for a run going elsewhere; `None` (not started, as the cases after a stop) when the
+/// original was interrupted or never started because the sweep was stopped.
+fn repeat_outcome(
+    from: &str,
+    original: Option<&Outcome>,
+    copy: impl FnOnce() -> Outcome,
+) -> Option<Outcome> {
+    match original? {
+        Outcome::Done(_) | Outcome::Skipped(_) | Outcome::Copied(..) => Some(copy()),
+        Outcome::Elsewhere(holder) => Some(Outcome::Elsewhere(holder.clone())),
+        Outcome::Failed(why) => Some(Outcome::Failed(format!(
+            "its original `{from}` failed: {why}"
+        ))),
+        Outcome::Unsupported(why) => Some(Outcome::Unsupported(why.clone())),
+        Outcome::Interrupted(_) => None,
+    }
 }
 
 /// Prints the selection: a header line, one line per flow case (grid, end time, file) and
@@ -708,10 +726,34 @@ mod tests {
         assert_eq!(sweep_of("S-JJ", Some((1, 2))), names);
     }
 
+    /// A repeat follows its original: copied when it finished, the failure named when it
+    /// failed, and not started when the sweep was stopped before or during it (it was
+    /// reported as a failed copy before).
     #[test]
-    fn every_row_has_the_header_width() {
-        let width = columns(HEADER);
-        let summary = RunSummary {
+    fn a_repeat_of_an_interrupted_or_unstarted_run_is_not_started() {
+        let copied = || Outcome::Copied(summary(), "S-a".into());
+        let done = Outcome::Done(summary());
+        assert!(matches!(
+            repeat_outcome("S-a", Some(&done), copied),
+            Some(Outcome::Copied(..))
+        ));
+        let interrupted = Outcome::Interrupted(summary());
+        assert!(repeat_outcome("S-a", Some(&interrupted), copied).is_none());
+        assert!(repeat_outcome("S-a", None, copied).is_none());
+        let failed = Outcome::Failed("diverged".into());
+        assert!(matches!(
+            repeat_outcome("S-a", Some(&failed), copied),
+            Some(Outcome::Failed(why)) if why == "its original `S-a` failed: diverged"
+        ));
+        let elsewhere = Outcome::Elsewhere("pid 7".into());
+        assert!(matches!(
+            repeat_outcome("S-a", Some(&elsewhere), copied),
+            Some(Outcome::Elsewhere(h)) if h == "pid 7"
+        ));
+    }
+
+    fn summary() -> RunSummary {
+        RunSummary {
             case: "x".into(),
             fidelity: "smoke".into(),
             cells: (1, 1),
@@ -733,7 +775,13 @@ mod tests {
             profile: Vec::new(),
             linear_iterations: Vec::new(),
             files: Vec::new(),
-        };
+        }
+    }
+
+    #[test]
+    fn every_row_has_the_header_width() {
+        let width = columns(HEADER);
+        let summary = summary();
         for outcome in [
             Outcome::Done(summary.clone()),
             Outcome::Skipped(summary),
