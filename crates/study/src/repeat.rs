@@ -73,6 +73,26 @@ fn copy_outputs(source: &Path, dest: &Path) -> Result<()> {
     Ok(())
 }
 
+/// The outcome of a repeat (the same case as `from`, the sweep's `duplicates`) from its original's: a
+/// copy of a finished original's folder, the original's failure or lack of support, a wait
+/// for a run going elsewhere; `None` (not started, as the cases after a stop) when the
+/// original was interrupted or never started because the sweep was stopped.
+pub fn repeat_outcome(
+    from: &str,
+    original: Option<&Outcome>,
+    copy: impl FnOnce() -> Outcome,
+) -> Option<Outcome> {
+    match original? {
+        Outcome::Done(_) | Outcome::Skipped(_) | Outcome::Copied(..) => Some(copy()),
+        Outcome::Elsewhere(holder) => Some(Outcome::Elsewhere(holder.clone())),
+        Outcome::Failed(why) => Some(Outcome::Failed(format!(
+            "its original `{from}` failed: {why}"
+        ))),
+        Outcome::Unsupported(why) => Some(Outcome::Unsupported(why.clone())),
+        Outcome::Interrupted(_) => None,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -120,5 +140,31 @@ mod tests {
         );
         assert!(!copy.join(CHECKPOINT_DIR).exists());
         assert!(checkpoints.join("step_0000000001.ckpt").exists());
+    }
+
+    /// A repeat follows its original: copied when it finished, the failure named when it
+    /// failed, and not started when the sweep was stopped before or during it (it was
+    /// reported as a failed copy before).
+    #[test]
+    fn a_repeat_of_an_interrupted_or_unstarted_run_is_not_started() {
+        let copied = || Outcome::Copied(crate::sweep::tests::summary(), "S-a".into());
+        let done = Outcome::Done(crate::sweep::tests::summary());
+        assert!(matches!(
+            repeat_outcome("S-a", Some(&done), copied),
+            Some(Outcome::Copied(..))
+        ));
+        let interrupted = Outcome::Interrupted(crate::sweep::tests::summary());
+        assert!(repeat_outcome("S-a", Some(&interrupted), copied).is_none());
+        assert!(repeat_outcome("S-a", None, copied).is_none());
+        let failed = Outcome::Failed("diverged".into());
+        assert!(matches!(
+            repeat_outcome("S-a", Some(&failed), copied),
+            Some(Outcome::Failed(why)) if why == "its original `S-a` failed: diverged"
+        ));
+        let elsewhere = Outcome::Elsewhere("pid 7".into());
+        assert!(matches!(
+            repeat_outcome("S-a", Some(&elsewhere), copied),
+            Some(Outcome::Elsewhere(h)) if h == "pid 7"
+        ));
     }
 }

@@ -331,7 +331,7 @@ pub fn sweep(root: &Path, matrix: &Matrix, opts: &SweepOptions) -> Result<()> {
             .find(|(e, _)| *e == original)
             .map(|(_, o)| o);
         let copy = || crate::repeat::copy_run(&runs_dir, from, &selected[k].case.name, fidelity);
-        if let Some(outcome) = repeat_outcome(from, of_original, copy) {
+        if let Some(outcome) = crate::repeat::repeat_outcome(from, of_original, copy) {
             outcomes.push((k, outcome));
         }
     }
@@ -402,26 +402,6 @@ pub fn sweep(root: &Path, matrix: &Matrix, opts: &SweepOptions) -> Result<()> {
         );
     }
     Ok(())
-}
-
-/// The outcome of a repeat (the same case as `from`, [`duplicates`]) from its original's: a
-/// copy of a finished original's folder, the original's failure or lack of support, a wait
-/// for a run going elsewhere; `None` (not started, as the cases after a stop) when the
-/// original was interrupted or never started because the sweep was stopped.
-fn repeat_outcome(
-    from: &str,
-    original: Option<&Outcome>,
-    copy: impl FnOnce() -> Outcome,
-) -> Option<Outcome> {
-    match original? {
-        Outcome::Done(_) | Outcome::Skipped(_) | Outcome::Copied(..) => Some(copy()),
-        Outcome::Elsewhere(holder) => Some(Outcome::Elsewhere(holder.clone())),
-        Outcome::Failed(why) => Some(Outcome::Failed(format!(
-            "its original `{from}` failed: {why}"
-        ))),
-        Outcome::Unsupported(why) => Some(Outcome::Unsupported(why.clone())),
-        Outcome::Interrupted(_) => None,
-    }
 }
 
 /// Prints the selection: a header line, one line per flow case (grid, end time, file) and
@@ -602,7 +582,7 @@ impl Tally {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use runout_output::{DtStats, RunStatus};
 
@@ -726,33 +706,8 @@ mod tests {
         assert_eq!(sweep_of("S-JJ", Some((1, 2))), names);
     }
 
-    /// A repeat follows its original: copied when it finished, the failure named when it
-    /// failed, and not started when the sweep was stopped before or during it (it was
-    /// reported as a failed copy before).
-    #[test]
-    fn a_repeat_of_an_interrupted_or_unstarted_run_is_not_started() {
-        let copied = || Outcome::Copied(summary(), "S-a".into());
-        let done = Outcome::Done(summary());
-        assert!(matches!(
-            repeat_outcome("S-a", Some(&done), copied),
-            Some(Outcome::Copied(..))
-        ));
-        let interrupted = Outcome::Interrupted(summary());
-        assert!(repeat_outcome("S-a", Some(&interrupted), copied).is_none());
-        assert!(repeat_outcome("S-a", None, copied).is_none());
-        let failed = Outcome::Failed("diverged".into());
-        assert!(matches!(
-            repeat_outcome("S-a", Some(&failed), copied),
-            Some(Outcome::Failed(why)) if why == "its original `S-a` failed: diverged"
-        ));
-        let elsewhere = Outcome::Elsewhere("pid 7".into());
-        assert!(matches!(
-            repeat_outcome("S-a", Some(&elsewhere), copied),
-            Some(Outcome::Elsewhere(h)) if h == "pid 7"
-        ));
-    }
-
-    fn summary() -> RunSummary {
+    /// A finished run's summary for the outcomes of the tests.
+    pub(crate) fn summary() -> RunSummary {
         RunSummary {
             case: "x".into(),
             fidelity: "smoke".into(),
