@@ -68,6 +68,10 @@ impl ErrorBar {
         } else {
             format!("ladder of `{}`", self.ladder)
         };
+        if self.half_width == 0.0 {
+            // equal values at the three levels: a quantity read in whole cells
+            return format!("± 0 ({whose}: its levels agree)");
+        }
         let relative = if value != 0.0 {
             format!("GCI {:.1} %, ", 100.0 * self.half_width / value.abs())
         } else {
@@ -372,6 +376,14 @@ mod tests {
         );
         let near = judge_number(&reading, Expected::Value(8.5), Some(&bar)).unwrap();
         assert_eq!((near.0, near.2), (true, Some("within 20 %")));
+        let agree = ErrorBar {
+            half_width: 0.0,
+            ..bar.clone()
+        };
+        assert_eq!(
+            agree.describe(0.03, 3),
+            "± 0 (own ladder: its levels agree)"
+        );
         let cushion = cushion_note(
             0.015,
             &ErrorBar {

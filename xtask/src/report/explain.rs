@@ -167,7 +167,11 @@ fn grid_effect(
         Fidelity::Coarse => ladders.grid_change(case, q).map(|(c, _)| c),
         _ => None,
     };
-    let bar = format!("± {:.1} % at paper ({whose})", 100.0 * g);
+    let bar = if l.bar == 0.0 {
+        format!("its levels agree on {whose} (whole cells)")
+    } else {
+        format!("± {:.1} % at paper ({whose})", 100.0 * g)
+    };
     match shift {
         Some(_) if fidelity == Fidelity::Paper => {
             (format!("grid: {bar}"), Some((1.0 - g, 1.0 + g)))
