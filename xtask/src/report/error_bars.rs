@@ -214,6 +214,10 @@ pub fn bar_reaches(value: f64, bar: f64, range: (f64, f64)) -> bool {
     value - bar <= range.1 && range.0 <= value + bar
 }
 
+/// A relative bar (GCI) at or above this: the ladder does not say where the value converges
+/// (its levels differ by as much as the value), so the grid leaves a finding undecided.
+pub const UNCONVERGED_GCI: f64 = 0.5;
+
 /// Which rule reproduced a number (the report states it beside the verdict).
 pub fn rule_name(exp: Expected) -> &'static str {
     match exp {
@@ -249,8 +253,12 @@ pub fn judge_number(
         Some(b) => format!("{reading} {}", b.describe(*value, *decimals + 1)),
         None => reading.to_string(),
     };
+    let unconverged = bar.is_some_and(|b| b.half_width >= UNCONVERGED_GCI * value.abs());
     let rule = if by_rule {
         Some(rule_name(exp))
+    } else if by_bar && unconverged {
+        // a bar as large as the value reaches almost any paper value: said so
+        Some("within its error bar, which is as large as the value: the grid does not decide")
     } else if by_bar {
         Some("within its error bar")
     } else {
@@ -374,6 +382,12 @@ mod tests {
             judge_number(&reading, range, None),
             Ok((false, "7.30".into(), None))
         );
+        let wide = ErrorBar {
+            half_width: 5.0,
+            ..bar.clone()
+        };
+        let undecided = judge_number(&reading, Expected::Value(11.0), Some(&wide)).unwrap();
+        assert!(undecided.0 && undecided.2.unwrap().ends_with("the grid does not decide"));
         let near = judge_number(&reading, Expected::Value(8.5), Some(&bar)).unwrap();
         assert_eq!((near.0, near.2), (true, Some("within 20 %")));
         let agree = ErrorBar {

@@ -20,7 +20,7 @@ use std::path::Path;
 use anyhow::{Context, Result};
 use runout_case::Fidelity;
 
-use super::error_bars::{settles, Ladders};
+use super::error_bars::{settles, Ladders, UNCONVERGED_GCI};
 use super::findings::{expected, Expected, Judged};
 use super::paper::Quantity;
 use super::records::Records;
@@ -123,10 +123,6 @@ impl Releases {
         (v.iter().filter(|c| **c > 0.5).count(), v.len())
     }
 }
-
-/// A relative GCI at or above this: the ladder does not say where the value converges
-/// (its levels differ by as much as the value), so the grid leaves the finding undecided.
-const UNCONVERGED_GCI: f64 = 0.5;
 
 /// "+4 %", "−12 %".
 fn percent(x: f64) -> String {

@@ -255,7 +255,9 @@ pub fn section(
          ranking or threshold by comparing runout's own values along the sweep; a number by \
          runout's value as shown, inside the paper's range or within 20 % of its single \
          value, or, for a value read at the paper grid, when its error bar reaches the \
-         paper's value or range (the table says which rule). The error bar is the grid \
+         paper's value or range (the table says which rule; a bar of half the value or more \
+         comes from a ladder that does not converge, and the table says the grid does not \
+         decide). The error bar is the grid \
          convergence index of the uniform ladder of docs/error-time.md, Fs |f − f_Richardson| \
          at the paper level: the case's own ladder where it has one, else the relative bar of \
          its floor condition's ladder, else of S-JJ-phi φ = 0.1's (named in each value). A \
