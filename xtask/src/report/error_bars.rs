@@ -160,7 +160,6 @@ impl Ladders {
                         && c.get(status) == Some("completed")
                 })
                 .and_then(|c| number(c, value));
-            let paper: f64 = paper;
             values.push(LadderValue {
                 case: r.get(case).unwrap_or_default().to_string(),
                 quantity: r.get(quantity).unwrap_or_default().to_string(),
@@ -180,7 +179,13 @@ impl Ladders {
         };
         of(&|v| v.case == case)
             .or_else(|| of(&|v| floor_of(&v.case).is_some() && floor_of(&v.case) == floor_of(case)))
-            .or_else(|| of(&|_| true))
+            .or_else(|| self.first_for(quantity))
+    }
+
+    /// The first ladder that measures `quantity` (for a finding over several cases).
+    pub fn first_for(&self, quantity: Quantity) -> Option<&LadderValue> {
+        let name = ladder_name(quantity)?;
+        self.values.iter().find(|v| v.quantity == name)
     }
 
     /// The error bar of `case`'s paper-grid `value` of `quantity`: the own ladder's bar, or
@@ -199,12 +204,13 @@ impl Ladders {
         })
     }
 
-    /// The ladder's relative change of `quantity` from the coarse to the paper level,
-    /// (f_p − f_c)/|f_c|, with the ladder's case; `None` without a coarse level or at f_c = 0.
-    pub fn grid_change(&self, case: &str, quantity: Quantity) -> Option<(f64, &str)> {
+    /// The relative change of `quantity` from the coarse to the paper level on `case`'s
+    /// ladder ([`Ladders::ladder_for`]), (f_p − f_c)/|f_c|; `None` without a coarse level or
+    /// at f_c = 0.
+    pub fn grid_change(&self, case: &str, quantity: Quantity) -> Option<f64> {
         let l = self.ladder_for(case, quantity)?;
         let c = l.coarse.filter(|c| *c != 0.0)?;
-        Some(((l.paper - c) / c.abs(), l.case.as_str()))
+        Some((l.paper - c) / c.abs())
     }
 }
 
@@ -219,7 +225,7 @@ pub fn bar_reaches(value: f64, bar: f64, range: (f64, f64)) -> bool {
 pub const UNCONVERGED_GCI: f64 = 0.5;
 
 /// Which rule reproduced a number (the report states it beside the verdict).
-pub fn rule_name(exp: Expected) -> &'static str {
+fn rule_name(exp: Expected) -> &'static str {
     match exp {
         Expected::Range(..) => "in the paper's range",
         _ => "within 20 %",
@@ -243,11 +249,7 @@ pub fn judge_number(
     };
     let shown = reading.shown_value().ok_or("not a number")?;
     let by_rule = matches(shown, exp).ok_or("not a numeric expectation")?;
-    let range = match exp {
-        Expected::Range(lo, hi) => (lo, hi),
-        Expected::Value(v) => (v, v),
-        Expected::Yes | Expected::No => return Err("not a numeric expectation".into()),
-    };
+    let range = exp.range().ok_or("not a numeric expectation")?;
     let by_bar = bar.is_some_and(|b| bar_reaches(*value, b.half_width, range));
     let text = match bar {
         Some(b) => format!("{reading} {}", b.describe(*value, *decimals + 1)),
@@ -348,7 +350,11 @@ mod tests {
     #[test]
     fn the_grid_change_runs_from_coarse_to_paper() {
         let l = Ladders::parse(CSV).unwrap();
-        let (change, ladder) = l.grid_change("S-JJ-d_d=0.001", Quantity::MaxUs).unwrap();
+        let change = l.grid_change("S-JJ-d_d=0.001", Quantity::MaxUs).unwrap();
+        let ladder = &l
+            .ladder_for("S-JJ-d_d=0.001", Quantity::MaxUs)
+            .unwrap()
+            .case;
         assert!(close(change, 0.3 / 7.0) && ladder == "S-JJ-phi_phi=0.1");
         // no coarse cushion to be relative to; JEN's ladder has no coarse level
         assert!(l

@@ -21,7 +21,7 @@ use anyhow::{Context, Result};
 use runout_case::Fidelity;
 
 use super::error_bars::{settles, Ladders, UNCONVERGED_GCI};
-use super::findings::{expected, Expected, Judged};
+use super::findings::{expected, Judged};
 use super::paper::Quantity;
 use super::records::Records;
 use super::release::CSV_COLUMNS;
@@ -158,25 +158,21 @@ fn grid_effect(
         );
         return (text, None);
     }
-    let shift = match fidelity {
-        Fidelity::Paper => Some(0.0),
-        Fidelity::Coarse => ladders.grid_change(case, q).map(|(c, _)| c),
-        _ => None,
-    };
     let bar = if l.bar == 0.0 {
         format!("its levels agree on {whose} (whole cells)")
     } else {
         format!("± {:.1} % at paper ({whose})", 100.0 * g)
     };
-    match shift {
-        Some(_) if fidelity == Fidelity::Paper => {
-            (format!("grid: {bar}"), Some((1.0 - g, 1.0 + g)))
-        }
-        Some(c) => (
+    let coarse_shift = (fidelity == Fidelity::Coarse)
+        .then(|| ladders.grid_change(case, q))
+        .flatten();
+    match (fidelity, coarse_shift) {
+        (Fidelity::Paper, _) => (format!("grid: {bar}"), Some((1.0 - g, 1.0 + g))),
+        (_, Some(c)) => (
             format!("grid: coarse to paper {}, {bar}", percent(c)),
             Some(((1.0 + c) * (1.0 - g), (1.0 + c) * (1.0 + g))),
         ),
-        None => (
+        _ => (
             format!("grid: no ladder level at {fidelity}; {bar}"),
             Some((1.0 - g, 1.0 + g)),
         ),
@@ -188,7 +184,7 @@ fn number_line(
     case: &str,
     q: Quantity,
     v: f64,
-    exp: Expected,
+    (p_lo, p_hi): (f64, f64),
     fidelity: Fidelity,
     ladders: &Ladders,
     releases: &Releases,
@@ -208,11 +204,6 @@ fn number_line(
             format!("release: not measured by the release study ({sweep})"),
             (1.0, 1.0),
         ),
-    };
-    let (p_lo, p_hi) = match exp {
-        Expected::Range(a, b) => (a, b),
-        Expected::Value(a) => (a, a),
-        Expected::Yes | Expected::No => (f64::NAN, f64::NAN),
     };
     let left = match reach {
         None => "left: undecided while the grid does not converge".to_string(),
@@ -235,9 +226,10 @@ fn number_line(
 
 /// The line of a cushion yes/no or thickness.
 fn cushion_line(case: &str, fidelity: Fidelity, ladders: &Ladders, releases: &Releases) -> String {
-    let grid = match ladders.ladder_for(case, Quantity::CushionThickness) {
+    let ladder = ladders.ladder_for(case, Quantity::CushionThickness);
+    let grid_settles = ladder.is_none_or(|l| settles(l.paper, l.bar));
+    let grid = match ladder {
         Some(l) => {
-            let settled = settles(l.paper, l.bar);
             let coarse = l
                 .coarse
                 .map_or(String::new(), |c| format!("coarse {c:.3} m, "));
@@ -246,7 +238,7 @@ fn cushion_line(case: &str, fidelity: Fidelity, ladders: &Ladders, releases: &Re
                 l.case,
                 l.paper,
                 l.bar,
-                if settled {
+                if grid_settles {
                     "settles"
                 } else {
                     "does not settle"
@@ -262,7 +254,7 @@ fn cushion_line(case: &str, fidelity: Fidelity, ladders: &Ladders, releases: &Re
     } else {
         format!("release: a cushion in {yes} of the {n} blocks of {sweep} (coarse)")
     };
-    let unsettled = grid.contains("does not settle") || (yes > 0 && yes < n);
+    let unsettled = !grid_settles || (yes > 0 && yes < n);
     let left = if unsettled {
         "left: undecided; the grid or the release can change it"
     } else if fidelity == Fidelity::Paper {
@@ -291,7 +283,7 @@ pub fn explain(
     if matches!(q, Quantity::AirCushion | Quantity::CushionThickness) {
         return Some(cushion_line(case, record.fidelity, ladders, releases));
     }
-    let exp = expected(&j.paper)?;
+    let range = expected(&j.paper)?.range()?;
     let v = super::reading::value(q, case, records, &[]).ok()?;
     let v = match v {
         super::reading::Reading::Number { value, .. } => value,
@@ -304,7 +296,7 @@ pub fn explain(
         case,
         q,
         v,
-        exp,
+        range,
         record.fidelity,
         ladders,
         releases,
@@ -317,8 +309,7 @@ fn trend_line(j: &Judged, ladders: &Ladders) -> String {
         .quantities
         .iter()
         .filter_map(|&q| {
-            // no case named: the first ladder that measures q
-            let l = ladders.ladder_for("", q)?;
+            let l = ladders.first_for(q)?;
             Some(format!(
                 "{} ± {:.0} % ({})",
                 q.label(),
@@ -364,7 +355,7 @@ R-JJ-t0_release=L1-H0.2-F5.5-B0.4,R-JJ-t0,7.7,,,,
     #[test]
     fn a_coarse_number_is_moved_by_the_ladder_and_the_blocks_before_what_is_left() {
         let (l, r) = evidence();
-        let exp = Expected::Range(8.4, 8.5);
+        let exp = (8.4, 8.5);
         let line = number_line(
             "S-JJ-d_d=0.001",
             Quantity::MaxUs,
@@ -389,7 +380,7 @@ R-JJ-t0_release=L1-H0.2-F5.5-B0.4,R-JJ-t0,7.7,,,,
     #[test]
     fn a_number_the_effects_reach_has_nothing_left() {
         let (l, r) = evidence();
-        let exp = Expected::Value(7.9);
+        let exp = (7.9, 7.9);
         let line = number_line(
             "S-JJ-phi_phi=0.1",
             Quantity::MaxUs,
@@ -414,7 +405,7 @@ R-JJ-t0_release=L1-H0.2-F5.5-B0.4,R-JJ-t0,7.7,,,,
             "S-JJ-phi_phi=0.1",
             Quantity::FloorTheta,
             0.9,
-            Expected::Value(2.2),
+            (2.2, 2.2),
             Fidelity::Paper,
             &l,
             &r,

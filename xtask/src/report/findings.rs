@@ -48,6 +48,17 @@ pub enum Expected {
     Value(f64),
 }
 
+impl Expected {
+    /// A number's range (a single value is a range of zero width); `None` for yes/no.
+    pub fn range(self) -> Option<(f64, f64)> {
+        match self {
+            Expected::Range(lo, hi) => Some((lo, hi)),
+            Expected::Value(v) => Some((v, v)),
+            Expected::Yes | Expected::No => None,
+        }
+    }
+}
+
 /// The paper's printed value as an expectation; `None` if it is not one of the forms above.
 pub fn expected(paper: &str) -> Option<Expected> {
     let text = paper.trim();
