@@ -9,6 +9,7 @@
 //! errors that name the file, the field path and the allowed range.
 #![deny(missing_docs)]
 
+mod bed;
 mod checker;
 mod clock;
 pub mod limits;

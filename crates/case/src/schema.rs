@@ -10,6 +10,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::run_control::{FidelityPresets, Numerics, RunControl};
 
+pub use crate::bed::Bed;
 pub use crate::sidewalls::{GasSidewall, Sidewalls};
 /// A side's solids condition: the wall crate's type, with its validation
 /// ([`SolidsWall::model`]).
@@ -46,6 +47,10 @@ pub struct Case {
     pub initial: Initial,
     /// Gravity and its schedule.
     pub gravity: Gravity,
+    /// The floor's shape: plane (the default) or a slope whose foot turns onto a run-out
+    /// (docs/model.md §9).
+    #[serde(default, skip_serializing_if = "Bed::is_plane")]
+    pub bed: Bed,
     /// What is recorded during the run.
     #[serde(default)]
     pub monitors: Monitors,

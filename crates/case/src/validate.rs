@@ -6,6 +6,7 @@
 
 use runout_mesh::{short, Side};
 
+use crate::bed::check_bed;
 use crate::checker::{Checker, FieldError, B};
 use crate::limits::*;
 use crate::name::name_error;
@@ -125,6 +126,7 @@ fn check_materials(c: &mut Checker, case: &Case) {
     if let Some(sidewalls) = &case.sidewalls {
         check_sidewalls(c, sidewalls, check_solids_wall);
     }
+    check_bed(c, case);
 }
 
 /// The initial state: θ, velocities and the regions (inside the domain).

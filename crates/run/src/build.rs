@@ -2,7 +2,7 @@
 //! for a case with solids, with their initial state and boundary conditions.
 
 use runout_case::{
-    Block, Boundary, Case, Convection, Fill, GasWall, Gravity, InitialPressure, KineticTheory,
+    Bed, Block, Boundary, Case, Convection, Fill, GasWall, Gravity, InitialPressure, KineticTheory,
     OutletPressure,
 };
 use runout_closures::{ClosureParams, FrictionParams, Gas, Particles};
@@ -10,6 +10,7 @@ use runout_mesh::{Grid, Sides};
 use runout_walls::{RobinFace, SolidsWallModel};
 
 use crate::RunError;
+use runout_solver::bent_floor::BentFloor;
 use runout_solver::single_phase::{Fluid, Settings, SideBc, SinglePhase};
 use runout_solver::transport::Scheme;
 use runout_solver::two_fluid::{SolidsSpec, TwoFluid, TwoFluidSettings};
@@ -52,23 +53,53 @@ fn gas_sides(case: &Case, gas: &runout_case::Gas) -> Sides<SideBc> {
 }
 
 /// Initial gas pressure of cell centre (x, y): hydrostatic from the top-left corner,
-/// p = p_ref + ρ_g g·(r − r_top-left), or the case's uniform value.
+/// p = p_ref + ρ_g g·(r − r_top-left), under a bent floor p_ref + ρ_g (Φ(r_top-left) − Φ(r))
+/// (docs/model.md §9), or the case's uniform value.
 fn initial_gas_pressure(
     case: &Case,
     gas: &runout_case::Gas,
     gravity: (f64, f64),
+    bent: Option<BentFloor>,
     grid: &Grid,
-    x: f64,
-    y: f64,
+    (x, y): (f64, f64),
 ) -> f64 {
-    match case.initial.gas_pressure {
-        InitialPressure::Hydrostatic => {
+    let top_left = (grid.x.start(), grid.y.end());
+    match (&case.initial.gas_pressure, bent) {
+        (InitialPressure::Hydrostatic, None) => {
             gas.reference_pressure
-                + gas.density * (gravity.0 * (x - grid.x.start()) + gravity.1 * (y - grid.y.end()))
+                + gas.density * (gravity.0 * (x - top_left.0) + gravity.1 * (y - top_left.1))
         }
-        InitialPressure::Uniform(p) => p,
+        (InitialPressure::Hydrostatic, Some(b)) => {
+            gas.reference_pressure + gas.density * b.work(top_left, (x, y))
+        }
+        (InitialPressure::Uniform(p), _) => *p,
     }
 }
+
+/// The bent floor of a case with `bed: Bend(..)` (docs/model.md §9), acting under its final
+/// (tilted) gravity; `None` on a plane floor.
+pub(super) fn bent_floor(case: &Case) -> Result<Option<BentFloor>, RunError> {
+    let Bed::Bend {
+        at,
+        radius,
+        slope_after,
+    } = case.bed
+    else {
+        return Ok(None);
+    };
+    let magnitude = match case.gravity {
+        Gravity::Constant { magnitude, .. } | Gravity::TiltOnImpact { magnitude, .. } => magnitude,
+    };
+    BentFloor::new(magnitude, case.gravity.slope(), slope_after, at, radius)
+        .map(Some)
+        .map_err(|e| RunError::Unsupported {
+            case: case.name.clone(),
+            reason: e.to_string(),
+        })
+}
+
+/// Gravity (g_x, g_y) [m s⁻²].
+type GravityVector = (f64, f64);
 
 /// Gravity vector of a slope α: g = (g sin α, −g cos α) (architecture.md conventions).
 pub(super) fn gravity_vector(magnitude: f64, slope_deg: f64) -> (f64, f64) {
@@ -139,7 +170,7 @@ pub fn single_phase_solver(case: &Case) -> Result<SinglePhase, RunError> {
     for j in 0..g.ny() {
         for i in 0..g.nx() {
             let (x, y) = g.cell_centre(i, j);
-            s.p[g.cell_index(i, j)] = initial_gas_pressure(case, gas, gravity, &g, x, y);
+            s.p[g.cell_index(i, j)] = initial_gas_pressure(case, gas, gravity, None, &g, (x, y));
         }
     }
     zero_normal_velocity_on_walls(b, &g, &mut s.u, &mut s.v);
@@ -223,7 +254,11 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
     let mut tf = TwoFluid::new(grid.clone(), fluid, gas_walls, specs, gravity, settings)
         .map_err(|e| unsupported(format!("setting up the two-fluid solver: {e}")))?;
     tf.set_sidewalls(super::sidewalls::sidewalls(case)?);
-    fill_initial_state(&mut tf, case, gas, gravity, &grid);
+    // a bent floor acts with the tilted gravity: from the start under a constant one, at
+    // the tilt otherwise (`PendingTilt`)
+    let bent = bent_floor(case)?.filter(|_| matches!(case.gravity, Gravity::Constant { .. }));
+    tf.set_bent_floor(bent);
+    fill_initial_state(&mut tf, case, gas, (gravity, bent), &grid);
     let gas = tf.state_mut().gas_mut();
     zero_normal_velocity_on_walls(b, &grid, &mut gas.u, &mut gas.v);
     for s in tf.state_mut().phases_mut() {
@@ -308,7 +343,7 @@ fn fill_initial_state(
     tf: &mut TwoFluid,
     case: &Case,
     gas: &runout_case::Gas,
-    gravity: (f64, f64),
+    (gravity, bent): (GravityVector, Option<BentFloor>),
     grid: &Grid,
 ) {
     let (nx, ny) = (grid.nx(), grid.ny());
@@ -325,7 +360,7 @@ fn fill_initial_state(
         for i in 0..nx {
             let (x, y) = grid.cell_centre(i, j);
             let k = i + nx * j;
-            state.gas_mut().p[k] = initial_gas_pressure(case, gas, gravity, grid, x, y);
+            state.gas_mut().p[k] = initial_gas_pressure(case, gas, gravity, bent, grid, (x, y));
             for block in &case.initial.regions {
                 // the part of the cell the block fills: all or nothing by the centre, or
                 // the covered fraction of its area

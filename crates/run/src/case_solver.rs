@@ -5,8 +5,9 @@ use runout_case::{Case, Gravity, ImpactCriterion};
 use runout_mesh::Grid;
 use runout_output::{CellField, OutputError, PvdSeries};
 
-use crate::build::gravity_vector;
+use crate::build::{bent_floor, gravity_vector};
 use crate::RunError;
+use runout_solver::bent_floor::BentFloor;
 use runout_solver::single_phase::SinglePhase;
 use runout_solver::state::{SolverState, StateError};
 use runout_solver::two_fluid::TwoFluid;
@@ -185,6 +186,8 @@ pub(super) struct PendingTilt {
     /// slope after the tilt [deg]
     pub(super) slope: f64,
     pub(super) trigger: ImpactTrigger,
+    /// the bent floor that acts with the tilted gravity (docs/model.md §9), if any
+    pub(super) floor: Option<BentFloor>,
 }
 
 impl PendingTilt {
@@ -219,6 +222,8 @@ impl PendingTilt {
             magnitude,
             slope,
             trigger,
+            // an invalid bend is refused when the solver is built (`two_fluid_solver`)
+            floor: bent_floor(case).ok().flatten(),
         })
     }
 }
@@ -374,6 +379,7 @@ impl CaseSolver for TwoFluidCase {
         }
         self.solver
             .set_gravity(gravity_vector(tilt.magnitude, tilt.slope));
+        self.solver.set_bent_floor(tilt.floor);
         self.tilt = None;
         self.tilted_at = Some(time);
         tracing::info!(
@@ -453,7 +459,10 @@ impl CaseSolver for TwoFluidCase {
     fn load_state(&mut self, state: &SolverState) -> Result<(), StateError> {
         self.solver.load_state(state)?;
         if state.take_counts(TILT_PENDING, 1)?[0] == 0 {
-            self.tilt = None;
+            // tilted before the checkpoint: the bent floor acts too
+            if let Some(tilt) = self.tilt.take() {
+                self.solver.set_bent_floor(tilt.floor);
+            }
         }
         Ok(())
     }

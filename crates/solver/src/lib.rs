@@ -8,7 +8,8 @@
 //!   [`energy`] (granular energy, §4.8),
 //!   [`kinematics`] (cell strain rates), [`pea`] (partial elimination of drag, §4.5),
 //!   [`volume_fraction`] (the solids volume-fraction correction, §4.7);
-//! - [`state`]: a solver's state between steps as named arrays (checkpoints).
+//! - [`state`]: a solver's state between steps as named arrays (checkpoints);
+//! - [`bent_floor`]: gravity and the centrifugal force of a slope whose foot turns (§9).
 //!
 //! The verification problems, the reference solutions and the 1-D chute reference solver
 //! are in `runout-verification` (crates/verification).
@@ -17,6 +18,7 @@
 // than zipped iterators there.
 #![allow(clippy::needless_range_loop)]
 
+pub mod bent_floor;
 pub mod energy;
 pub mod kinematics;
 pub mod momentum;

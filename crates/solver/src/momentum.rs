@@ -27,6 +27,7 @@ use runout_linsolve::{RowMut, Stencil5};
 use runout_mesh::{Grid, Sides};
 use runout_walls::RobinFace;
 
+use crate::bent_floor::BentFloor;
 use crate::single_phase::SideBc;
 use crate::staggered::Component;
 use crate::transport::{assemble_masked, face_value, FaceData, Scheme};
@@ -56,6 +57,9 @@ pub struct PhaseFields<'a> {
     /// nodes of the component being assembled whose rows the caller replaces (dilute solids
     /// faces, docs/model.md §2.7): their rows and the faces between two of them are skipped
     pub skip: Option<&'a [bool]>,
+    /// the phase's velocity along x at the u nodes, for the centrifugal force of a bent floor
+    /// in its v equations ([`Context::bent_floor`]); `None` without one
+    pub velocity_along: Option<&'a [f64]>,
 }
 
 /// Per-node wall closures that replace a side's single [`SideBc`] (wall models whose
@@ -91,6 +95,9 @@ pub struct Context<'a> {
     pub bcs: &'a Sides<SideBc>,
     /// gravity (g_x, g_y) [m s⁻²]
     pub gravity: (f64, f64),
+    /// a floor that bends (docs/model.md §9): when set, gravity is its field, not `gravity`,
+    /// and the v equations gain the centrifugal force of `PhaseFields::velocity_along`
+    pub bent_floor: Option<BentFloor>,
     /// time step [s] (`f64::INFINITY` for a steady iteration)
     pub dt: f64,
     /// convection scheme
@@ -522,17 +529,13 @@ fn u_sources(ctx: &Context<'_>, phase: &PhaseFields<'_>, u_old: &[f64], a: &mut 
     let width = |i: usize| nodes.width(i);
     let y0 = grid.y.start();
     let yc = grid.y.centres();
+    let (x0, x1) = (grid.x.start(), grid.x.end());
+    let xc = grid.x.centres();
     for j in 0..ny {
-        let p_west = ctx
-            .bcs
-            .west
-            .pressure(yc[j] - y0, ctx.gravity.1)
-            .unwrap_or(0.0);
-        let p_east = ctx
-            .bcs
-            .east
-            .pressure(yc[j] - y0, ctx.gravity.1)
-            .unwrap_or(0.0);
+        let along_west = ((x0, y0), (x0, yc[j]), yc[j] - y0, ctx.gravity.1);
+        let p_west = outlet_pressure(ctx, &ctx.bcs.west, along_west).unwrap_or(0.0);
+        let along_east = ((x1, y0), (x1, yc[j]), yc[j] - y0, ctx.gravity.1);
+        let p_east = outlet_pressure(ctx, &ctx.bcs.east, along_east).unwrap_or(0.0);
         for i in 0..mx {
             let k = i + mx * j;
             if a.pattern().fixed_mask()[k] {
@@ -574,7 +577,12 @@ fn u_sources(ctx: &Context<'_>, phase: &PhaseFields<'_>, u_old: &[f64], a: &mut 
             a.a_p[k] += a0;
             a.b[k] += a0 * u_old[k];
             // body force with the current bulk density
-            a.b[k] += (half_volume(west, rho_eps) + half_volume(east, rho_eps)) * ctx.gravity.0;
+            let g_x = match (ctx.bent_floor, west, east) {
+                (None, ..) => ctx.gravity.0,
+                (Some(b), Some(w), Some(e)) => b.force_x_between(xc[w], xc[e], yc[j]),
+                (Some(b), ..) => b.force(grid.x.faces()[i], yc[j]).0,
+            };
+            a.b[k] += (half_volume(west, rho_eps) + half_volume(east, rho_eps)) * g_x;
             // gas pressure, −ε̄ ΔP A; solids pressure, −ΔP_s A
             let eps_face = match (west, east) {
                 (Some(w), Some(e)) if w >= e => {
@@ -671,6 +679,7 @@ fn v_sources(ctx: &Context<'_>, phase: &PhaseFields<'_>, v_old: &[f64], a: &mut 
     let rho_eps = phase.bulk_density;
     let mu = phase.viscosity;
     let x0 = grid.x.start();
+    let (y0, y1) = (grid.y.start(), grid.y.end());
     let xc = grid.x.centres();
     for j in 0..my {
         for i in 0..nx {
@@ -712,22 +721,25 @@ fn v_sources(ctx: &Context<'_>, phase: &PhaseFields<'_>, v_old: &[f64], a: &mut 
                 / ctx.dt;
             a.a_p[k] += a0;
             a.b[k] += a0 * v_old[k];
-            a.b[k] += (half_volume(south, rho_eps) + half_volume(north, rho_eps)) * ctx.gravity.1;
+            let mass = half_volume(south, rho_eps) + half_volume(north, rho_eps);
+            match ctx.bent_floor {
+                None => a.b[k] += mass * ctx.gravity.1,
+                Some(b) => {
+                    let u = phase
+                        .velocity_along
+                        .map_or(0.0, |u| mean_u_at_v_node(u, nx, i, south, north));
+                    a.b[k] += mass * (b.force(xc[i], 0.0).1 + b.centrifugal(xc[i], u));
+                }
+            }
             let eps_face = match (south, north) {
                 (Some(_), Some(_)) => interp_y(grid, phase.volume_fraction, i, j),
                 (Some(r), None) | (None, Some(r)) => phase.volume_fraction[i + nx * r],
                 (None, None) => 0.0,
             };
-            let p_south = ctx
-                .bcs
-                .south
-                .pressure(xc[i] - x0, ctx.gravity.0)
-                .unwrap_or(0.0);
-            let p_north = ctx
-                .bcs
-                .north
-                .pressure(xc[i] - x0, ctx.gravity.0)
-                .unwrap_or(0.0);
+            let along_south = ((x0, y0), (xc[i], y0), xc[i] - x0, ctx.gravity.0);
+            let p_south = outlet_pressure(ctx, &ctx.bcs.south, along_south).unwrap_or(0.0);
+            let along_north = ((x0, y1), (xc[i], y1), xc[i] - x0, ctx.gravity.0);
+            let p_north = outlet_pressure(ctx, &ctx.bcs.north, along_north).unwrap_or(0.0);
             let p_s = south.map_or(p_south, |r| ctx.gas_pressure[i + nx * r]);
             let p_n = north.map_or(p_north, |r| ctx.gas_pressure[i + nx * r]);
             a.b[k] += eps_face * (p_s - p_n) * dx[i];
@@ -742,6 +754,43 @@ fn v_sources(ctx: &Context<'_>, phase: &PhaseFields<'_>, v_old: &[f64], a: &mut 
                 a.b[k] += tau[k];
             }
         }
+    }
+}
+
+/// A side's outlet pressure at a point: `along` = (the side's first corner, the point, the
+/// distance between them, uniform gravity's component along the side). Under a bent floor
+/// the hydrostatic pressure follows its potential, p0 + ρ (Φ(corner) − Φ(point)); else
+/// p0 + ρ g_s s ([`SideBc`]).
+fn outlet_pressure(
+    ctx: &Context<'_>,
+    bc: &SideBc,
+    along: ((f64, f64), (f64, f64), f64, f64),
+) -> Option<f64> {
+    let (corner, point, s, g_along) = along;
+    match ctx.bent_floor {
+        None => bc.pressure(s, g_along),
+        Some(b) => bc.pressure_with_work(b.work(corner, point)),
+    }
+}
+
+/// The mean of the phase's u at the (up to) four u nodes around v node (i, j) between rows
+/// `south` and `north` (the centrifugal force's u², docs/model.md §9).
+fn mean_u_at_v_node(
+    u: &[f64],
+    nx: usize,
+    i: usize,
+    south: Option<usize>,
+    north: Option<usize>,
+) -> f64 {
+    let rows = [south, north];
+    let (sum, n) = rows.iter().flatten().fold((0.0, 0.0), |(s, n), &r| {
+        let k = i + (nx + 1) * r;
+        (s + 0.5 * (u[k] + u[k + 1]), n + 1.0)
+    });
+    if n > 0.0 {
+        sum / n
+    } else {
+        0.0
     }
 }
 

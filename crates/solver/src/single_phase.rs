@@ -54,6 +54,17 @@ impl SideBc {
             SideBc::HydrostaticOutlet { p0, density } => Some(p0 + density * g_along * s),
         }
     }
+
+    /// Pressure on the outlet where gravity has done `work` per unit mass since its first
+    /// corner (a bent floor's potential drop, [`crate::bent_floor::BentFloor::work`]);
+    /// `None` for a wall.
+    pub(crate) fn pressure_with_work(&self, work: f64) -> Option<f64> {
+        match *self {
+            SideBc::Wall(_) => None,
+            SideBc::Outlet(p) => Some(p),
+            SideBc::HydrostaticOutlet { p0, density } => Some(p0 + density * work),
+        }
+    }
 }
 
 /// Constant fluid properties.
@@ -414,6 +425,7 @@ impl SinglePhase {
             grid: &self.grid,
             bcs: &self.bcs,
             gravity: self.gravity,
+            bent_floor: None,
             dt,
             scheme: self.settings.scheme,
             gas_pressure: &self.p,
@@ -429,6 +441,7 @@ impl SinglePhase {
             plastic_pressure: None,
             explicit_source: None,
             skip: None,
+            velocity_along: None,
         };
         let [cu, _] = Component::of_grid(&self.grid);
         assemble(
@@ -471,6 +484,7 @@ impl SinglePhase {
             grid: &self.grid,
             bcs: &self.bcs,
             gravity: self.gravity,
+            bent_floor: None,
             dt,
             scheme: self.settings.scheme,
             gas_pressure: &self.p,
@@ -486,6 +500,7 @@ impl SinglePhase {
             plastic_pressure: None,
             explicit_source: None,
             skip: None,
+            velocity_along: None,
         };
         let [_, cv] = Component::of_grid(&self.grid);
         assemble(

@@ -57,6 +57,7 @@ fn two_layer_couette_is_exact() {
         grid: &grid,
         bcs: &bcs,
         gravity: (0.0, 0.0),
+        bent_floor: None,
         dt: f64::INFINITY,
         scheme: Scheme::Superbee,
         gas_pressure: &pressure,
@@ -72,6 +73,7 @@ fn two_layer_couette_is_exact() {
         plastic_pressure: None,
         explicit_source: None,
         skip: None,
+        velocity_along: None,
     };
     let pattern = Pattern::new(nx + 1, ny).unwrap();
     let mut a = Stencil5::new(pattern.clone());
@@ -201,6 +203,7 @@ impl Problem {
             grid: &self.grid,
             bcs: &self.bcs,
             gravity: self.gravity,
+            bent_floor: None,
             dt: 1e-3,
             scheme: Scheme::Superbee,
             gas_pressure: p_g,
@@ -216,6 +219,7 @@ impl Problem {
             plastic_pressure: Some(p_star),
             explicit_source: Some(&self.tau),
             skip: None,
+            velocity_along: None,
         };
         let (n_along, n_across) = c.cells_along_across();
         let (mx, my) = c.xy(n_along + 1, n_across);
@@ -266,4 +270,93 @@ fn v_of_the_transposed_problem_is_u() {
     }
     // every coefficient takes part somewhere
     assert!(nonzero.iter().all(|&n| n > 0), "{nonzero:?}");
+}
+
+/// A bent floor (docs/model.md §9) enters the sources as the potential's difference between
+/// the cells beside a u node, −g cos α(x) at a v node, and the centrifugal −κ ū² at a v node
+/// (ū the mean of the four u nodes around it): on an arc (κ = 1/R) with a uniform u, each
+/// interior row's source is its mass times those, to round-off.
+#[test]
+fn bent_floor_sources_are_its_gravity_and_the_centrifugal_force() {
+    use runout_solver::bent_floor::BentFloor;
+    let (nx, ny) = (4, 3);
+    let grid = Grid::new(
+        Axis::uniform(10.0, 12.0, nx).unwrap(),
+        Axis::uniform(0.0, 0.3, ny).unwrap(),
+    );
+    let floor = BentFloor::new(9.81, 40.0, 0.0, 10.0, 4.0).unwrap();
+    let (rho_eps, speed) = (1200.0, 3.0);
+    let bulk = vec![rho_eps; nx * ny];
+    let ones = vec![1.0; nx * ny];
+    let zeros = vec![0.0; nx * ny];
+    let bcs = Sides::all(SideBc::Wall(RobinFace::partial_slip(0.0, 0.0)));
+    let u = vec![speed; (nx + 1) * ny];
+    let v = vec![0.0; nx * (ny + 1)];
+    let sources = |along: Option<&[f64]>, component: usize| {
+        let ctx = Context {
+            grid: &grid,
+            bcs: &bcs,
+            gravity: (0.0, 0.0),
+            bent_floor: Some(floor),
+            dt: f64::INFINITY,
+            scheme: Scheme::Upwind,
+            gas_pressure: &zeros,
+            wall_faces: None,
+        };
+        let phase = PhaseFields {
+            bulk_density: &bulk,
+            bulk_density_old: &bulk,
+            volume_fraction: &ones,
+            viscosity: &zeros,
+            viscosity_mean: FaceMean::Harmonic,
+            solids_pressure: None,
+            plastic_pressure: None,
+            explicit_source: None,
+            skip: None,
+            velocity_along: along,
+        };
+        let comp = Component::of_grid(&grid)[component];
+        let (mx, my) = if component == 0 {
+            (nx + 1, ny)
+        } else {
+            (nx, ny + 1)
+        };
+        let mut a = Stencil5::new(Pattern::new(mx, my).unwrap());
+        let mut faces = FaceData::zeros(mx, my);
+        let old = if component == 0 { u.clone() } else { v.clone() };
+        assemble(&ctx, &phase, comp, &u, &v, &old, &mut faces, &mut a);
+        a.b.clone()
+    };
+    let (dx, dy) = (0.5, 0.1);
+    let xc = grid.x.centres();
+    let yc = grid.y.centres();
+    // u nodes between two cells: the potential's difference
+    let b_u = sources(None, 0);
+    for j in 0..ny {
+        for i in 1..nx {
+            let expected = rho_eps * dx * dy * floor.force_x_between(xc[i - 1], xc[i], yc[j]);
+            let got = b_u[i + (nx + 1) * j];
+            assert!(
+                (got - expected).abs() < 1e-9 * expected.abs(),
+                "u ({i}, {j}): {got} vs {expected}"
+            );
+        }
+    }
+    // v nodes between two rows: −g cos α, then the centrifugal force of u = 3 m/s on κ = 1/4
+    let (b_plain, b_turning) = (sources(None, 1), sources(Some(&u), 1));
+    for j in 1..ny {
+        for (i, &x) in xc.iter().enumerate() {
+            let k = i + nx * j;
+            let mass = rho_eps * dx * dy;
+            let gravity = -9.81 * floor.angle(x).cos();
+            assert!((b_plain[k] - mass * gravity).abs() < 1e-9 * mass);
+            let centrifugal = -speed * speed / 4.0;
+            assert!(
+                (b_turning[k] - mass * (gravity + centrifugal)).abs() < 1e-9 * mass,
+                "v ({i}, {j}): {} vs {}",
+                b_turning[k],
+                mass * (gravity + centrifugal)
+            );
+        }
+    }
 }

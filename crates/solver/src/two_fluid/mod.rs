@@ -77,6 +77,7 @@ use runout_linsolve::{LinSolveError, LinearSolver, Stencil5};
 use runout_mesh::{Grid, Side, Sides};
 use runout_walls::{RobinFace, SolidsWallModel};
 
+use crate::bent_floor::BentFloor;
 use crate::single_phase::SideBc;
 use crate::transport::Scheme;
 use coefficients::PhaseCoefficients;
@@ -712,6 +713,18 @@ impl TwoFluid {
     /// Sets gravity (a schedule may tilt it during a run).
     pub fn set_gravity(&mut self, gravity: (f64, f64)) {
         self.model.gravity = gravity;
+    }
+
+    /// Sets a bent floor (docs/model.md §9), whose field then replaces the uniform gravity,
+    /// or `None` for a plane floor. A run sets it when the tilted gravity acts; a checkpoint
+    /// does not hold it (the case does).
+    pub fn set_bent_floor(&mut self, floor: Option<BentFloor>) {
+        self.model.bent_floor = floor;
+    }
+
+    /// The bent floor, if one acts.
+    pub fn bent_floor(&self) -> Option<BentFloor> {
+        self.model.bent_floor
     }
 
     /// Whether solids phase `m` has a state-dependent model (JJ, revisited JJ, Jenkins) on

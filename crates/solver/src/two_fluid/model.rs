@@ -7,6 +7,7 @@
 use runout_mesh::{Grid, Sides};
 
 use super::{Scene, Sidewalls, SolidsSpec, TwoFluidSettings};
+use crate::bent_floor::BentFloor;
 use crate::single_phase::{Fluid, SideBc};
 
 /// The fixed description of a two-fluid problem (module doc).
@@ -28,6 +29,9 @@ pub(super) struct Model {
     pub solids_specs: Vec<SolidsSpec>,
     /// gravity (g_x, g_y) [m s⁻²]
     pub gravity: (f64, f64),
+    /// a floor that bends (docs/model.md §9): when set, its field replaces `gravity` and the
+    /// v equations gain the centrifugal force; none on a plane floor
+    pub bent_floor: Option<BentFloor>,
     /// iteration settings
     pub settings: TwoFluidSettings,
     /// what this solver computes (derived when built, and when the side walls are set)

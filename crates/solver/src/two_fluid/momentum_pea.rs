@@ -100,6 +100,7 @@ fn assemble_momentum(
         grid,
         bcs: &model.gas_walls,
         gravity: model.gravity,
+        bent_floor: model.bent_floor,
         dt,
         scheme: model.settings.scheme,
         gas_pressure: &g.p,
@@ -117,6 +118,7 @@ fn assemble_momentum(
         // μ_g ∇(∇·u_g), negligible here (μ_g = 1.8e-5 Pa s)
         explicit_source: None,
         skip: None,
+        velocity_along: Some(&g.u),
     };
     let [cu, cv] = Component::of_grid(grid);
     let (u_g, v_g) = (&g.u, &g.v);
@@ -324,6 +326,7 @@ fn assemble_phase(
             .then_some(&coef.p_star[..]),
         explicit_source: Some(&coef.tau_u),
         skip: Some(&s.dilute_u),
+        velocity_along: Some(&p.u),
     };
     let fields_v = PhaseFields {
         explicit_source: Some(&coef.tau_v),

@@ -95,6 +95,7 @@ impl TwoFluid {
                 gas_inflow: Sides::all(0.0),
                 solids_specs,
                 gravity,
+                bent_floor: None,
                 settings,
                 scene,
                 sidewalls: None,

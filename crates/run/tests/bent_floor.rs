@@ -1,0 +1,163 @@
+//! A floor whose slope turns onto a flat run-out (docs/model.md §9, issue 43 item 5): gravity
+//! in bed-following coordinates is the gradient of a potential, so the initial hydrostatic
+//! pressure a run builds balances the gas's weight at every u and v node, over the bend and
+//! at the top outlet, to round-off: gas at rest stays at rest. The contrast (the plane 40°
+//! slope's hydrostatic pressure under the bent floor's gravity) is out of balance, so the
+//! check can fail. (A step of a domain wholly at rest cannot show it: the momentum residual
+//! is normalised by the speeds, all zero.)
+
+use std::path::Path;
+
+use runout_case::{load_case, Bed, Case, Fidelity, Gravity};
+use runout_closures::FaceMean;
+use runout_linsolve::{Pattern, Stencil5};
+use runout_mesh::Sides;
+use runout_run::two_fluid_solver;
+use runout_solver::bent_floor::BentFloor;
+use runout_solver::momentum::{assemble, Context, PhaseFields};
+use runout_solver::staggered::Component;
+use runout_solver::two_fluid::TwoFluid;
+use runout_solver::{FaceData, Scheme, SideBc};
+use runout_walls::RobinFace;
+
+/// The family-S slide's domain (20 m × 1.8 m) at smoke size with no solids, a 40° slope
+/// from the start.
+fn empty_slide(bed: Bed) -> Case {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let mut case = load_case(&root.join("cases/sensitivity/base.ron")).unwrap();
+    case.gravity = Gravity::Constant {
+        magnitude: 9.80665,
+        slope: 40.0,
+    };
+    case.initial.regions.clear();
+    case.bed = bed;
+    runout_case::validate_case(&case).unwrap();
+    case.at_fidelity(Fidelity::Smoke)
+}
+
+const BEND: Bed = Bed::Bend {
+    at: 12.0,
+    radius: 2.0,
+    slope_after: 0.0,
+};
+
+/// The gas momentum sources (gravity and pressure: the gas at rest has no other) of the
+/// built solver's initial pressure `p` under `floor`, largest magnitude over the u and the
+/// v nodes that move (the top outlet's included), against the largest weight of a node's
+/// gas, ρ_g g V.
+fn largest_gas_imbalance(tf: &TwoFluid, p: &[f64], floor: Option<BentFloor>) -> f64 {
+    let grid = tf.grid();
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let walls = SideBc::Wall(RobinFace::partial_slip(0.0, 0.0));
+    let bcs = Sides {
+        west: walls,
+        east: walls,
+        south: walls,
+        north: SideBc::HydrostaticOutlet {
+            p0: 101325.0,
+            density: 1.2,
+        },
+    };
+    let bulk = vec![1.2; nx * ny];
+    let (ones, zeros) = (vec![1.0; nx * ny], vec![0.0; nx * ny]);
+    let ctx = Context {
+        grid,
+        bcs: &bcs,
+        gravity: tf.gravity(),
+        bent_floor: floor,
+        dt: f64::INFINITY,
+        scheme: Scheme::Upwind,
+        gas_pressure: p,
+        wall_faces: None,
+    };
+    let (u, v) = (vec![0.0; (nx + 1) * ny], vec![0.0; nx * (ny + 1)]);
+    let phase = PhaseFields {
+        bulk_density: &bulk,
+        bulk_density_old: &bulk,
+        volume_fraction: &ones,
+        viscosity: &zeros,
+        viscosity_mean: FaceMean::Harmonic,
+        solids_pressure: None,
+        plastic_pressure: None,
+        explicit_source: None,
+        skip: None,
+        velocity_along: Some(&u),
+    };
+    let mut largest: f64 = 0.0;
+    for (c, comp) in Component::of_grid(grid).into_iter().enumerate() {
+        let (mx, my) = if c == 0 { (nx + 1, ny) } else { (nx, ny + 1) };
+        let mut a = Stencil5::new(Pattern::new(mx, my).unwrap());
+        let mut faces = FaceData::zeros(mx, my);
+        let old = if c == 0 { u.clone() } else { v.clone() };
+        assemble(&ctx, &phase, comp, &u, &v, &old, &mut faces, &mut a);
+        // the nodes that move: not the wall-normal ones (west, east and the floor)
+        let moves = |k: usize| {
+            let (i, j) = (k % mx, k / mx);
+            if c == 0 {
+                i > 0 && i < nx
+            } else {
+                j > 0
+            }
+        };
+        largest = (0..mx * my)
+            .filter(|&k| moves(k))
+            .fold(largest, |m, k| m.max(a.b[k].abs()));
+    }
+    let volume = (0..nx * ny)
+        .map(|k| grid.cell_volume(k % nx, k / nx))
+        .fold(0.0, f64::max);
+    largest / (1.2 * 9.80665 * volume)
+}
+
+#[test]
+fn gas_at_rest_stays_at_rest_over_the_bend() {
+    let case = empty_slide(BEND);
+    let tf = two_fluid_solver(&case).unwrap();
+    let floor = tf.bent_floor();
+    assert!(
+        floor.is_some(),
+        "a constant gravity's bend acts from the start"
+    );
+    let imbalance = largest_gas_imbalance(&tf, tf.p_g(), floor);
+    eprintln!("balanced: {imbalance:e}");
+    assert!(
+        imbalance < 1e-9,
+        "gas imbalance {imbalance} of a node's weight"
+    );
+
+    // contrast: the plane 40° slope's hydrostatic pressure under the bent floor's gravity
+    let plane = two_fluid_solver(&empty_slide(Bed::Plane)).unwrap();
+    let imbalance = largest_gas_imbalance(&tf, plane.p_g(), floor);
+    eprintln!("contrast: {imbalance:e}");
+    assert!(
+        imbalance > 1e-2,
+        "the contrast should be out of balance: {imbalance}"
+    );
+}
+
+/// A bend that ends beyond the domain, a convex one and one in a gas-only case are refused
+/// before any step, naming the field.
+#[test]
+fn bad_bends_are_refused_with_the_field() {
+    let fields = |bed: Bed| -> Vec<String> {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+        let mut case = load_case(&root.join("cases/sensitivity/base.ron")).unwrap();
+        case.bed = bed;
+        runout_case::validate_case(&case)
+            .err()
+            .unwrap_or_default()
+            .into_iter()
+            .map(|e| e.field)
+            .collect()
+    };
+    let bend = |at: f64, radius: f64, slope_after: f64| Bed::Bend {
+        at,
+        radius,
+        slope_after,
+    };
+    assert!(fields(bend(12.0, 2.0, 0.0)).is_empty());
+    assert_eq!(fields(bend(19.0, 2.0, 0.0)), ["bed.Bend.radius"]);
+    assert_eq!(fields(bend(12.0, 2.0, 45.0)), ["bed.Bend.slope_after"]);
+    assert_eq!(fields(bend(25.0, 2.0, 0.0)), ["bed.Bend.at"]);
+    assert_eq!(fields(bend(12.0, -1.0, 0.0)), ["bed.Bend.radius"]);
+}
