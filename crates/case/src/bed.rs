@@ -3,8 +3,10 @@
 
 use serde::{Deserialize, Serialize};
 
+use runout_mesh::bent_floor::{BentFloor, BentFloorError};
+
 use crate::checker::{Checker, B};
-use crate::schema::Case;
+use crate::schema::{Case, Gravity};
 
 /// The floor's shape. `Plane` (the default): one plane floor under the case's uniform
 /// (tilted) gravity. `Bend`: x runs along the floor and y normal to it; the floor keeps the
@@ -35,6 +37,28 @@ impl Bed {
     /// that cases and run folders from before the option existed are unchanged).
     pub fn is_plane(&self) -> bool {
         *self == Bed::Plane
+    }
+}
+
+impl Case {
+    /// The bent floor of a case with `bed: Bend(..)` under its final (tilted) gravity
+    /// (docs/model.md §9), `Ok(None)` on a plane floor; an error only for a case that did
+    /// not pass validation.
+    pub fn bent_floor(&self) -> Result<Option<BentFloor>, BentFloorError> {
+        let Bed::Bend {
+            at,
+            radius,
+            slope_after,
+        } = self.bed
+        else {
+            return Ok(None);
+        };
+        let magnitude = match self.gravity {
+            Gravity::Constant { magnitude, .. } | Gravity::TiltOnImpact { magnitude, .. } => {
+                magnitude
+            }
+        };
+        BentFloor::new(magnitude, self.gravity.slope(), slope_after, at, radius).map(Some)
     }
 }
 

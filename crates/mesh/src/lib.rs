@@ -4,10 +4,12 @@
 //! (length + cell count + growth ratio, or length + end widths); an [`Axis`] stores its
 //! faces and caches centres, widths and centre-to-centre distances; a [`Grid`] pairs two
 //! axes into the staggered (MAC) grid of docs/model.md §4.1: scalars at cell centres, u on
-//! east faces, v on north faces.
+//! east faces, v on north faces. [`bent_floor`]: the floor of a slope whose foot turns, in
+//! bed-following coordinates (docs/model.md §9).
 #![deny(missing_docs)]
 
 mod axis;
+pub mod bent_floor;
 mod grid;
 mod number;
 mod segment;

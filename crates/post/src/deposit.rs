@@ -68,6 +68,29 @@ pub struct Deposit {
     pub max_thickness: f64,
     /// x of the column where H∞ is [m]
     pub max_thickness_x: f64,
+    /// on a floor that bends (`bed: Bend`, docs/model.md §9): where the deposit lies on it
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub on_the_run_out: Option<RunOut>,
+}
+
+/// Where a deposit lies on a floor whose foot turns onto a run-out (docs/deposit.md): x runs
+/// along the floor, so the distances below are measured along it, and the drop and the
+/// horizontal distance come from the floor's shape (docs/model.md §9).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct RunOut {
+    /// where the arc ends and the run-out begins, x_e [m along the floor]
+    pub foot_x: f64,
+    /// the grain edge past the foot, distal_edge_grain − x_e [m] (negative: it stopped
+    /// before the run-out)
+    pub grain_edge_past_foot: f64,
+    /// the rear edge of the release, x_r (the smallest x0 of the initial blocks with solids) [m]
+    pub release_rear_x: f64,
+    /// the floor's drop from x_r to the grain edge, H [m]
+    pub drop: f64,
+    /// the horizontal distance from x_r to the grain edge, L [m]
+    pub horizontal: f64,
+    /// H/L: the tangent of the travel angle (Heim's ratio, the "Fahrböschung")
+    pub heim_ratio: f64,
 }
 
 /// One column of the deposit profile.
@@ -131,9 +154,28 @@ pub fn read_deposit(
             runout_grain: distal_edge_grain - release_edge_x,
             max_thickness,
             max_thickness_x,
+            on_the_run_out: run_out(case, distal_edge_grain)?,
         },
         profile,
     ))
+}
+
+/// The deposit's place on a bent floor (`RunOut`), `None` on a plane floor.
+fn run_out(case: &Case, grain_edge: f64) -> Result<Option<RunOut>, String> {
+    let Some(floor) = case.bent_floor().map_err(|e| e.to_string())? else {
+        return Ok(None);
+    };
+    let rear = release_rear(case).unwrap_or(0.0);
+    let drop = floor.floor_elevation(rear) - floor.floor_elevation(grain_edge);
+    let horizontal = floor.floor_horizontal(grain_edge) - floor.floor_horizontal(rear);
+    Ok(Some(RunOut {
+        foot_x: floor.end(),
+        grain_edge_past_foot: grain_edge - floor.end(),
+        release_rear_x: rear,
+        drop,
+        horizontal,
+        heim_ratio: drop / horizontal,
+    }))
 }
 
 /// The profile as CSV text: `x,thickness_dense,thickness_dilute,solids_height` (m).
@@ -227,6 +269,16 @@ fn gravity_magnitude(case: &Case) -> f64 {
     }
 }
 
+/// The smallest x0 of the initial blocks that hold solids.
+fn release_rear(case: &Case) -> Option<f64> {
+    case.initial
+        .regions
+        .iter()
+        .filter(|b| b.solids.iter().any(|s| s.eps_s > 0.0))
+        .map(|b| b.x.0)
+        .reduce(f64::min)
+}
+
 /// The largest x1 of the initial blocks that hold solids.
 fn release_edge(case: &Case) -> Option<f64> {
     case.initial
@@ -240,6 +292,32 @@ fn release_edge(case: &Case) -> Option<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// On the family-FS slide (40° onto a flat run-out, arc 12 m to 12 + 2 · 40° m): a grain
+    /// edge still on the slope travels at the slope's own angle (H/L = tan 40°); at the
+    /// foot's end it is 0 m past the foot; far out on the flat H is the slope's and the arc's
+    /// drop, (12 − 5) sin 40° + 2 (1 − cos 40°), and H/L falls.
+    #[test]
+    fn a_deposit_on_a_bent_floor_has_its_travel_angle() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+        let case = runout_case::load_case(&root.join("cases/foot/mu-i/base.ron")).unwrap();
+        let a = 40f64.to_radians();
+        let on_slope = run_out(&case, 10.0).unwrap().unwrap();
+        assert_eq!(on_slope.release_rear_x, 5.0);
+        assert!((on_slope.heim_ratio - a.tan()).abs() < 1e-12);
+        assert!((on_slope.drop - 5.0 * a.sin()).abs() < 1e-12);
+        let foot = 12.0 + 2.0 * a;
+        let at_foot = run_out(&case, foot).unwrap().unwrap();
+        assert!(at_foot.grain_edge_past_foot.abs() < 1e-12);
+        let far = run_out(&case, 30.0).unwrap().unwrap();
+        let drop = 7.0 * a.sin() + 2.0 * (1.0 - a.cos());
+        assert!((far.drop - drop).abs() < 1e-12);
+        let horizontal = 7.0 * a.cos() + 2.0 * a.sin() + (30.0 - foot);
+        assert!((far.horizontal - horizontal).abs() < 1e-12);
+        assert!(far.heim_ratio < at_foot.heim_ratio && at_foot.heim_ratio < a.tan());
+        let plane = runout_case::load_case(&root.join("cases/sensitivity/base.ron")).unwrap();
+        assert_eq!(run_out(&plane, 10.0).unwrap(), None);
+    }
 
     /// The rest time is the first sample of the final still stretch; a front that moves or a
     /// speed above v_rest at the end means no rest.

@@ -2,7 +2,7 @@
 //! for a case with solids, with their initial state and boundary conditions.
 
 use runout_case::{
-    Bed, Block, Boundary, Case, Convection, Fill, GasWall, Gravity, InitialPressure, KineticTheory,
+    Block, Boundary, Case, Convection, Fill, GasWall, Gravity, InitialPressure, KineticTheory,
     OutletPressure,
 };
 use runout_closures::{ClosureParams, FrictionParams, Gas, Particles};
@@ -79,23 +79,10 @@ fn initial_gas_pressure(
 /// The bent floor of a case with `bed: Bend(..)` (docs/model.md §9), acting under its final
 /// (tilted) gravity; `None` on a plane floor.
 pub(super) fn bent_floor(case: &Case) -> Result<Option<BentFloor>, RunError> {
-    let Bed::Bend {
-        at,
-        radius,
-        slope_after,
-    } = case.bed
-    else {
-        return Ok(None);
-    };
-    let magnitude = match case.gravity {
-        Gravity::Constant { magnitude, .. } | Gravity::TiltOnImpact { magnitude, .. } => magnitude,
-    };
-    BentFloor::new(magnitude, case.gravity.slope(), slope_after, at, radius)
-        .map(Some)
-        .map_err(|e| RunError::Unsupported {
-            case: case.name.clone(),
-            reason: e.to_string(),
-        })
+    case.bent_floor().map_err(|e| RunError::Unsupported {
+        case: case.name.clone(),
+        reason: e.to_string(),
+    })
 }
 
 /// Gravity (g_x, g_y) [m s⁻²].

@@ -18,7 +18,8 @@
 // than zipped iterators there.
 #![allow(clippy::needless_range_loop)]
 
-pub mod bent_floor;
+/// The floor of a slope whose foot turns (docs/model.md §9), from runout-mesh.
+pub use runout_mesh::bent_floor;
 pub mod energy;
 pub mod kinematics;
 pub mod momentum;

@@ -148,6 +148,23 @@ impl BentFloor {
         }
     }
 
+    /// The horizontal distance of floor point x from x = 0, ∫₀ˣ cos α dx' [m]: x cos α₀
+    /// before the arc, + R (sin α₀ − sin α(x)) on it, + (x − x_e) cos α₁ beyond.
+    pub fn floor_horizontal(&self, x: f64) -> f64 {
+        let before = |x: f64| x * self.slope.cos();
+        if x <= self.start {
+            return before(x);
+        }
+        let on_arc =
+            |x: f64| before(self.start) + self.radius * (self.slope.sin() - self.angle(x).sin());
+        let end = self.end();
+        if x < end {
+            on_arc(x)
+        } else {
+            on_arc(end) + (x - end) * self.slope_after.cos()
+        }
+    }
+
     /// The potential Φ = g (z_b(x) + y cos α(x)) [m² s⁻²] whose gradient gravity is.
     pub fn potential(&self, x: f64, y: f64) -> f64 {
         self.gravity * (self.floor_elevation(x) + y * self.angle(x).cos())
@@ -237,6 +254,22 @@ mod tests {
         assert_eq!(f.curvature(11.0), 0.5);
         assert_eq!(f.centrifugal(11.0, 4.0), -8.0);
         assert_eq!(f.centrifugal(9.0, 4.0), 0.0);
+    }
+
+    /// The horizontal distance is ∫ cos α dx (the midpoint quadrature as for the elevation).
+    #[test]
+    fn horizontal_distance_is_the_integral_of_the_cosine() {
+        let f = foot();
+        let n = 200_000;
+        let h = 20.0 / n as f64;
+        let mut run = 0.0;
+        for k in 0..n {
+            run += f.angle((k as f64 + 0.5) * h).cos() * h;
+            let xk = (k + 1) as f64 * h;
+            if (k + 1) % 10_000 == 0 {
+                assert!((run - f.floor_horizontal(xk)).abs() < 1e-9, "x = {xk}");
+            }
+        }
     }
 
     /// The floor's elevation is the true geometry's: the arc's chord from x_b to x_e drops by
