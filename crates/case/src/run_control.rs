@@ -29,7 +29,8 @@ pub struct RunControl {
 /// When a run counts its solids as at rest and ends (`run.stop_at_rest`): the εs-weighted
 /// mean u_s has stayed at or below `speed` and the front (the furthest floor cell with εs ≥
 /// `front_threshold`, as the bulk monitor's) has not moved, for `duration` of simulated
-/// time. Counted from the start or the restart of a run (not kept in checkpoints).
+/// time. Counted from the start or the restart of a run (not kept in checkpoints), and with a
+/// tilt-on-impact gravity only once gravity has tilted (a falling block is not at rest).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct StopAtRest {

@@ -53,6 +53,11 @@ pub(super) trait CaseSolver {
     fn bulk(&self, _threshold: f64) -> Option<(f64, f64)> {
         None
     }
+    /// Whether a gravity schedule has yet to act (a tilt on impact still pending): the solids
+    /// cannot count as at rest before it (`run.stop_at_rest`).
+    fn gravity_pending(&self) -> bool {
+        false
+    }
     /// The front interpolated within its cell, for the front tracker; `None` without solids.
     fn interpolated_front(&self, _threshold: f64) -> Option<f64> {
         None
@@ -530,6 +535,10 @@ impl CaseSolver for TwoFluidCase {
                 }
             });
         Some(front)
+    }
+
+    fn gravity_pending(&self) -> bool {
+        self.tilt.is_some()
     }
 
     fn bulk(&self, threshold: f64) -> Option<(f64, f64)> {

@@ -560,7 +560,11 @@ fn time_loop(
             return Ok(Some(e));
         }
         if let (Some(rule), Some(watch)) = (&run.stop_at_rest, rest.as_mut()) {
-            if watch.at_rest_after(solver.bulk(rule.front_threshold), standing.time, rule) {
+            // a block still falling before its tilt is not at rest (its u_s is ~0)
+            let bulk = (!solver.gravity_pending())
+                .then(|| solver.bulk(rule.front_threshold))
+                .flatten();
+            if watch.at_rest_after(bulk, standing.time, rule) {
                 break;
             }
         }

@@ -191,3 +191,25 @@ fn a_run_at_rest_ends_itself() {
     assert!(summary.simulated_time < 0.45, "{}", summary.simulated_time);
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A block falling before its tilt on impact (the family-FS slide at smoke size: free fall
+/// until 0.286 s) has no u_s and no front, but is not at rest: with a rest rule that a still
+/// 0.05 s would satisfy, the run goes past the tilt (it stopped at 0.2 s before the rule
+/// waited for the tilt).
+#[test]
+fn a_falling_block_is_not_at_rest() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let mut case = runout_case::load_case(&root.join("cases/foot/mu-i/base.ron")).unwrap();
+    case.fidelity.smoke.end_time = 0.35;
+    case.run.stop_at_rest = Some(runout_case::StopAtRest {
+        speed: 0.014,
+        duration: 0.05,
+        front_threshold: 0.01,
+    });
+    let dir = std::env::temp_dir().join(format!("runout-fall-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let summary = crate::run_case(&case, Fidelity::Smoke, &dir, |_| {}).unwrap();
+    assert_eq!(summary.status, RunStatus::Completed);
+    assert!(summary.simulated_time > 0.3, "{}", summary.simulated_time);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
