@@ -161,3 +161,64 @@ fn bad_bends_are_refused_with_the_field() {
     assert_eq!(fields(bend(25.0, 2.0, 0.0)), ["bed.Bend.at"]);
     assert_eq!(fields(bend(12.0, -1.0, 0.0)), ["bed.Bend.radius"]);
 }
+
+/// The mean u_s of each `bulk.csv` row and the last front of a run folder.
+fn speeds_and_front(dir: &Path) -> (Vec<f64>, f64) {
+    let text = std::fs::read_to_string(dir.join("bulk.csv")).unwrap();
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|v| v.parse().unwrap()).collect())
+        .collect();
+    // t, solids_mass, front_x, mean_u_s, front_x_interpolated
+    let speeds = rows.iter().map(|r| r[3]).collect();
+    (speeds, rows.last().unwrap()[2])
+}
+
+/// A μ(I) block sliding at 6 m/s from x = 10 m on the 40° slope of the family-FS slide (smoke
+/// size, 1.2 s): with the foot it passes onto the flat run-out and slows there (its last
+/// mean speed well below its largest), while on the plane slope it keeps its speed. A
+/// smoke test of the whole chain (case, solver, bulk monitor), not a measurement.
+#[test]
+fn a_block_slides_through_the_foot_and_slows_on_the_run_out() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let run = |bed: Bed, tag: &str| {
+        let mut case = load_case(&root.join("cases/foot/mu-i/base.ron")).unwrap();
+        case.gravity = Gravity::Constant {
+            magnitude: 9.80665,
+            slope: 40.0,
+        };
+        case.bed = bed;
+        let block = &mut case.initial.regions[0];
+        block.x = (10.0, 10.5);
+        block.y = (0.0, 0.1);
+        block.solids[0].velocity = (6.0, 0.0);
+        case.run.stop_at_rest = None;
+        case.fidelity.smoke.end_time = 1.2;
+        runout_case::validate_case(&case).unwrap();
+        let dir = std::env::temp_dir().join(format!("runout-foot-{tag}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        let summary = runout_run::run_case(&case, Fidelity::Smoke, &dir, |_| {}).unwrap();
+        assert_eq!(summary.status, runout_output::RunStatus::Completed, "{tag}");
+        assert!(summary.solids_mass_change.abs() < 1e-9, "{tag}");
+        let out = speeds_and_front(&dir);
+        std::fs::remove_dir_all(&dir).unwrap();
+        out
+    };
+    let foot = 12.0 + 2.0 * 40f64.to_radians();
+    let (speeds, front) = run(BEND, "bend");
+    let largest = speeds.iter().fold(0.0, |m: f64, &v| m.max(v));
+    let last = *speeds.last().unwrap();
+    assert!(front > foot + 1.0, "front {front} m, foot {foot} m");
+    assert!(
+        last < 0.8 * largest,
+        "last {last} m/s, largest {largest} m/s"
+    );
+    let (plane, _) = run(Bed::Plane, "plane");
+    let plane_last = *plane.last().unwrap();
+    eprintln!("bend: front {front} m, mean u_s largest {largest}, last {last}; plane last {plane_last} m/s");
+    assert!(
+        plane_last > 1.2 * last,
+        "plane {plane_last} m/s, bend {last} m/s"
+    );
+}
