@@ -254,8 +254,9 @@ enum Task {
         skip_variants: bool,
     },
     /// Figures and tables: `cargo xtask report [results]` (the runs beside the paper, into
-    /// docs/results.md and docs/results/) or `cargo xtask report analytic` (paper Fig. 1 into
-    /// docs/analytic/).
+    /// docs/results.md and docs/results/), `cargo xtask report analytic` (paper Fig. 1 into
+    /// docs/analytic/), `release` (docs/reports/release.md) or `foot` (the slide onto a flat
+    /// run-out, docs/reports/foot.md).
     Report {
         /// what to report: results (default), analytic or release (the release study,
         /// docs/reports/release.md)
@@ -567,7 +568,8 @@ fn report_task(what: &str, fidelity: Option<&str>) -> Result<()> {
         "analytic" => analytic::report(&root()),
         "results" => report::report(&root(), fidelity),
         "release" => report::release::report(&root(), fidelity),
-        other => bail!("unknown report `{other}` (known: results, analytic, release)"),
+        "foot" => report::foot::report(&root(), fidelity),
+        other => bail!("unknown report `{other}` (known: results, analytic, release, foot)"),
     }
 }
 

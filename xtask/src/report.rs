@@ -20,6 +20,7 @@ mod explain;
 mod fields;
 mod figure_sets;
 mod findings;
+pub mod foot;
 pub mod ledger;
 pub(crate) mod paper;
 /// The SVG panels, drawn by the study engine's plots.

@@ -107,6 +107,11 @@ impl BentFloor {
         })
     }
 
+    /// Where the arc starts, x_b [m].
+    pub fn start(&self) -> f64 {
+        self.start
+    }
+
     /// Where the arc ends, x_e = x_b + R (α₀ − α₁) [m].
     pub fn end(&self) -> f64 {
         self.start + self.radius * (self.slope - self.slope_after)
