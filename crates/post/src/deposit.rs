@@ -91,6 +91,14 @@ pub struct RunOut {
     pub horizontal: f64,
     /// H/L: the tangent of the travel angle (Heim's ratio, the "Fahrböschung")
     pub heim_ratio: f64,
+    /// the released solids' centre along the floor (the blocks' area-weighted centre) [m]
+    pub release_centre_x: f64,
+    /// the deposit's centre along the floor (solids-height-weighted) [m]
+    pub deposit_centre_x: f64,
+    /// the floor's drop over its horizontal distance between the two centres: the slope of
+    /// the centre of mass's energy line, the effective friction coefficient of a block
+    /// sliding from rest the same way (Legros 2002, Eng. Geol. 63, 301)
+    pub centre_ratio: f64,
 }
 
 /// One column of the deposit profile.
@@ -154,20 +162,29 @@ pub fn read_deposit(
             runout_grain: distal_edge_grain - release_edge_x,
             max_thickness,
             max_thickness_x,
-            on_the_run_out: run_out(case, distal_edge_grain)?,
+            on_the_run_out: run_out(case, distal_edge_grain, centre_x(&profile, &xf))?,
         },
         profile,
     ))
 }
 
-/// The deposit's place on a bent floor (`RunOut`), `None` on a plane floor.
-fn run_out(case: &Case, grain_edge: f64) -> Result<Option<RunOut>, String> {
+/// The deposit's place on a bent floor (`RunOut`), `None` on a plane floor; `deposit_centre`
+/// is the deposit's solids-height-weighted x.
+fn run_out(case: &Case, grain_edge: f64, deposit_centre: f64) -> Result<Option<RunOut>, String> {
     let Some(floor) = case.bent_floor().map_err(|e| e.to_string())? else {
         return Ok(None);
     };
+    // the floor's drop and horizontal distance from a to b
+    let path = |a: f64, b: f64| {
+        (
+            floor.floor_elevation(a) - floor.floor_elevation(b),
+            floor.floor_horizontal(b) - floor.floor_horizontal(a),
+        )
+    };
     let rear = release_rear(case).unwrap_or(0.0);
-    let drop = floor.floor_elevation(rear) - floor.floor_elevation(grain_edge);
-    let horizontal = floor.floor_horizontal(grain_edge) - floor.floor_horizontal(rear);
+    let (drop, horizontal) = path(rear, grain_edge);
+    let release_centre = release_centre(case).unwrap_or(rear);
+    let (drop_centre, horizontal_centre) = path(release_centre, deposit_centre);
     Ok(Some(RunOut {
         foot_x: floor.end(),
         grain_edge_past_foot: grain_edge - floor.end(),
@@ -175,7 +192,36 @@ fn run_out(case: &Case, grain_edge: f64) -> Result<Option<RunOut>, String> {
         drop,
         horizontal,
         heim_ratio: drop / horizontal,
+        release_centre_x: release_centre,
+        deposit_centre_x: deposit_centre,
+        centre_ratio: drop_centre / horizontal_centre,
     }))
+}
+
+/// The solids-height-weighted x of a deposit profile (columns of widths from `xf`).
+fn centre_x(profile: &[DepositColumn], xf: &[f64]) -> f64 {
+    let (moment, volume) = profile
+        .iter()
+        .zip(xf.windows(2))
+        .fold((0.0, 0.0), |(m, v), (c, w)| {
+            let a = c.solids_height * (w[1] - w[0]);
+            (m + c.x * a, v + a)
+        });
+    moment / volume
+}
+
+/// The area-weighted centre x of the initial blocks that hold solids.
+fn release_centre(case: &Case) -> Option<f64> {
+    let (moment, area) = case
+        .initial
+        .regions
+        .iter()
+        .filter(|b| b.solids.iter().any(|s| s.eps_s > 0.0))
+        .fold((0.0, 0.0), |(m, a), b| {
+            let area = (b.x.1 - b.x.0) * (b.y.1 - b.y.0);
+            (m + 0.5 * (b.x.0 + b.x.1) * area, a + area)
+        });
+    (area > 0.0).then(|| moment / area)
 }
 
 /// The profile as CSV text: `x,thickness_dense,thickness_dilute,solids_height` (m).
@@ -302,21 +348,24 @@ mod tests {
         let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
         let case = runout_case::load_case(&root.join("cases/foot/mu-i/base.ron")).unwrap();
         let a = 40f64.to_radians();
-        let on_slope = run_out(&case, 10.0).unwrap().unwrap();
+        let on_slope = run_out(&case, 10.0, 10.0).unwrap().unwrap();
         assert_eq!(on_slope.release_rear_x, 5.0);
         assert!((on_slope.heim_ratio - a.tan()).abs() < 1e-12);
         assert!((on_slope.drop - 5.0 * a.sin()).abs() < 1e-12);
+        // the centres: the block's 5.25 m; on the straight slope, its slope's tangent too
+        assert_eq!(on_slope.release_centre_x, 5.25);
+        assert!((on_slope.centre_ratio - a.tan()).abs() < 1e-12);
         let foot = 12.0 + 2.0 * a;
-        let at_foot = run_out(&case, foot).unwrap().unwrap();
+        let at_foot = run_out(&case, foot, foot).unwrap().unwrap();
         assert!(at_foot.grain_edge_past_foot.abs() < 1e-12);
-        let far = run_out(&case, 30.0).unwrap().unwrap();
+        let far = run_out(&case, 30.0, 20.0).unwrap().unwrap();
         let drop = 7.0 * a.sin() + 2.0 * (1.0 - a.cos());
         assert!((far.drop - drop).abs() < 1e-12);
         let horizontal = 7.0 * a.cos() + 2.0 * a.sin() + (30.0 - foot);
         assert!((far.horizontal - horizontal).abs() < 1e-12);
         assert!(far.heim_ratio < at_foot.heim_ratio && at_foot.heim_ratio < a.tan());
         let plane = runout_case::load_case(&root.join("cases/sensitivity/base.ron")).unwrap();
-        assert_eq!(run_out(&plane, 10.0).unwrap(), None);
+        assert_eq!(run_out(&plane, 10.0, 10.0).unwrap(), None);
     }
 
     /// The rest time is the first sample of the final still stretch; a front that moves or a

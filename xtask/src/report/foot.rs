@@ -51,7 +51,8 @@ pub fn report(root: &Path, fidelity: Option<Fidelity>) -> Result<()> {
          `runout sweep cases/foot --fidelity F --out runs/foot`; the study and what it shows: \
          [docs/foot.md](../foot.md). Distances are along the floor (x); the foot's arc ends at \
          x_e; H/L is the floor's drop over its horizontal distance from the release's rear \
-         edge to the grain edge (docs/deposit.md). \"Ended at rest\": the run stopped itself \
+         edge to the grain edge, the centres' H/L the same between the release's and the deposit's \
+         centres (the centre of mass's energy line, docs/deposit.md). \"Ended at rest\": the run stopped itself \
          (`run.stop_at_rest`: εs-weighted mean u_s ≤ 0.014 m/s with a still front for 0.2 s); \
          \"at rest from\": `runout post`'s rest time (mean u_s ≤ 1 % of √(g H∞) from then on).\n",
     );
@@ -136,8 +137,8 @@ fn write_table(page: &mut String, fidelity: Fidelity, runs: &[FootRun]) {
     let _ = writeln!(
         page,
         "\n## {} ({nx} × {ny} cells)\n\n\
-         | floor | friction | ended at rest | at rest from [s] | grain edge x [m] | past the foot [m] | H/L | H∞ [m] | mean u_s at the end [m/s] | steps | outer it. | wall [s] |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|---|",
+         | floor | friction | ended at rest | at rest from [s] | grain edge x [m] | past the foot [m] | H/L | centres' H/L | H∞ [m] | mean u_s at the end [m/s] | steps | outer it. | wall [s] |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|",
         fidelity.name()
     );
     for run in runs {
@@ -152,15 +153,18 @@ fn write_table(page: &mut String, fidelity: Fidelity, runs: &[FootRun]) {
             other => format!("{other:?}"),
         };
         let from = d.rest_time.map_or("—".into(), |t| format!("{t:.2}"));
-        let (past, heim) = d.on_the_run_out.map_or(("—".into(), "—".into()), |r| {
-            (
-                format!("{:.2}", r.grain_edge_past_foot),
-                format!("{:.3}", r.heim_ratio),
-            )
-        });
+        let (past, heim, centres) =
+            d.on_the_run_out
+                .map_or(("—".into(), "—".into(), "—".into()), |r| {
+                    (
+                        format!("{:.2}", r.grain_edge_past_foot),
+                        format!("{:.3}", r.heim_ratio),
+                        format!("{:.3}", r.centre_ratio),
+                    )
+                });
         let _ = writeln!(
             page,
-            "| {} | {} | {ended} | {from} | {:.2} | {past} | {heim} | {:.3} | {:.3} | {} | {} | {:.0} |",
+            "| {} | {} | {ended} | {from} | {:.2} | {past} | {heim} | {centres} | {:.3} | {:.3} | {} | {} | {:.0} |",
             floor_name(run),
             run.friction,
             d.distal_edge_grain,
