@@ -532,10 +532,10 @@ fn u_sources(ctx: &Context<'_>, phase: &PhaseFields<'_>, u_old: &[f64], a: &mut 
     let (x0, x1) = (grid.x.start(), grid.x.end());
     let xc = grid.x.centres();
     for j in 0..ny {
-        let along_west = ((x0, y0), (x0, yc[j]), yc[j] - y0, ctx.gravity.1);
-        let p_west = outlet_pressure(ctx, &ctx.bcs.west, along_west).unwrap_or(0.0);
-        let along_east = ((x1, y0), (x1, yc[j]), yc[j] - y0, ctx.gravity.1);
-        let p_east = outlet_pressure(ctx, &ctx.bcs.east, along_east).unwrap_or(0.0);
+        let west_point = OutletPoint::on_side((x0, y0), (x0, yc[j]), ctx.gravity.1);
+        let p_west = outlet_pressure(ctx, &ctx.bcs.west, west_point).unwrap_or(0.0);
+        let east_point = OutletPoint::on_side((x1, y0), (x1, yc[j]), ctx.gravity.1);
+        let p_east = outlet_pressure(ctx, &ctx.bcs.east, east_point).unwrap_or(0.0);
         for i in 0..mx {
             let k = i + mx * j;
             if a.pattern().fixed_mask()[k] {
@@ -736,10 +736,10 @@ fn v_sources(ctx: &Context<'_>, phase: &PhaseFields<'_>, v_old: &[f64], a: &mut 
                 (Some(r), None) | (None, Some(r)) => phase.volume_fraction[i + nx * r],
                 (None, None) => 0.0,
             };
-            let along_south = ((x0, y0), (xc[i], y0), xc[i] - x0, ctx.gravity.0);
-            let p_south = outlet_pressure(ctx, &ctx.bcs.south, along_south).unwrap_or(0.0);
-            let along_north = ((x0, y1), (xc[i], y1), xc[i] - x0, ctx.gravity.0);
-            let p_north = outlet_pressure(ctx, &ctx.bcs.north, along_north).unwrap_or(0.0);
+            let south_point = OutletPoint::on_side((x0, y0), (xc[i], y0), ctx.gravity.0);
+            let p_south = outlet_pressure(ctx, &ctx.bcs.south, south_point).unwrap_or(0.0);
+            let north_point = OutletPoint::on_side((x0, y1), (xc[i], y1), ctx.gravity.0);
+            let p_north = outlet_pressure(ctx, &ctx.bcs.north, north_point).unwrap_or(0.0);
             let p_s = south.map_or(p_south, |r| ctx.gas_pressure[i + nx * r]);
             let p_n = north.map_or(p_north, |r| ctx.gas_pressure[i + nx * r]);
             a.b[k] += eps_face * (p_s - p_n) * dx[i];
@@ -757,19 +757,38 @@ fn v_sources(ctx: &Context<'_>, phase: &PhaseFields<'_>, v_old: &[f64], a: &mut 
     }
 }
 
-/// A side's outlet pressure at a point: `along` = (the side's first corner, the point, the
-/// distance between them, uniform gravity's component along the side). Under a bent floor
-/// the hydrostatic pressure follows its potential, p0 + ρ (Φ(corner) − Φ(point)); else
-/// p0 + ρ g_s s ([`SideBc`]).
-fn outlet_pressure(
-    ctx: &Context<'_>,
-    bc: &SideBc,
-    along: ((f64, f64), (f64, f64), f64, f64),
-) -> Option<f64> {
-    let (corner, point, s, g_along) = along;
+/// A point on a side of the domain, for its outlet's hydrostatic pressure.
+#[derive(Clone, Copy)]
+struct OutletPoint {
+    /// the side's first corner (south end of a west/east side, west end of a south/north one)
+    corner: (f64, f64),
+    /// the point
+    point: (f64, f64),
+    /// uniform gravity's component along the side [m s⁻²]
+    g_along: f64,
+}
+
+impl OutletPoint {
+    fn on_side(corner: (f64, f64), point: (f64, f64), g_along: f64) -> Self {
+        Self {
+            corner,
+            point,
+            g_along,
+        }
+    }
+
+    /// The distance from the corner along the side (one coordinate differs) [m].
+    fn distance(&self) -> f64 {
+        (self.point.0 - self.corner.0) + (self.point.1 - self.corner.1)
+    }
+}
+
+/// A side's outlet pressure at a point: under a bent floor the hydrostatic pressure follows
+/// its potential, p0 + ρ (Φ(corner) − Φ(point)); else p0 + ρ g_s s ([`SideBc`]).
+fn outlet_pressure(ctx: &Context<'_>, bc: &SideBc, at: OutletPoint) -> Option<f64> {
     match ctx.bent_floor {
-        None => bc.pressure(s, g_along),
-        Some(b) => bc.pressure_with_work(b.work(corner, point)),
+        None => bc.pressure(at.distance(), at.g_along),
+        Some(b) => bc.pressure_with_work(b.work(at.corner, at.point)),
     }
 }
 

@@ -12,7 +12,7 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use anyhow::{Context, Result};
+use anyhow::{bail, Context, Result};
 use runout_case::{load, Fidelity, Loaded, SourcedCase};
 use runout_output::{RunStatus, RunSummary};
 use runout_post::deposit::{read_deposit, Deposit, DepositColumn, DEFAULT_REST_FRACTION};
@@ -53,9 +53,11 @@ pub fn report(root: &Path, fidelity: Option<Fidelity>) -> Result<()> {
          x_e; H/L is the floor's drop over its horizontal distance from the release's rear \
          edge to the grain edge, the centres' H/L the same between the release's and the deposit's \
          centres (the centre of mass's energy line, docs/deposit.md). \"Ended at rest\": the run stopped itself \
-         (`run.stop_at_rest`: εs-weighted mean u_s ≤ 0.014 m/s with a still front for 0.2 s); \
-         \"at rest from\": `runout post`'s rest time (mean u_s ≤ 1 % of √(g H∞) from then on).\n",
+         (`run.stop_at_rest`: εs-weighted mean u_s ≤ 0.014 m/s with a still front for 0.2 s), \
+         at t from the release (the impact is at 0.286 s); otherwise it ran to its end time, \
+         8 s after the impact.\n",
     );
+    let mut written = 0;
     for fidelity in fidelities {
         let runs: Vec<FootRun> = cases
             .iter()
@@ -64,6 +66,7 @@ pub fn report(root: &Path, fidelity: Option<Fidelity>) -> Result<()> {
         if runs.is_empty() {
             continue;
         }
+        written += 1;
         write_table(&mut page, fidelity, &runs);
         let svg = format!("deposits_{}.svg", fidelity.name());
         draw_deposits(&figures.join(&svg), &runs)?;
@@ -73,6 +76,12 @@ pub fn report(root: &Path, fidelity: Option<Fidelity>) -> Result<()> {
              the end of each {f} run; dotted: the foot's arc.*",
             f = fidelity.name()
         )?;
+    }
+    if written == 0 {
+        bail!(
+            "no finished run of {CASES} under {RUNS}: run `runout sweep {CASES} --fidelity \
+             coarse --out runs/foot` first (the page is left as it is)"
+        );
     }
     let path = root.join("docs").join(PAGE);
     std::fs::write(&path, page).with_context(|| format!("writing {}", path.display()))?;
@@ -137,8 +146,8 @@ fn write_table(page: &mut String, fidelity: Fidelity, runs: &[FootRun]) {
     let _ = writeln!(
         page,
         "\n## {} ({nx} × {ny} cells)\n\n\
-         | floor | friction | ended at rest | at rest from [s] | grain edge x [m] | past the foot [m] | H/L | centres' H/L | H∞ [m] | mean u_s at the end [m/s] | steps | outer it. | wall [s] |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|---|---|",
+         | floor | friction | ended at rest (t from the release) | grain edge x [m] | past the foot [m] | H/L | centres' H/L | H∞ [m] | mean u_s at the end [m/s] | steps | outer it. | wall [s] |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|",
         fidelity.name()
     );
     for run in runs {
@@ -152,7 +161,6 @@ fn write_table(page: &mut String, fidelity: Fidelity, runs: &[FootRun]) {
             RunStatus::Completed => "no (end time)".into(),
             other => format!("{other:?}"),
         };
-        let from = d.rest_time.map_or("—".into(), |t| format!("{t:.2}"));
         let (past, heim, centres) =
             d.on_the_run_out
                 .map_or(("—".into(), "—".into(), "—".into()), |r| {
@@ -164,7 +172,7 @@ fn write_table(page: &mut String, fidelity: Fidelity, runs: &[FootRun]) {
                 });
         let _ = writeln!(
             page,
-            "| {} | {} | {ended} | {from} | {:.2} | {past} | {heim} | {centres} | {:.3} | {:.3} | {} | {} | {:.0} |",
+            "| {} | {} | {ended} | {:.2} | {past} | {heim} | {centres} | {:.3} | {:.3} | {} | {} | {:.0} |",
             floor_name(run),
             run.friction,
             d.distal_edge_grain,
