@@ -1,6 +1,7 @@
 //! `cargo xtask sweep`: the paper's case matrix, expanded from cases/ (except the stiff
-//! cases of cases/stability/, which `cargo xtask stability` runs, and the column collapse
-//! of cases/collapse/, which `cargo xtask verify collapse` runs), run in parallel by the
+//! cases of cases/stability/, which `cargo xtask stability` runs, the column collapse
+//! of cases/collapse/, which `cargo xtask verify collapse` runs, and the slide onto a flat
+//! run-out of cases/foot/, which `runout sweep cases/foot` runs), run in parallel by the
 //! study engine ([`runout_study::sweep`]) into the workspace's `runs/` and
 //! `results/summary.csv`; each run folder it finished records the checkout's `git describe`
 //! ([`crate::solver_stamp`]).
@@ -10,6 +11,7 @@ use std::path::Path;
 use anyhow::Result;
 
 use crate::collapse::COLLAPSE_DIR;
+use crate::report::foot::FOOT_DIR;
 use crate::stability::STABILITY_DIR;
 
 pub use runout_study::sweep::{
@@ -18,14 +20,13 @@ pub use runout_study::sweep::{
 
 /// The paper's matrix (cases.md families S, F, M and A): every case under `cases_dir` but
 /// the stiff cases of `cargo xtask stability`, the column collapse of `cargo xtask verify
-/// collapse` (issue 7's check, verification-notes §2f) and the sweeps of a study.
+/// collapse` (issue 7's check, verification-notes §2f), the slide onto a flat run-out
+/// (issue 43 item 5, docs/foot.md) and the sweeps of a study.
 pub fn paper_matrix(cases_dir: &Path) -> Result<Matrix> {
     let mut m = matrix(cases_dir)?;
-    let stability = cases_dir.join(STABILITY_DIR);
-    let collapse = cases_dir.join(COLLAPSE_DIR);
-    m.runs.retain(|r| {
-        r.study.is_none() && !r.file.starts_with(&stability) && !r.file.starts_with(&collapse)
-    });
+    let apart = [STABILITY_DIR, COLLAPSE_DIR, FOOT_DIR].map(|d| cases_dir.join(d));
+    m.runs
+        .retain(|r| r.study.is_none() && !apart.iter().any(|d| r.file.starts_with(d)));
     Ok(m)
 }
 

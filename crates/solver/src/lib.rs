@@ -24,6 +24,7 @@ pub mod energy;
 pub mod kinematics;
 pub mod momentum;
 pub mod pea;
+pub mod side;
 pub mod single_phase;
 pub mod staggered;
 pub mod state;

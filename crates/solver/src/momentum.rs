@@ -28,8 +28,8 @@ use runout_mesh::{Grid, Sides};
 use runout_walls::RobinFace;
 
 use crate::bent_floor::BentFloor;
-use crate::single_phase::SideBc;
-use crate::staggered::Component;
+use crate::side::{outlet_pressure, OutletPoint, SideBc};
+use crate::staggered::{mean_u_at_v_node, Component};
 use crate::transport::{assemble_masked, face_value, FaceData, Scheme};
 
 /// Cell-centred coefficient fields of one phase (index i + nx j).
@@ -533,9 +533,9 @@ fn u_sources(ctx: &Context<'_>, phase: &PhaseFields<'_>, u_old: &[f64], a: &mut 
     let xc = grid.x.centres();
     for j in 0..ny {
         let west_point = OutletPoint::on_side((x0, y0), (x0, yc[j]), ctx.gravity.1);
-        let p_west = outlet_pressure(ctx, &ctx.bcs.west, west_point).unwrap_or(0.0);
+        let p_west = outlet_pressure(ctx.bent_floor, &ctx.bcs.west, west_point).unwrap_or(0.0);
         let east_point = OutletPoint::on_side((x1, y0), (x1, yc[j]), ctx.gravity.1);
-        let p_east = outlet_pressure(ctx, &ctx.bcs.east, east_point).unwrap_or(0.0);
+        let p_east = outlet_pressure(ctx.bent_floor, &ctx.bcs.east, east_point).unwrap_or(0.0);
         for i in 0..mx {
             let k = i + mx * j;
             if a.pattern().fixed_mask()[k] {
@@ -737,9 +737,11 @@ fn v_sources(ctx: &Context<'_>, phase: &PhaseFields<'_>, v_old: &[f64], a: &mut 
                 (None, None) => 0.0,
             };
             let south_point = OutletPoint::on_side((x0, y0), (xc[i], y0), ctx.gravity.0);
-            let p_south = outlet_pressure(ctx, &ctx.bcs.south, south_point).unwrap_or(0.0);
+            let p_south =
+                outlet_pressure(ctx.bent_floor, &ctx.bcs.south, south_point).unwrap_or(0.0);
             let north_point = OutletPoint::on_side((x0, y1), (xc[i], y1), ctx.gravity.0);
-            let p_north = outlet_pressure(ctx, &ctx.bcs.north, north_point).unwrap_or(0.0);
+            let p_north =
+                outlet_pressure(ctx.bent_floor, &ctx.bcs.north, north_point).unwrap_or(0.0);
             let p_s = south.map_or(p_south, |r| ctx.gas_pressure[i + nx * r]);
             let p_n = north.map_or(p_north, |r| ctx.gas_pressure[i + nx * r]);
             a.b[k] += eps_face * (p_s - p_n) * dx[i];
@@ -754,62 +756,6 @@ fn v_sources(ctx: &Context<'_>, phase: &PhaseFields<'_>, v_old: &[f64], a: &mut 
                 a.b[k] += tau[k];
             }
         }
-    }
-}
-
-/// A point on a side of the domain, for its outlet's hydrostatic pressure.
-#[derive(Clone, Copy)]
-struct OutletPoint {
-    /// the side's first corner (south end of a west/east side, west end of a south/north one)
-    corner: (f64, f64),
-    /// the point
-    point: (f64, f64),
-    /// uniform gravity's component along the side [m s⁻²]
-    g_along: f64,
-}
-
-impl OutletPoint {
-    fn on_side(corner: (f64, f64), point: (f64, f64), g_along: f64) -> Self {
-        Self {
-            corner,
-            point,
-            g_along,
-        }
-    }
-
-    /// The distance from the corner along the side (one coordinate differs) [m].
-    fn distance(&self) -> f64 {
-        (self.point.0 - self.corner.0) + (self.point.1 - self.corner.1)
-    }
-}
-
-/// A side's outlet pressure at a point: under a bent floor the hydrostatic pressure follows
-/// its potential, p0 + ρ (Φ(corner) − Φ(point)); else p0 + ρ g_s s ([`SideBc`]).
-fn outlet_pressure(ctx: &Context<'_>, bc: &SideBc, at: OutletPoint) -> Option<f64> {
-    match ctx.bent_floor {
-        None => bc.pressure(at.distance(), at.g_along),
-        Some(b) => bc.pressure_with_work(b.work(at.corner, at.point)),
-    }
-}
-
-/// The mean of the phase's u at the (up to) four u nodes around v node (i, j) between rows
-/// `south` and `north` (the centrifugal force's u², docs/model.md §9).
-fn mean_u_at_v_node(
-    u: &[f64],
-    nx: usize,
-    i: usize,
-    south: Option<usize>,
-    north: Option<usize>,
-) -> f64 {
-    let rows = [south, north];
-    let (sum, n) = rows.iter().flatten().fold((0.0, 0.0), |(s, n), &r| {
-        let k = i + (nx + 1) * r;
-        (s + 0.5 * (u[k] + u[k + 1]), n + 1.0)
-    });
-    if n > 0.0 {
-        sum / n
-    } else {
-        0.0
     }
 }
 

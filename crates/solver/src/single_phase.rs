@@ -7,65 +7,18 @@
 //! continuity (§4.6 with one phase), velocity and pressure correction, residuals (§4.11).
 //!
 //! Walls impose zero normal velocity and, for the tangential component, the eliminated
-//! Robin closure of docs/model.md §3.2 ([`RobinFace`]) with the distance from the fluid
+//! Robin closure of docs/model.md §3.2 ([`runout_walls::RobinFace`]) with the distance from the fluid
 //! centre to its ghost (the first cell's width, §3.1). An outlet holds the pressure on its
 //! face and has zero normal gradient of both velocity components.
 
 use runout_closures::FaceMean;
 use runout_linsolve::{build, LinSolveError, LinearSolver, LinearSolverKind, Pattern, Stencil5};
 use runout_mesh::{Grid, Sides};
-use runout_walls::RobinFace;
 
 use crate::momentum::{assemble, fixed_row, neighbour_sum, Context, PhaseFields};
+pub use crate::side::SideBc;
 use crate::staggered::Component;
 use crate::transport::{FaceData, Scheme};
-
-/// Condition on one side of the domain.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum SideBc {
-    /// Impermeable wall; the closure of the tangential velocity component.
-    Wall(RobinFace),
-    /// Pressure outlet (or inlet) holding this pressure on the boundary face [Pa].
-    Outlet(f64),
-    /// Pressure outlet holding the fluid's hydrostatic pressure along it,
-    /// p(s) = p0 + ρ g_s s, with s the distance from the side's first corner (south end of
-    /// a west/east side, west end of a south/north side) and g_s the gravity component
-    /// along the side; it follows the gravity of the moment (cases.md "Top outlet under
-    /// tilted gravity").
-    HydrostaticOutlet {
-        /// pressure at the first corner [Pa]
-        p0: f64,
-        /// density of the column [kg m⁻³]
-        density: f64,
-    },
-}
-
-impl SideBc {
-    fn is_outlet(&self) -> bool {
-        !matches!(self, SideBc::Wall(_))
-    }
-
-    /// Pressure on the outlet at distance `s` from its first corner, with `g_along` the
-    /// gravity component along the side; `None` for a wall.
-    pub(crate) fn pressure(&self, s: f64, g_along: f64) -> Option<f64> {
-        match *self {
-            SideBc::Wall(_) => None,
-            SideBc::Outlet(p) => Some(p),
-            SideBc::HydrostaticOutlet { p0, density } => Some(p0 + density * g_along * s),
-        }
-    }
-
-    /// Pressure on the outlet where gravity has done `work` per unit mass since its first
-    /// corner (a bent floor's potential drop, [`crate::bent_floor::BentFloor::work`]);
-    /// `None` for a wall.
-    pub(crate) fn pressure_with_work(&self, work: f64) -> Option<f64> {
-        match *self {
-            SideBc::Wall(_) => None,
-            SideBc::Outlet(p) => Some(p),
-            SideBc::HydrostaticOutlet { p0, density } => Some(p0 + density * work),
-        }
-    }
-}
 
 /// Constant fluid properties.
 #[derive(Clone, Copy, Debug, PartialEq)]

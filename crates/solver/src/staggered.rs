@@ -162,6 +162,27 @@ impl Component {
     }
 }
 
+/// The mean of the phase's u at the (up to) four u nodes around v node (i, j) between rows
+/// `south` and `north` (the centrifugal force's u², docs/model.md §9).
+pub(crate) fn mean_u_at_v_node(
+    u: &[f64],
+    nx: usize,
+    i: usize,
+    south: Option<usize>,
+    north: Option<usize>,
+) -> f64 {
+    let rows = [south, north];
+    let (sum, n) = rows.iter().flatten().fold((0.0, 0.0), |(s, n), &r| {
+        let k = i + (nx + 1) * r;
+        (s + 0.5 * (u[k] + u[k + 1]), n + 1.0)
+    });
+    if n > 0.0 {
+        sum / n
+    } else {
+        0.0
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

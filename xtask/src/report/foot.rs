@@ -20,6 +20,8 @@ use runout_post::folder::read_summary;
 
 use super::plots::{draw, Mark, Panel, Series};
 
+/// The study's folder under cases/ (not part of the paper's matrix, `crate::sweep`).
+pub const FOOT_DIR: &str = "foot";
 /// The study's case files.
 const CASES: &str = "cases/foot";
 /// Where `runout sweep cases/foot --out runs/foot` puts the runs.
