@@ -364,6 +364,15 @@ mod tests {
         let horizontal = 7.0 * a.cos() + 2.0 * a.sin() + (30.0 - foot);
         assert!((far.horizontal - horizontal).abs() < 1e-12);
         assert!(far.heim_ratio < at_foot.heim_ratio && at_foot.heim_ratio < a.tan());
+        // the deposit's centre weighs each column's solids height by its width
+        let column = |x: f64, h: f64| DepositColumn {
+            x,
+            thickness_dense: h,
+            thickness_dilute: h,
+            solids_height: h,
+        };
+        let profile = [column(0.5, 1.0), column(2.0, 1.0)];
+        assert!((centre_x(&profile, &[0.0, 1.0, 3.0]) - (0.5 + 2.0 * 2.0) / 3.0).abs() < 1e-15);
         let plane = runout_case::load_case(&root.join("cases/sensitivity/base.ron")).unwrap();
         assert_eq!(run_out(&plane, 10.0, 10.0).unwrap(), None);
     }
