@@ -212,15 +212,10 @@ fn centre_x(profile: &[DepositColumn], xf: &[f64]) -> f64 {
 
 /// The area-weighted centre x of the initial blocks that hold solids.
 fn release_centre(case: &Case) -> Option<f64> {
-    let (moment, area) = case
-        .initial
-        .regions
-        .iter()
-        .filter(|b| b.solids.iter().any(|s| s.eps_s > 0.0))
-        .fold((0.0, 0.0), |(m, a), b| {
-            let area = (b.x.1 - b.x.0) * (b.y.1 - b.y.0);
-            (m + 0.5 * (b.x.0 + b.x.1) * area, a + area)
-        });
+    let (moment, area) = released_blocks(case).fold((0.0, 0.0), |(m, a), b| {
+        let area = (b.x.1 - b.x.0) * (b.y.1 - b.y.0);
+        (m + 0.5 * (b.x.0 + b.x.1) * area, a + area)
+    });
     (area > 0.0).then(|| moment / area)
 }
 
@@ -317,22 +312,20 @@ fn gravity_magnitude(case: &Case) -> f64 {
 
 /// The smallest x0 of the initial blocks that hold solids.
 fn release_rear(case: &Case) -> Option<f64> {
-    case.initial
-        .regions
-        .iter()
-        .filter(|b| b.solids.iter().any(|s| s.eps_s > 0.0))
-        .map(|b| b.x.0)
-        .reduce(f64::min)
+    released_blocks(case).map(|b| b.x.0).reduce(f64::min)
 }
 
 /// The largest x1 of the initial blocks that hold solids.
 fn release_edge(case: &Case) -> Option<f64> {
+    released_blocks(case).map(|b| b.x.1).reduce(f64::max)
+}
+
+/// The initial blocks that hold solids.
+fn released_blocks(case: &Case) -> impl Iterator<Item = &runout_case::Block> {
     case.initial
         .regions
         .iter()
         .filter(|b| b.solids.iter().any(|s| s.eps_s > 0.0))
-        .map(|b| b.x.1)
-        .reduce(f64::max)
 }
 
 #[cfg(test)]
