@@ -187,7 +187,7 @@ const BOUNDARY: &[Field] = &[
 /// The solids wall conditions (the paper's subject).
 #[rustfmt::skip]
 const SOLIDS_WALL: &[Field] = &[
-    f("SolidsWall", "NoSlip \\| FreeSlip \\| PartialSlip(..) \\| JohnsonJackson(..) \\| RevisitedJohnsonJackson(..) \\| Jenkins(..)", "", REQ, "", "NoSlip, FreeSlip: zero velocity or zero stress, zero granular-energy flux (model.md §3.2)"),
+    f("SolidsWall", "NoSlip \\| FreeSlip \\| PartialSlip(..) \\| JohnsonJackson(..) \\| RevisitedJohnsonJackson(..) \\| Jenkins(..) \\| Coulomb(..)", "", REQ, "", "NoSlip, FreeSlip: zero velocity or zero stress, zero granular-energy flux (model.md §3.2)"),
     f("SolidsWall.PartialSlip.h_u", "number", "1/m", REQ, "[0, inf)", "h_w^u of du/dn + h_u (u − u_w) = 0 (paper Eq. 12, model.md §3.3; MFIX `BC_HW_S`)"),
     f("SolidsWall.PartialSlip.u_w", "number", "m/s", "0", "", "wall velocity U_w (MFIX `BC_UW_S`)"),
     f("SolidsWall.PartialSlip.h_theta", "number", "1/m", REQ, "[0, inf)", "h_w^θ of dθ/dn + h_θ (θ − θ_w) = c (paper Eq. 13; MFIX `BC_HW_THETA_M`)"),
@@ -204,6 +204,8 @@ const SOLIDS_WALL: &[Field] = &[
     f("SolidsWall.Jenkins.wall_restitution", "number", "-", REQ, "[0, 1]", "Jenkins 1992 small-friction, all-sliding limit (paper Eq. 20, model.md §3.8): e_w"),
     f("SolidsWall.Jenkins.wall_friction_angle", "number", "deg", REQ, "[0, 90)", "δ_w"),
     f("SolidsWall.Jenkins.u_w", "number", "m/s", "0", "", "wall velocity"),
+    f("SolidsWall.Coulomb.friction", "number", "-", REQ, "[0, 10]", "Coulomb wall τ_w = μ_w P, regularised at zero slip, zero granular-energy flux (model.md §3.11; not in MFIX): μ_w = tan δ_w"),
+    f("SolidsWall.Coulomb.slip_floor", "number", "m/s", "1e-4", "(0, 1]", "slip regularisation u_min: a wall loaded to r < 1 of μ_w P creeps at u_min r/√(1 − r²)"),
 ];
 
 /// `domain.x`, `domain.y`.
@@ -284,6 +286,7 @@ pub const MODEL_SECTIONS: &[(&str, &str, &str)] = &[
     ("SolidsWall JohnsonJackson", "Johnson–Jackson momentum and energy (paper Eqs. 14, 18–19)", "§3.5–3.6"),
     ("SolidsWall RevisitedJohnsonJackson", "Li & Benyahia φ(r) (paper Eqs. 16–17)", "§3.7"),
     ("SolidsWall Jenkins", "Jenkins small-friction limit (paper Eq. 20)", "§3.8"),
+    ("SolidsWall Coulomb", "Coulomb wall τ_w = μ_w P (not in MFIX)", "§3.11"),
     ("sidewalls", "width-averaged side-wall friction", "§8"),
     ("bed: Bend(..)", "a slope whose foot turns (bed-following coordinates)", "§9"),
     ("numerics.relaxation", "under-relaxation", "§4.10"),

@@ -93,6 +93,20 @@ fn the_solids_condition_is_validated_as_the_floors() {
         &t,
         &["sidewalls.solids.u_w = 1", "0 (the side walls are at rest)"],
     );
+    // a Coulomb wall's friction and regularisation
+    let t = with_sidewalls(
+        "Some((width: 0.1, solids: Coulomb(friction: -0.2, slip_floor: 0.0), gas: NoSlip))",
+    );
+    rejected(
+        "coulomb.ron",
+        &t,
+        &[
+            "sidewalls.solids.friction = -0.2",
+            "[0, 10]",
+            "sidewalls.solids.slip_floor = 0",
+            "(0, 1] m/s",
+        ],
+    );
     // an unknown gas condition is a parse error naming the variants
     let t = with_sidewalls(&format!(
         "Some((width: 0.3, solids: {JENKINS}, gas: PartialSlip))"
@@ -111,6 +125,19 @@ fn good_side_walls_load_and_none_is_the_default() {
     };
     let walls = cases[0].case.sidewalls.as_ref().unwrap();
     assert_eq!(walls.width, 0.3);
+    let t = with_sidewalls("Some((width: 0.1, solids: Coulomb(friction: 0.4), gas: NoSlip))");
+    let (_, r) = load_text("coulomb-good.ron", &t);
+    let Loaded::Cases(cases) = r.unwrap() else {
+        panic!("not a case")
+    };
+    let walls = cases[0].case.sidewalls.as_ref().unwrap();
+    assert_eq!(
+        walls.solids,
+        SolidsWall::Coulomb {
+            friction: 0.4,
+            slip_floor: None
+        }
+    );
     let (_, r) = load_text("plain.ron", &shipped("mfix-slope/jj.ron"));
     let Loaded::Cases(cases) = r.unwrap() else {
         panic!("not a case")

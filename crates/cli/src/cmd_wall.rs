@@ -49,7 +49,8 @@ pub struct WallArgs {
     /// solids wall condition (paper §2.2, docs/model.md §3): no-slip, free-slip (zero theta
     /// flux), partial-slip (paper Eqs. 12-13: --h-u, --h-theta, --c-theta, --theta-w),
     /// johnson-jackson (constant --specularity), revisited-jj (Li & Benyahia's phi(r),
-    /// optional --phi0), jenkins (small-friction, all-sliding limit)
+    /// optional --phi0), jenkins (small-friction, all-sliding limit), coulomb (tau_w =
+    /// --coulomb-friction P, regularised by --slip-floor; not in MFIX)
     #[arg(long, value_parser = PossibleValuesParser::new(SolidsWall::KINDS))]
     pub model: String,
     /// specularity coefficient phi [-] (johnson-jackson; MFIX PHIP)
@@ -58,6 +59,13 @@ pub struct WallArgs {
     /// phi0 override for revisited-jj (MFIX PHIP0); computed from k when absent
     #[arg(long)]
     pub phi0: Option<f64>,
+    /// Coulomb wall friction coefficient mu_w = tan delta_w [-] (coulomb; the case file's
+    /// `friction`)
+    #[arg(long)]
+    pub coulomb_friction: Option<f64>,
+    /// Coulomb wall slip regularisation u_min [m/s] (coulomb; default 1e-4)
+    #[arg(long)]
+    pub slip_floor: Option<f64>,
     /// particle-wall restitution e_w [-]
     #[arg(long, default_value_t = 0.7)]
     pub wall_restitution: f64,
@@ -186,6 +194,8 @@ impl WallArgs {
             "h_theta" => self.h_theta,
             "theta_w" => Some(self.theta_w.unwrap_or(DEFAULT_THETA_W)),
             "c" => self.c_theta,
+            "friction" => self.coulomb_friction,
+            "slip_floor" => self.slip_floor,
             _ => None,
         }
     }
@@ -206,6 +216,7 @@ impl WallArgs {
 fn option_of(name: &str) -> String {
     match name {
         "c" => "--c-theta".into(),
+        "friction" => "--coulomb-friction".into(),
         other => format!("--{}", other.replace('_', "-")),
     }
 }

@@ -16,7 +16,8 @@
 //!   (COL + FRI)/(μ_k + μ_f) with the Princeton frictional add-on (docs/model.md §3.5), θ flux
 //!   form κ ∂θ/∂n + h_θ θ = c_θ (§3.6);
 //! - revisited JJ with Li & Benyahia's φ(r) in MFIX's continuous form ([`specularity`], §3.7);
-//! - Jenkins (1992), small-friction all-sliding limit (§3.8).
+//! - Jenkins (1992), small-friction all-sliding limit (§3.8);
+//! - a Coulomb wall τ_w = μ_w P regularised at zero slip ([`coulomb`], §3.11; not in MFIX).
 //!
 //! Where the paper's printed equations differ from MFIX the code follows MFIX (docs/model.md
 //! §3.10): Eq. 16's linear branch carries 1/(8k); Table 2's (1 − εs*) is εs,max; the JJ h_θ
@@ -49,6 +50,7 @@
 
 pub mod analytic;
 pub mod coefficients;
+pub mod coulomb;
 mod error;
 mod face;
 pub mod model;

@@ -15,6 +15,7 @@ use crate::coefficients::{
     c_theta_jenkins, c_theta_johnson_jackson, collisional_jenkins, collisional_johnson_jackson,
     frictional, h_theta_jenkins, h_theta_johnson_jackson,
 };
+use crate::coulomb::{coulomb_momentum, CoulombWall};
 use crate::error::{Checks, WallError};
 use crate::face::RobinFace;
 use crate::specularity::LiBenyahia;
@@ -150,6 +151,8 @@ pub enum SolidsWallModel {
         /// e_w, δ_w, U_w
         contact: WallContact,
     },
+    /// A Coulomb wall τ_w = μ_w P, regularised at zero slip (docs/model.md §3.11; not in MFIX)
+    Coulomb(CoulombWall),
 }
 
 impl SolidsWallModel {
@@ -220,6 +223,12 @@ impl SolidsWallModel {
         })
     }
 
+    /// A Coulomb wall of friction coefficient μ_w with slip regularisation u_min [m s⁻¹]
+    /// (docs/model.md §3.11).
+    pub fn coulomb(friction: f64, slip_floor: f64) -> Result<Self, WallError> {
+        CoulombWall::new(friction, slip_floor).map(Self::Coulomb)
+    }
+
     /// The (momentum, θ) face closures of a state-independent condition (no-slip,
     /// free-slip, user partial slip: the faces [`SolidsWallModel::momentum`] and
     /// [`SolidsWallModel::granular_temperature`] return at any state); `None` for the
@@ -232,7 +241,7 @@ impl SolidsWallModel {
                 RobinFace::partial_slip(user.h_u, user.u_w),
                 RobinFace::user_theta(user.h_theta, user.theta_w, user.c),
             )),
-            Self::JohnsonJackson { .. } | Self::Jenkins { .. } => None,
+            Self::JohnsonJackson { .. } | Self::Jenkins { .. } | Self::Coulomb(_) => None,
         }
     }
 
@@ -255,14 +264,16 @@ impl SolidsWallModel {
                 ..
             } => "Johnson–Jackson revisited (Li–Benyahia φ(r))".into(),
             Self::Jenkins { .. } => "Jenkins".into(),
+            Self::Coulomb(wall) => format!("Coulomb (μ_w = {})", wall.friction),
         }
     }
 
     /// K = τ_w/|u_sl| [Pa s m⁻¹] of this condition on the side walls of a channel of width
     /// `width`, with the solids profile flat across it (docs/model.md §8): free slip 0; user
     /// partial slip μ_s h_w^u; JJ, revisited JJ and Jenkins COL (+ FRI on the frictional
-    /// branch) at `state`; no slip, which a flat profile cannot meet, its parabolic limit
-    /// 6 μ_s/W. Jenkins' COL overflows as |u_sl| → 0: the caller bounds K.
+    /// branch) at `state`; Coulomb μ_w P/√(|u_sl|² + u_min²) at `state`; no slip, which a
+    /// flat profile cannot meet, its parabolic limit 6 μ_s/W. Jenkins' COL overflows as
+    /// |u_sl| → 0: the caller bounds K.
     pub fn side_wall_stress_per_slip(
         &self,
         state: &MomentumWallState,
@@ -274,10 +285,10 @@ impl SolidsWallModel {
             Self::FreeSlip => 0.0,
             Self::NoSlip => 6.0 * mu_s / width,
             Self::PartialSlip(user) => mu_s * user.h_u,
-            Self::JohnsonJackson { .. } | Self::Jenkins { .. } => {
+            Self::JohnsonJackson { .. } | Self::Jenkins { .. } | Self::Coulomb(_) => {
                 let d = self.momentum(state, params).diagnostics;
                 match d.branch {
-                    MomentumBranch::Kinetic => d.col,
+                    MomentumBranch::Kinetic | MomentumBranch::Coulomb => d.col,
                     MomentumBranch::KineticFrictional => d.col + d.fri,
                     _ => 0.0,
                 }
@@ -300,7 +311,7 @@ impl SolidsWallModel {
     /// and free-slip walls: MFIX NSW ignores it).
     pub fn wall_velocity(&self) -> f64 {
         match self {
-            Self::NoSlip | Self::FreeSlip => 0.0,
+            Self::NoSlip | Self::FreeSlip | Self::Coulomb(_) => 0.0,
             Self::PartialSlip(user) => user.u_w,
             Self::JohnsonJackson { contact, .. } | Self::Jenkins { contact } => {
                 contact.wall_velocity
@@ -351,6 +362,7 @@ impl SolidsWallModel {
             Self::Jenkins { contact } => {
                 kinetic_momentum(Collision::Jenkins, contact, state, params)
             }
+            Self::Coulomb(wall) => coulomb_momentum(wall, state, params),
         }
     }
 
@@ -381,7 +393,9 @@ impl SolidsWallModel {
             },
         };
         let contact = match self {
-            Self::NoSlip | Self::FreeSlip => return zero_gradient(ThetaBranch::ZeroFlux),
+            Self::NoSlip | Self::FreeSlip | Self::Coulomb(_) => {
+                return zero_gradient(ThetaBranch::ZeroFlux)
+            }
             Self::PartialSlip(user) => {
                 return ThetaWall {
                     face: RobinFace::user_theta(user.h_theta, user.theta_w, user.c),
@@ -569,7 +583,7 @@ fn kinetic_momentum(
 /// numerator/denominator, or 0 when the denominator is 0 (a viscosity that vanishes only
 /// with the solids themselves: no wall stress).
 #[inline]
-fn ratio_or_zero(numerator: f64, denominator: f64) -> f64 {
+pub(crate) fn ratio_or_zero(numerator: f64, denominator: f64) -> f64 {
     if denominator == 0.0 {
         0.0
     } else {
@@ -595,6 +609,9 @@ pub enum MomentumBranch {
     KineticFrictional,
     /// frictional branch at zero slip: h = 0 (docs/model.md §3.5 step 4)
     ZeroSlip,
+    /// Coulomb wall: h = K/μ_s, K = μ_w P/√(|u_sl|² + u_min²) reported in `col`
+    /// (docs/model.md §3.11)
+    Coulomb,
 }
 
 /// Diagnostics of a momentum wall condition (the quantities of the paper's Table 2 and

@@ -7,6 +7,7 @@
 use runout_mesh::short;
 use serde::{Deserialize, Serialize};
 
+use crate::coulomb::DEFAULT_SLIP_FLOOR;
 use crate::error::WallError;
 use crate::model::SolidsWallModel;
 
@@ -71,6 +72,15 @@ pub enum SolidsWall {
         #[serde(default)]
         u_w: f64,
     },
+    /// A Coulomb wall τ_w = μ_w P at rest, regularised at zero slip (docs/model.md §3.11; not
+    /// in MFIX): the side walls of a glass channel (Jop, Forterre & Pouliquen 2005).
+    Coulomb {
+        /// grain–wall friction coefficient μ_w = tan δ_w [-]
+        friction: f64,
+        /// slip-speed regularisation u_min [m s⁻¹]; 1e-4 when absent
+        #[serde(default)]
+        slip_floor: Option<f64>,
+    },
 }
 
 impl SolidsWall {
@@ -114,6 +124,10 @@ impl SolidsWall {
                 wall_friction_angle,
                 u_w,
             } => SolidsWallModel::jenkins(wall_restitution, wall_friction_angle, u_w),
+            Self::Coulomb {
+                friction,
+                slip_floor,
+            } => SolidsWallModel::coulomb(friction, slip_floor.unwrap_or(DEFAULT_SLIP_FLOOR)),
         }
     }
 
@@ -169,6 +183,13 @@ impl SolidsWall {
                 ("wall_friction_angle", wall_friction_angle),
                 ("u_w", u_w),
             ],
+            Self::Coulomb {
+                friction,
+                slip_floor,
+            } => [("friction", Some(friction)), ("slip_floor", slip_floor)]
+                .into_iter()
+                .filter_map(|(name, v)| v.map(|v| (name, v)))
+                .collect(),
         }
     }
 
@@ -200,18 +221,20 @@ impl SolidsWall {
             }
             Self::RevisitedJohnsonJackson { .. } => "rjj".into(),
             Self::Jenkins { .. } => "jenkins".into(),
+            Self::Coulomb { friction, .. } => format!("coulomb-mu{}", short(*friction)),
         }
     }
 
     /// The kinds of condition by their `runout wall --model` names, and a condition of
     /// each kind built from named parameters ([`SolidsWall::parameters`] names).
-    pub const KINDS: [&'static str; 6] = [
+    pub const KINDS: [&'static str; 7] = [
         "no-slip",
         "free-slip",
         "partial-slip",
         "johnson-jackson",
         "revisited-jj",
         "jenkins",
+        "coulomb",
     ];
 
     /// The condition of kind `kind` (one of [`SolidsWall::KINDS`]) with its parameters from
@@ -248,6 +271,10 @@ impl SolidsWall {
                 wall_restitution: need("wall_restitution")?,
                 wall_friction_angle: need("wall_friction_angle")?,
                 u_w: need("u_w")?,
+            },
+            "coulomb" => Self::Coulomb {
+                friction: need("friction")?,
+                slip_floor: param("slip_floor"),
             },
             other => return Err(MissingParameter::Kind(other.to_string())),
         })

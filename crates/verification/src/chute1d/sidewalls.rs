@@ -45,7 +45,9 @@ impl ChuteSidewalls {
             SolidsWallModel::FreeSlip => 0.0,
             SolidsWallModel::NoSlip => 6.0 * mu_s / self.width * u,
             SolidsWallModel::PartialSlip(user) => mu_s * user.h_u * u,
-            SolidsWallModel::JohnsonJackson { .. } | SolidsWallModel::Jenkins { .. } => {
+            SolidsWallModel::JohnsonJackson { .. }
+            | SolidsWallModel::Jenkins { .. }
+            | SolidsWallModel::Coulomb(_) => {
                 let wall = self.solids.momentum(
                     &MomentumWallState {
                         eps_s_fluid: eps_s,
