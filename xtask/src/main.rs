@@ -246,6 +246,11 @@ enum Task {
         /// friction's template (default with mu-i and both: 0.5,1,3,6)
         #[arg(long, value_delimiter = ',')]
         aspect: Option<Vec<f64>>,
+        /// collapse: every column between two Coulomb side walls (docs/model.md §3.11, §8):
+        /// `W_L0,MU_W`, the channel width in L0 and the grain–wall friction μ_w; the page
+        /// goes to runs/collapse-report/<fidelity>-W<W_L0>L0-mu<MU_W>/
+        #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
+        sidewalls: Option<Vec<f64>>,
         /// mfix-slope: comma-separated rayon thread counts to time the JJ case with
         #[arg(long, default_value = "1")]
         threads: String,
@@ -430,6 +435,7 @@ fn main() -> Result<()> {
             skip_variants,
             friction,
             aspect,
+            sidewalls,
         } => verify_task(
             &name,
             report,
@@ -437,7 +443,7 @@ fn main() -> Result<()> {
             reuse,
             &threads,
             skip_variants,
-            (&friction, aspect),
+            (&friction, aspect, sidewalls),
         ),
         Task::Report { what, fidelity } => report_task(&what, fidelity.as_deref()),
         Task::Ledger { action } => ledger_task(action),
@@ -535,7 +541,7 @@ fn verify_task(
     reuse: bool,
     threads: &str,
     skip_variants: bool,
-    (friction, aspect): (&str, Option<Vec<f64>>),
+    (friction, aspect, sidewalls): (&str, Option<Vec<f64>>, Option<Vec<f64>>),
 ) -> Result<()> {
     match name {
         "mfix-slope" => {
@@ -554,8 +560,11 @@ fn verify_task(
             &root(),
             parse_fidelity(fidelity.unwrap_or("coarse"))?,
             reuse,
-            collapse::Friction::parse(friction)?,
-            aspect,
+            (collapse::Friction::parse(friction)?, aspect),
+            sidewalls
+                .as_deref()
+                .map(collapse::column::ChannelWalls::parse)
+                .transpose()?,
         ),
         _ => verify::verify(name, report, &root()),
     }

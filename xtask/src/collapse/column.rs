@@ -2,7 +2,7 @@
 //! its aspect ratio and its time and velocity scales.
 
 use anyhow::{bail, Context, Result};
-use runout_case::{Case, Gravity};
+use runout_case::{Case, GasSidewall, Gravity, Sidewalls, SolidsWall};
 use runout_closures::friction::{FrictionModel, FrictionName};
 use runout_mesh::Segment;
 use runout_verification::references::LAJEUNESSE;
@@ -71,6 +71,62 @@ pub fn with_princeton(case: &Case) -> Case {
     };
     twin.description = format!("{} (Princeton friction)", case.description);
     twin
+}
+
+/// The side walls of a laboratory channel around a built column (`--sidewalls W_L0,MU_W`):
+/// width W = `width_in_l0` L0, a Coulomb grain–wall friction μ_w (docs/model.md §3.11, §8),
+/// the gas sticking to the walls.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ChannelWalls {
+    /// W/L0 [-], > 0
+    pub width_in_l0: f64,
+    /// μ_w [-]
+    pub friction: f64,
+}
+
+impl ChannelWalls {
+    /// From `--sidewalls W_L0,MU_W`: two numbers, W/L0 in (0, 1000] and μ_w in [0, 10].
+    pub fn parse(values: &[f64]) -> Result<Self> {
+        let &[width_in_l0, friction] = values else {
+            bail!("--sidewalls takes two numbers, W/L0 and μ_w: got {values:?}");
+        };
+        if !(width_in_l0 > 0.0 && width_in_l0 <= 1e3) {
+            bail!("--sidewalls W/L0 = {width_in_l0}: allowed (0, 1000]");
+        }
+        if !(0.0..=10.0).contains(&friction) {
+            bail!("--sidewalls μ_w = {friction}: allowed [0, 10]");
+        }
+        Ok(Self {
+            width_in_l0,
+            friction,
+        })
+    }
+
+    /// A label for names and folders, e.g. `W5L0-mu0.38`.
+    pub fn label(&self) -> String {
+        format!("W{}L0-mu{}", self.width_in_l0, self.friction)
+    }
+
+    /// `case` between these walls (W from the case's own L0), its name suffixed with
+    /// [`ChannelWalls::label`].
+    pub fn apply(&self, case: &Case) -> Result<Case> {
+        let column = Column::of(case)?;
+        let mut walled = case.clone();
+        walled.sidewalls = Some(Sidewalls {
+            width: self.width_in_l0 * column.l0,
+            solids: SolidsWall::Coulomb {
+                friction: self.friction,
+                slip_floor: None,
+            },
+            gas: GasSidewall::NoSlip,
+        });
+        walled.name = format!("{}-{}", case.name, self.label());
+        walled.description = format!(
+            "{} between Coulomb side walls W = {} L0, μ_w = {}",
+            case.description, self.width_in_l0, self.friction
+        );
+        Ok(walled)
+    }
 }
 
 /// Whether `case` uses the μ(I) friction law (the closure the check's thresholds judge).

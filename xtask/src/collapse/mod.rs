@@ -1,6 +1,7 @@
 //! `cargo xtask verify collapse [--friction princeton|mu-i|both] [--aspect LIST]
-//! [--fidelity smoke|coarse|paper] [--reuse]`: the granular column collapse check (issues 7
-//! and 43; cases/collapse/, verification-notes.md §2f, docs/collapse-laws.md).
+//! [--fidelity smoke|coarse|paper] [--sidewalls W_L0,MU_W] [--reuse]`: the granular column
+//! collapse check (issues 7 and 43; cases/collapse/, verification-notes.md §2f,
+//! docs/collapse-laws.md).
 //!
 //! Runs the columns one after the other into `runs/<case>/<fidelity>/` (checkpointed, so a
 //! killed check continues), reads the front of the bulk monitor and the last field file, and
@@ -11,7 +12,9 @@
 //! [`law_failures`]. `both`: each μ(I) column and beside it the same column with Princeton
 //! friction (only the μ(I) ones are judged). At `coarse` the page goes to docs/
 //! (collapse.md for `both`, collapse-mu-i.md, collapse-princeton.md) with its figures in
-//! docs/collapse/; at other fidelities to runs/collapse-report/<fidelity>/. With `--reuse`,
+//! docs/collapse/; at other fidelities, and with `--sidewalls` (every column between Coulomb
+//! side walls W apart, [`column::ChannelWalls`]) at any, to
+//! runs/collapse-report/<fidelity>[-<walls>]/. With `--reuse`,
 //! a finished run whose `resolved.ron` equals the case as it would run now is read instead
 //! of rerun.
 //!
@@ -35,6 +38,7 @@ use std::path::{Path, PathBuf};
 use anyhow::{bail, Context, Result};
 use runout_case::{load, Fidelity, Loaded};
 
+use self::column::ChannelWalls;
 use self::run::{run_one, Outcome};
 use runout_verification::references::{LAJEUNESSE, LAJEUNESSE_HEIGHT};
 
@@ -88,13 +92,14 @@ impl Friction {
 /// Runs the collapse check at `fidelity` (smoke or coarse) with `friction` and writes its
 /// report; `aspects` builds the columns of those a from the friction's template (default:
 /// the four shipped Princeton cases, or μ(I) columns of a = 0.5, 1, 3, 6); `reuse` takes
-/// finished runs of unchanged cases instead of rerunning them.
+/// finished runs of unchanged cases instead of rerunning them; `walls` puts every column
+/// in a channel with side walls.
 pub fn verify(
     root: &Path,
     fidelity: Fidelity,
     reuse: bool,
-    friction: Friction,
-    aspects: Option<Vec<f64>>,
+    (friction, aspects): (Friction, Option<Vec<f64>>),
+    walls: Option<ChannelWalls>,
 ) -> Result<()> {
     // the cells as written (L0/20) for μ(I)'s grid study; Princeton's four columns are
     // reported at smoke and coarse
@@ -103,7 +108,7 @@ pub fn verify(
             "`verify collapse` runs Princeton at smoke or coarse fidelity (mu-i and both also at paper)"
         );
     }
-    let cases = columns(root, friction, aspects)?;
+    let cases = columns(root, friction, aspects, walls)?;
     let mut outcomes = Vec::new();
     for case in &cases {
         outcomes.push(run_one(root, case, fidelity, reuse)?);
@@ -114,7 +119,7 @@ pub fn verify(
         root, &cases, fidelity, &outcomes,
     )?));
     println!("\n{table}");
-    write_report(root, fidelity, friction, &outcomes, &table)?;
+    write_report(root, (fidelity, walls), friction, &outcomes, &table)?;
     let mut failures = failures(&outcomes);
     failures.extend(law_failures(&outcomes));
     if !failures.is_empty() {
@@ -128,8 +133,22 @@ pub fn verify(
 }
 
 /// The columns of the check: the shipped Princeton cases, or those of `aspects` built from
-/// the friction's template.
+/// the friction's template; between `walls` if given.
 fn columns(
+    root: &Path,
+    friction: Friction,
+    aspects: Option<Vec<f64>>,
+    walls: Option<ChannelWalls>,
+) -> Result<Vec<runout_case::Case>> {
+    let cases = plane_columns(root, friction, aspects)?;
+    match walls {
+        None => Ok(cases),
+        Some(walls) => cases.iter().map(|c| walls.apply(c)).collect(),
+    }
+}
+
+/// The columns of [`columns`] without side walls.
+fn plane_columns(
     root: &Path,
     friction: Friction,
     aspects: Option<Vec<f64>>,
@@ -219,23 +238,30 @@ fn law_failures(outcomes: &[Outcome]) -> Vec<String> {
     failures
 }
 
-/// Writes the report and its figures (runout against a; the deposits): at coarse into docs/
-/// (`collapse.md` with both closures, `collapse-mu-i.md`, `collapse-princeton.md` for the
-/// paper's material) and docs/collapse/, otherwise into runs/collapse-report/<fidelity>/.
+/// Writes the report and its figures (runout against a; the deposits): at coarse without
+/// side walls into docs/ (`collapse.md` with both closures, `collapse-mu-i.md`,
+/// `collapse-princeton.md` for the paper's material) and docs/collapse/, otherwise into
+/// runs/collapse-report/<fidelity>[-<walls>]/.
 fn write_report(
     root: &Path,
-    fidelity: Fidelity,
+    (fidelity, walls): (Fidelity, Option<ChannelWalls>),
     friction: Friction,
     outcomes: &[Outcome],
     table: &str,
 ) -> Result<()> {
-    let out_dir = match fidelity {
-        Fidelity::Coarse => root.join("docs"),
-        _ => root.join("runs/collapse-report").join(fidelity.name()),
+    let to_docs = fidelity == Fidelity::Coarse && walls.is_none();
+    let out_dir = match walls {
+        _ if to_docs => root.join("docs"),
+        None => root.join("runs/collapse-report").join(fidelity.name()),
+        Some(w) => {
+            root.join("runs/collapse-report")
+                .join(format!("{}-{}", fidelity.name(), w.label()))
+        }
     };
-    let figure_dir = match fidelity {
-        Fidelity::Coarse => out_dir.join("collapse"),
-        _ => out_dir.clone(),
+    let figure_dir = if to_docs {
+        out_dir.join("collapse")
+    } else {
+        out_dir.clone()
     };
     std::fs::create_dir_all(&figure_dir)
         .with_context(|| format!("creating {}", figure_dir.display()))?;
@@ -311,7 +337,7 @@ mod tests {
     #[test]
     fn columns_of_any_aspect_from_the_template() {
         let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
-        let cases = columns(root, Friction::MuI, Some(vec![0.5, 2.0, 8.0])).unwrap();
+        let cases = columns(root, Friction::MuI, Some(vec![0.5, 2.0, 8.0]), None).unwrap();
         for (case, a) in cases.iter().zip([0.5, 2.0, 8.0]) {
             let column = Column::of(case).unwrap();
             assert_eq!(column.aspect(), a);
@@ -324,8 +350,13 @@ mod tests {
             assert!(grid.x.end() >= column.l0 * (1.0 + 2.5 * laj));
             assert!(runout_case::validate_case(case).is_ok());
         }
-        assert!(columns(root, Friction::MuI, Some(vec![0.0])).is_err());
-        assert_eq!(columns(root, Friction::Princeton, None).unwrap().len(), 4);
+        assert!(columns(root, Friction::MuI, Some(vec![0.0]), None).is_err());
+        assert_eq!(
+            columns(root, Friction::Princeton, None, None)
+                .unwrap()
+                .len(),
+            4
+        );
     }
 
     /// `both` puts the Princeton twin of each μ(I) column beside it: the same case but for
@@ -333,7 +364,7 @@ mod tests {
     #[test]
     fn both_builds_a_princeton_twin_of_each_column() {
         let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
-        let cases = columns(root, Friction::Both, Some(vec![1.0, 3.0])).unwrap();
+        let cases = columns(root, Friction::Both, Some(vec![1.0, 3.0]), None).unwrap();
         let names: Vec<&str> = cases.iter().map(|c| c.name.as_str()).collect();
         assert_eq!(names, ["CMP-a1", "CM-a1", "CMP-a3", "CM-a3"]);
         for pair in cases.chunks(2) {
@@ -344,6 +375,31 @@ mod tests {
             same.name = mu_i.name.clone();
             same.description = mu_i.description.clone();
             assert_eq!(&same, mu_i);
+        }
+    }
+
+    /// `--sidewalls` puts each column, and its Princeton twin, between Coulomb side walls W =
+    /// w L0 apart; nothing else changes; bad values are refused.
+    #[test]
+    fn side_walls_put_every_column_in_a_channel() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
+        let walls = ChannelWalls::parse(&[5.0, 0.38]).unwrap();
+        let plane = columns(root, Friction::Both, Some(vec![6.0]), None).unwrap();
+        let walled = columns(root, Friction::Both, Some(vec![6.0]), Some(walls)).unwrap();
+        let names: Vec<&str> = walled.iter().map(|c| c.name.as_str()).collect();
+        assert_eq!(names, ["CMP-a6-W5L0-mu0.38", "CM-a6-W5L0-mu0.38"]);
+        for (p, w) in plane.iter().zip(&walled) {
+            let sw = w.sidewalls.as_ref().unwrap();
+            assert_eq!(sw.width, 5.0 * Column::of(p).unwrap().l0);
+            assert!(runout_case::validate_case(w).is_ok());
+            let mut same = w.clone();
+            same.sidewalls = None;
+            same.name = p.name.clone();
+            same.description = p.description.clone();
+            assert_eq!(&same, p);
+        }
+        for bad in [&[5.0][..], &[0.0, 0.3], &[5.0, -0.1], &[f64::NAN, 0.3]] {
+            assert!(ChannelWalls::parse(bad).is_err(), "{bad:?}");
         }
     }
 
