@@ -3,7 +3,7 @@
 //!
 //! τ_w = −μ_w P u_sl/|u_sl|, P = P_kin + P_fric the solids pressure at the wall, μ_w = tan δ_w
 //! the grain–wall friction coefficient. This is the side-wall stress of Jop, Forterre &
-//! Pouliquen (2005, J. Fluid Mech. 541, 167, §4) for a granular flow between glass walls, and
+//! Pouliquen (2005, J. Fluid Mech. 541, 167) for a granular flow between glass walls, and
 //! the frictional wall that a μ(I) flow needs (a Coulomb law at the wall like the Coulomb law
 //! in the bulk). The sign function is regularised as the μ(I) law's strain rate is
 //! (docs/model.md §2.4.4):
@@ -12,9 +12,9 @@
 //!
 //! so that a layer pushed along the wall by a stress r μ_w P, r < 1, creeps at
 //! |u_sl| = u_min r/√(1 − r²) ([`CoulombWall::creep_slip`]) instead of standing still.
-//! The default u_min = 1e-4 m/s keeps that creep below 2.1e-4 m/s for r ≤ 0.9: 0.1 % of
-//! √(g H0) for the 5 cm columns of the collapse check, far below its "at rest" threshold
-//! of 1 %. The wall's frictional work heats the wall, not the granular temperature: the
+//! The default u_min = 1e-4 m/s keeps that creep below 2.1e-4 m/s for r ≤ 0.9: at most
+//! 0.05 % of √(g H0) for the collapse check's columns (H0 ≥ 2.5 cm), far below its "at
+//! rest" threshold of 1 %. The wall's frictional work heats the wall, not the granular temperature: the
 //! granular-energy flux through a Coulomb wall is zero.
 
 use crate::error::{Checks, WallError};
