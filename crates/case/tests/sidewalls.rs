@@ -107,6 +107,20 @@ fn the_solids_condition_is_validated_as_the_floors() {
             "(0, 1] m/s",
         ],
     );
+    // a Coulomb wall is a side-wall condition only
+    let text = shipped("mfix-slope/jj.ron");
+    let floor = text.find("south: Wall(").expect("a floor");
+    let solids = floor + text[floor..].find("solids: ").unwrap() + "solids: ".len();
+    let end = solids + text[solids..].find(")),").unwrap() + 1;
+    let t = format!("{}Coulomb(friction: 0.4){}", &text[..solids], &text[end..]);
+    rejected(
+        "coulomb-floor.ron",
+        &t,
+        &[
+            "boundaries.south.solids = Coulomb",
+            "a side-wall condition only",
+        ],
+    );
     // an unknown gas condition is a parse error naming the variants
     let t = with_sidewalls(&format!(
         "Some((width: 0.3, solids: {JENKINS}, gas: PartialSlip))"

@@ -69,12 +69,14 @@ impl CoulombWall {
     }
 }
 
-/// The momentum face of a Coulomb wall (module doc) on a floor or a side: free slip next to a
+/// The momentum face of a Coulomb wall (module doc): free slip next to a
 /// cell with εs ≤ `DIL_EP_S` (as JJ, docs/model.md §3.5 step 0); else, with θ ≥ 1e-8,
 /// P = P_kin (Lun 1984) + P_fric (the friction model's, where it has a wall friction and the
 /// interpolated εs > εs,min), K = μ_w P/√(|u_sl|² + u_min²) (in `col`), and
 /// h_w^u = K/μ_s with the viscosity of the wall routine, μ_k joined with μ_f as the friction
 /// model joins them (the rule that forms JJ's h_w^u, §3.5 step 4). The wall is at rest.
+/// A case uses K only, on its side walls: a side of the domain would apply h with the
+/// solver's own viscosity, so cases may not put a Coulomb wall there (docs/model.md §3.11).
 pub(crate) fn coulomb_momentum(
     wall: &CoulombWall,
     state: &MomentumWallState,
