@@ -78,7 +78,8 @@ enum Command {
         /// no progress bar
         #[arg(long)]
         quiet: bool,
-        /// stop at this simulated time [s] instead of the fidelity's end time
+        /// stop at this simulated time [s] instead of the fidelity's end time, in the case's
+        /// clock (from the tilt with `clock: Impact`, docs/impact.md §4)
         #[arg(long, value_parser = parse_end_time)]
         end_time: Option<f64>,
         /// run only the case of this name (of a sweep file's cases)
