@@ -204,7 +204,7 @@ const SOLIDS_WALL: &[Field] = &[
     f("SolidsWall.Jenkins.wall_restitution", "number", "-", REQ, "[0, 1]", "Jenkins 1992 small-friction, all-sliding limit (paper Eq. 20, model.md §3.8): e_w"),
     f("SolidsWall.Jenkins.wall_friction_angle", "number", "deg", REQ, "[0, 90)", "δ_w"),
     f("SolidsWall.Jenkins.u_w", "number", "m/s", "0", "", "wall velocity"),
-    f("SolidsWall.Coulomb.friction", "number", "-", REQ, "[0, 10]", "Coulomb wall τ_w = μ_w P, regularised at zero slip, zero granular-energy flux (model.md §3.11; not in MFIX); side walls only (`sidewalls.solids`): μ_w = tan δ_w"),
+    f("SolidsWall.Coulomb.friction", "number", "-", REQ, "[0, 10]", "Coulomb wall τ_w = μ_w P, regularised at zero slip, zero granular-energy flux (model.md §3.11; not in MFIX): μ_w = tan δ_w"),
     f("SolidsWall.Coulomb.slip_floor", "number", "m/s", "1e-4", "(0, 1]", "slip regularisation u_min: a wall loaded to r < 1 of μ_w P creeps at u_min r/√(1 − r²)"),
 ];
 

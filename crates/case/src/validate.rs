@@ -585,16 +585,6 @@ fn check_boundary(c: &mut Checker, p: &str, b: &Boundary, has_gas: bool) {
                 GasWall::NoSlip | GasWall::FreeSlip => {}
             }
             check_solids_wall(c, &format!("{p}.solids"), solids);
-            if let SolidsWall::Coulomb { .. } = solids {
-                // docs/model.md §3.11: the face's h would be formed with the wall routine's
-                // viscosity and applied with the solver's
-                c.fail(
-                    format!("{p}.solids"),
-                    "Coulomb",
-                    "a side-wall condition only (sidewalls.solids): on a side of the domain \
-                     its stress is not imposed exactly (docs/model.md §3.11)",
-                );
-            }
         }
     }
 }

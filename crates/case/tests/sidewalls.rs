@@ -107,20 +107,6 @@ fn the_solids_condition_is_validated_as_the_floors() {
             "(0, 1] m/s",
         ],
     );
-    // a Coulomb wall is a side-wall condition only
-    let text = shipped("mfix-slope/jj.ron");
-    let floor = text.find("south: Wall(").expect("a floor");
-    let solids = floor + text[floor..].find("solids: ").unwrap() + "solids: ".len();
-    let end = solids + text[solids..].find(")),").unwrap() + 1;
-    let t = format!("{}Coulomb(friction: 0.4){}", &text[..solids], &text[end..]);
-    rejected(
-        "coulomb-floor.ron",
-        &t,
-        &[
-            "boundaries.south.solids = Coulomb",
-            "a side-wall condition only",
-        ],
-    );
     // an unknown gas condition is a parse error naming the variants
     let t = with_sidewalls(&format!(
         "Some((width: 0.3, solids: {JENKINS}, gas: PartialSlip))"
@@ -139,6 +125,14 @@ fn good_side_walls_load_and_none_is_the_default() {
     };
     let walls = cases[0].case.sidewalls.as_ref().unwrap();
     assert_eq!(walls.width, 0.3);
+    // a Coulomb floor loads too (docs/model.md §3.11)
+    let text = shipped("mfix-slope/jj.ron");
+    let floor = text.find("south: Wall(").expect("a floor");
+    let solids = floor + text[floor..].find("solids: ").unwrap() + "solids: ".len();
+    let end = solids + text[solids..].find(")),").unwrap() + 1;
+    let t = format!("{}Coulomb(friction: 0.4){}", &text[..solids], &text[end..]);
+    let (_, r) = load_text("coulomb-floor.ron", &t);
+    assert!(r.is_ok(), "{:?}", r.err());
     let t = with_sidewalls("Some((width: 0.1, solids: Coulomb(friction: 0.4), gas: NoSlip))");
     let (_, r) = load_text("coulomb-good.ron", &t);
     let Loaded::Cases(cases) = r.unwrap() else {

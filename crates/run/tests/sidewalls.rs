@@ -217,3 +217,68 @@ fn jenkins_side_walls_slow_the_slide() {
         mean_u(&plane)
     );
 }
+
+/// μ(I)'s pressure P_kin + P_c [Pa] at (εs, θ), written from the formulas (Lun 1984 with
+/// Carnahan–Starling; paper Eq. 10 with MFIX's Fr = 0.05 Pa), the flume's grains.
+fn mu_i_pressure(eps: f64, theta: f64) -> f64 {
+    let (rho_s, e) = (2300.0, 0.9);
+    let g0 = (1.0 - 0.5 * eps) / (1.0 - eps).powi(3);
+    let p_kin = rho_s * eps * theta * (1.0 + 2.0 * (1.0 + e) * eps * g0);
+    let p_c = if eps > 0.5 {
+        0.05 * (eps - 0.5).powi(2) / (0.65 - eps).powi(5)
+    } else {
+        0.0
+    };
+    p_kin + p_c
+}
+
+/// A Coulomb floor (docs/model.md §3.11) under the sliding μ(I) block, against a free-slip
+/// one: each step the block loses Σ μ_w P w Δt/ρs of its momentum, summed over the floor's u
+/// nodes of width w, with P at each node as the wall closure takes it (εs interpolated
+/// between the two cells beside the node, θ their mean; no stress where the cell west of
+/// the node holds εs ≤ 1e-4, docs/model.md §3.5 step 0).
+#[test]
+fn a_coulomb_floor_takes_mu_w_p_from_a_sliding_block() {
+    let (mu_w, rho_s) = (0.4, 2300.0);
+    let floor = |solids: SolidsWall| {
+        move |case: &mut Case| {
+            case.models.friction = FrictionModel::MuI(MuIConstants::glass_beads_jop_2005());
+            // see coulomb_side_walls_take_mu_w_p_from_a_sliding_block
+            case.run.tolerances.residual = 1e-6;
+            if let runout_case::Boundary::Wall { solids: s, .. } = &mut case.boundaries.south {
+                *s = solids.clone();
+            }
+        }
+    };
+    let free = flume_slide_with(None, floor(SolidsWall::FreeSlip), |_| {});
+    let coulomb = SolidsWall::Coulomb {
+        friction: mu_w,
+        slip_floor: None,
+    };
+    let mut expected = 0.0;
+    let walled = flume_slide_with(None, floor(coulomb), |tf| {
+        let s = tf.solids(0);
+        let x = &tf.grid().x;
+        let dx = x.widths();
+        // interior u nodes k (between cells k − 1 and k) of the floor row
+        let force: f64 = (1..tf.grid().nx())
+            .filter(|&k| s.eps()[k - 1] > 1e-4)
+            .map(|k| {
+                let w = x.interpolation_weight(k - 1);
+                let eps = w * s.eps()[k - 1] + (1.0 - w) * s.eps()[k];
+                let theta = 0.5 * (s.theta[k - 1] + s.theta[k]);
+                mu_w * mu_i_pressure(eps, theta) * 0.5 * (dx[k - 1] + dx[k])
+            })
+            .sum();
+        expected += force * DT / rho_s;
+    });
+    let lost = momentum(&free) - momentum(&walled);
+    println!(
+        "floor: lost {lost:e}, expected {expected:e}, ratio {}",
+        lost / expected
+    );
+    assert!(
+        (lost / expected - 1.0).abs() < 0.02,
+        "momentum lost to the floor {lost:e}, Σ μ_w P w Δt/ρs = {expected:e}"
+    );
+}

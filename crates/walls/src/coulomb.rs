@@ -75,8 +75,8 @@ impl CoulombWall {
 /// interpolated εs > εs,min), K = μ_w P/√(|u_sl|² + u_min²) (in `col`), and
 /// h_w^u = K/μ_s with the viscosity of the wall routine, μ_k joined with μ_f as the friction
 /// model joins them (the rule that forms JJ's h_w^u, §3.5 step 4). The wall is at rest.
-/// A case uses K only, on its side walls: a side of the domain would apply h with the
-/// solver's own viscosity, so cases may not put a Coulomb wall there (docs/model.md §3.11).
+/// The solver replaces h by K/Γ with its own face viscosity Γ
+/// ([`MomentumWall::with_face_viscosity`]), and uses K itself on side walls.
 pub(crate) fn coulomb_momentum(
     wall: &CoulombWall,
     state: &MomentumWallState,

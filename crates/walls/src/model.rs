@@ -665,6 +665,19 @@ pub struct MomentumWall {
 }
 
 impl MomentumWall {
+    /// The face with the solver's face viscosity Γ (the one its momentum assembly multiplies
+    /// h by, docs/model.md §3.2): a Coulomb wall's h = K/Γ, so that the stress the face
+    /// imposes is K u_face = μ_w P (docs/model.md §3.11); every other condition unchanged
+    /// (MFIX forms JJ's and Jenkins' h with the wall routine's viscosity, §3.5 step 4).
+    pub fn with_face_viscosity(mut self, gamma: f64) -> Self {
+        if self.diagnostics.branch == MomentumBranch::Coulomb {
+            let h = ratio_or_zero(self.diagnostics.col, gamma);
+            self.diagnostics.h_u = h;
+            self.face = RobinFace::partial_slip(h, 0.0);
+        }
+        self
+    }
+
     /// A state-independent face (no-slip, free-slip, user), with the state's slip echoed.
     fn fixed(face: RobinFace, branch: MomentumBranch, state: &MomentumWallState) -> Self {
         Self {

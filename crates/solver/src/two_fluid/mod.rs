@@ -475,7 +475,7 @@ impl TwoFluid {
         }
         let t = Instant::now();
         if model.scene.has_per_face_walls() {
-            update_walls(model, state, wall_closures, diagnostics);
+            update_walls(model, state, (wall_closures, coefficients), diagnostics);
         }
         if let Some(sidewalls) = &model.sidewalls {
             sidewalls::update_sidewalls(&model.grid, sidewalls, state, coefficients, specs);
@@ -558,7 +558,7 @@ impl TwoFluid {
 fn update_walls(
     model: &Model,
     state: &State,
-    wall_closures: &mut [PhaseWallClosures],
+    (wall_closures, coefficients): (&mut [PhaseWallClosures], &[PhaseCoefficients]),
     diagnostics: &mut Diagnostics,
 ) {
     let gas = GasNearWalls {
@@ -575,7 +575,7 @@ fn update_walls(
         gas,
         relax,
         state,
-        wall_closures,
+        (wall_closures, coefficients),
         &model.solids_specs,
     );
     for side in Side::ALL {

@@ -9,8 +9,8 @@ use runout_walls::state::{corner_theta, face_theta};
 use runout_walls::{MomentumWallState, RobinFace, SolidsWallModel, ThetaWallState, WallStrain};
 
 use super::dilute::{relax_face, turns_back, ClosureCycle};
-use super::{PhaseState, PhaseWallClosures, SolidsSpec, State};
-use crate::momentum::WallFaces;
+use super::{PhaseCoefficients, PhaseState, PhaseWallClosures, SolidsSpec, State};
+use crate::momentum::{harmonic, WallFaces};
 use crate::single_phase::SideBc;
 
 /// The slot of `side` in per-node closures.
@@ -131,11 +131,12 @@ pub(super) fn update_walls(
     gas: GasNearWalls<'_>,
     relax: WallRelaxation,
     state: &State,
-    solids: &mut [PhaseWallClosures],
+    (solids, coefficients): (&mut [PhaseWallClosures], &[PhaseCoefficients]),
     specs: &[SolidsSpec],
 ) -> Sides<u64> {
     let mut evaluated = Sides::<u64>::default();
-    for ((s, phase), spec) in solids.iter_mut().zip(state.phases()).zip(specs) {
+    let phases = solids.iter_mut().zip(state.phases()).zip(coefficients);
+    for (((s, phase), coefficients), spec) in phases.zip(specs) {
         for side in [Side::West, Side::East, Side::South, Side::North] {
             let Some(model) = spec.per_face_model(side) else {
                 continue;
@@ -168,6 +169,7 @@ pub(super) fn update_walls(
                 model,
                 spec,
                 phase,
+                mu: &coefficients.mu,
                 gas: gas_side,
             };
             momentum_closures(
@@ -308,6 +310,9 @@ struct SideClosures<'a> {
     spec: &'a SolidsSpec,
     /// the phase's fields
     phase: &'a PhaseState,
+    /// μ_s per cell [Pa s], whose mean along the wall the momentum assembly applies a face's
+    /// h with
+    mu: &'a [f64],
     gas: GasSide<'a>,
 }
 
@@ -328,6 +333,7 @@ fn momentum_closures(
         model,
         spec,
         phase: p,
+        mu,
         gas,
     } = closures;
     let u_w = model.wall_velocity();
@@ -386,7 +392,12 @@ fn momentum_closures(
             s_ddot_s: strain.s_ddot_s,
             s_nn: strain.s_nn,
         };
-        let computed = model.momentum(&state, &spec.params);
+        // a Coulomb face's h is K over the viscosity the assembly applies it with
+        // (momentum.rs `mu_wall`), so that it imposes μ_w P (docs/model.md §3.11)
+        let gamma = harmonic(mu[wall.cell(c_lo)], mu[wall.cell(c_hi)], weight);
+        let computed = model
+            .momentum(&state, &spec.params)
+            .with_face_viscosity(gamma);
         if wall.side == Side::South {
             s.floor_h_u[k] = computed.diagnostics.h_u;
         }
@@ -416,6 +427,7 @@ fn theta_closures(
         spec,
         phase: p,
         gas,
+        ..
     } = closures;
     let u_w = model.wall_velocity();
     let face_velocity = s.wall_face_velocity.get(wall.side);
