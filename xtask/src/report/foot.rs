@@ -139,6 +139,7 @@ fn floor_name(run: &FootRun) -> String {
         "jenkins" => "Jenkins".into(),
         l if l.starts_with("jj-phi") => format!("Johnson–Jackson φ = {}", &l[6..]),
         l if l.starts_with("ps-hu") => "partial slip h_u = 10 m⁻¹".into(),
+        l if l.starts_with("coulomb-mu") => format!("Coulomb μ_w = {}", &l[10..]),
         l => l.into(),
     }
 }
