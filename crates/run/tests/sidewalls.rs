@@ -129,30 +129,31 @@ fn momentum(tf: &TwoFluid) -> f64 {
         .sum()
 }
 
-/// ∫(P_kin + P_c) dV over the cells with solids [Pa m²] of μ(I)'s pressure, written here from
-/// the formulas: Lun (1984) with Carnahan–Starling, P_c of paper Eq. 10 with MFIX's
-/// Fr = 0.05 Pa; the flume's grains (ρs = 2300 kg/m³, e = 0.9).
+/// ∫(P_kin + P_c) dV over the cells with solids [Pa m²] ([`mu_i_pressure`]).
 fn pressure_volume(tf: &TwoFluid) -> f64 {
     let s = tf.solids(0);
     let g = tf.grid();
     let (nx, dx, dy) = (g.nx(), g.x.widths(), g.y.widths());
-    let (rho_s, e) = (2300.0, 0.9);
     s.eps()
         .iter()
         .zip(&s.theta)
         .enumerate()
         .filter(|(_, (&eps, _))| eps > 1e-4)
-        .map(|(k, (&eps, &theta))| {
-            let g0 = (1.0 - 0.5 * eps) / (1.0 - eps).powi(3);
-            let p_kin = rho_s * eps * theta * (1.0 + 2.0 * (1.0 + e) * eps * g0);
-            let p_c = if eps > 0.5 {
-                0.05 * (eps - 0.5).powi(2) / (0.65 - eps).powi(5)
-            } else {
-                0.0
-            };
-            (p_kin + p_c) * dx[k % nx] * dy[k / nx]
-        })
+        .map(|(k, (&eps, &theta))| mu_i_pressure(eps, theta) * dx[k % nx] * dy[k / nx])
         .sum()
+}
+
+/// Prints the ratio of the momentum the block `lost` to the walls' impulse `expected`
+/// [m⁴ s⁻¹] and asserts it within 2 %.
+fn assert_budget(what: &str, lost: f64, expected: f64) {
+    println!(
+        "{what}: momentum lost {lost:e}, expected {expected:e}, ratio {}",
+        lost / expected
+    );
+    assert!(
+        (lost / expected - 1.0).abs() < 0.02,
+        "momentum lost to the {what} {lost:e}, their impulse over ρs {expected:e}"
+    );
 }
 
 /// Coulomb side walls (docs/model.md §3.11) take μ_w P per unit wall area from a block that
@@ -177,15 +178,7 @@ fn coulomb_side_walls_take_mu_w_p_from_a_sliding_block() {
     let walled = flume_slide_with(walls(width, coulomb), mu_i, |tf| {
         expected += 2.0 / width * mu_w * pressure_volume(tf) * DT / rho_s;
     });
-    let lost = momentum(&plane) - momentum(&walled);
-    println!(
-        "momentum lost {lost:e}, expected {expected:e}, ratio {}",
-        lost / expected
-    );
-    assert!(
-        (lost / expected - 1.0).abs() < 0.02,
-        "momentum lost to the walls {lost:e}, Σ (2/W) μ_w ∫P dV Δt/ρs = {expected:e}"
-    );
+    assert_budget("side walls", momentum(&plane) - momentum(&walled), expected);
 }
 
 #[test]
@@ -272,13 +265,5 @@ fn a_coulomb_floor_takes_mu_w_p_from_a_sliding_block() {
             .sum();
         expected += force * DT / rho_s;
     });
-    let lost = momentum(&free) - momentum(&walled);
-    println!(
-        "floor: lost {lost:e}, expected {expected:e}, ratio {}",
-        lost / expected
-    );
-    assert!(
-        (lost / expected - 1.0).abs() < 0.02,
-        "momentum lost to the floor {lost:e}, Σ μ_w P w Δt/ρs = {expected:e}"
-    );
+    assert_budget("floor", momentum(&free) - momentum(&walled), expected);
 }

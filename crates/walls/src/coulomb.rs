@@ -20,11 +20,10 @@
 use crate::error::{Checks, WallError};
 use crate::face::RobinFace;
 use crate::model::{
-    ratio_or_zero, wall_gas_coupling, MomentumBranch, MomentumDiagnostics, MomentumWall,
+    ratio_or_zero, wall_kinetics, MomentumBranch, MomentumDiagnostics, MomentumWall,
 };
-use crate::state::{wall_theta, MomentumWallState};
+use crate::state::MomentumWallState;
 use runout_closures::guards::DIL_EP_S;
-use runout_closures::kinetic::{lun_1984, SolidsState};
 use runout_closures::ClosureParams;
 use serde::Serialize;
 
@@ -93,31 +92,13 @@ pub(crate) fn coulomb_momentum(
             diagnostics,
         };
     }
-    let theta = wall_theta(state.theta);
-    let solids = SolidsState::new(state.eps_s, theta, &params.particles, params.radial);
-    let kinetic = lun_1984(
-        &solids,
-        wall_gas_coupling(state.eps_s, state.gas_slip, params),
-    );
+    let (theta, _, kinetic) = wall_kinetics(state, params);
     diagnostics.branch = MomentumBranch::Coulomb;
     diagnostics.theta = theta;
     diagnostics.mu_kin = kinetic.mu_kin;
     diagnostics.p_kin = kinetic.p_kin;
     if params.friction_model.has_wall_friction() && state.eps_s > params.friction.eps_s_min {
-        let stress = params.friction_model.stress(
-            state.eps_s,
-            theta,
-            params.particles.diameter,
-            params.particles.density,
-            state.tr_d,
-            state.s_ddot_s.max(crate::state::WALL_S_DDOT_S_FLOOR),
-            kinetic.p_kin,
-            &params.friction,
-        );
-        diagnostics.mu_fric = stress.mu_fric;
-        diagnostics.p_fric = stress.p_fric;
-        diagnostics.zeta = stress.zeta;
-        diagnostics.kinetic_join = stress.kinetic_join;
+        diagnostics.add_wall_friction(state, params);
     }
     diagnostics.col = wall.stress_per_slip(diagnostics.p_kin + diagnostics.p_fric, state.slip);
     diagnostics.h_u = ratio_or_zero(diagnostics.col, diagnostics.viscosity());

@@ -23,7 +23,7 @@ use crate::state::{wall_theta, MomentumWallState, ThetaWallState, WALL_S_DDOT_S_
 use runout_closures::drag::{dga_wall_wen_yu, DragInputs};
 use runout_closures::guards::DIL_EP_S;
 use runout_closures::kinetic::{lun_1984, GasCoupling, KineticStress, SolidsState};
-use runout_closures::{ClosureParams, KineticJoin};
+use runout_closures::{ClosureParams, FrictionalStress, KineticJoin};
 use serde::Serialize;
 
 /// Particle–wall contact parameters shared by the Johnson–Jackson and Jenkins models.
@@ -503,12 +503,7 @@ fn kinetic_momentum(
             },
         };
     }
-    let theta = wall_theta(state.theta);
-    let solids = SolidsState::new(state.eps_s, theta, &params.particles, params.radial);
-    let kinetic: KineticStress = lun_1984(
-        &solids,
-        wall_gas_coupling(state.eps_s, state.gas_slip, params),
-    );
+    let (theta, solids, kinetic) = wall_kinetics(state, params);
     let (col, specularity) = match collision {
         Collision::JohnsonJackson(law) => {
             let phi = law.at(state.slip, theta);
@@ -535,26 +530,13 @@ fn kinetic_momentum(
     let h = if frictional_branch {
         if state.eps_s > eps_s_min {
             // the Princeton or μ(I) stress: the models with wall friction
-            let stress = params.friction_model.stress(
-                state.eps_s,
-                theta,
-                params.particles.diameter,
-                params.particles.density,
-                state.tr_d,
-                state.s_ddot_s.max(WALL_S_DDOT_S_FLOOR),
-                kinetic.p_kin,
-                &params.friction,
-            );
+            let stress = diagnostics.add_wall_friction(state, params);
             diagnostics.fri = frictional(
                 contact.tan_wall_friction,
                 stress.p_fric,
                 stress.mu_fric,
                 state.s_nn,
             );
-            diagnostics.mu_fric = stress.mu_fric;
-            diagnostics.p_fric = stress.p_fric;
-            diagnostics.zeta = stress.zeta;
-            diagnostics.kinetic_join = stress.kinetic_join;
         }
         // ζ is only evaluated (and > 0 by the closures' θ floor) when friction is; MFIX's
         // "ζ = 0" test cannot fire then
@@ -578,6 +560,22 @@ fn kinetic_momentum(
         RobinFace::dirichlet(contact.wall_velocity)
     };
     MomentumWall { face, diagnostics }
+}
+
+/// The kinetic state at a wall (docs/model.md §3.5 step 1): θ ≤ 0 → 1e-8, the solids state
+/// at the interpolated εs and Lun's (1984) stresses with the Wen–Yu DgA in μ* (dry if
+/// ρ_g = 0).
+pub(crate) fn wall_kinetics(
+    state: &MomentumWallState,
+    params: &ClosureParams,
+) -> (f64, SolidsState, KineticStress) {
+    let theta = wall_theta(state.theta);
+    let solids = SolidsState::new(state.eps_s, theta, &params.particles, params.radial);
+    let kinetic = lun_1984(
+        &solids,
+        wall_gas_coupling(state.eps_s, state.gas_slip, params),
+    );
+    (theta, solids, kinetic)
 }
 
 /// numerator/denominator, or 0 when the denominator is 0 (a viscosity that vanishes only
@@ -648,6 +646,30 @@ pub struct MomentumDiagnostics {
 }
 
 impl MomentumDiagnostics {
+    /// Evaluates the friction model's stress at the wall state (docs/model.md §3.5 step 3:
+    /// S:S ≥ 1e-10, with this state's θ and P_k) and records μ_f, P_f, ζ and the join.
+    pub(crate) fn add_wall_friction(
+        &mut self,
+        state: &MomentumWallState,
+        params: &ClosureParams,
+    ) -> FrictionalStress {
+        let stress = params.friction_model.stress(
+            state.eps_s,
+            self.theta,
+            params.particles.diameter,
+            params.particles.density,
+            state.tr_d,
+            state.s_ddot_s.max(WALL_S_DDOT_S_FLOOR),
+            self.p_kin,
+            &params.friction,
+        );
+        self.mu_fric = stress.mu_fric;
+        self.p_fric = stress.p_fric;
+        self.zeta = stress.zeta;
+        self.kinetic_join = stress.kinetic_join;
+        stress
+    }
+
     /// The solids viscosity the wall stress is expressed with, μ_k + μ_f (the μ(I) law's
     /// larger-of join, docs/model.md §2.4.4) [Pa s].
     pub fn viscosity(&self) -> f64 {
