@@ -237,6 +237,7 @@ pub fn run(args: &WallArgs) -> anyhow::Result<()> {
         tr_d: args.tr_d,
         s_ddot_s: args.s_ddot_s,
         s_nn: args.s_nn,
+        extra_normal_load: 0.0,
     };
     let theta_state = ThetaWallState {
         eps_s: args.eps_s_fluid(),
@@ -310,6 +311,7 @@ mod tests {
             tr_d: 0.0,
             s_ddot_s: 5000.0,
             s_nn: 0.0,
+            extra_normal_load: 0.0,
         };
         let want = model.momentum(&state, &ClosureParams::default());
         assert_eq!(model.momentum(&state, &args.params()), want);

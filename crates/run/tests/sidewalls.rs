@@ -129,17 +129,22 @@ fn momentum(tf: &TwoFluid) -> f64 {
         .sum()
 }
 
-/// ∫(P_kin + P_c) dV over the cells with solids [Pa m²] ([`mu_i_pressure`]).
-fn pressure_volume(tf: &TwoFluid) -> f64 {
+/// ∫N dV over the cells with solids [Pa m²]: the side walls' normal load, the pressure
+/// P_kin + P_c ([`mu_i_pressure`]) and the load beyond it that the solver measured
+/// ([`TwoFluid::sidewall_extra_normal_load`], −λ_s tr D).
+fn load_volume(tf: &TwoFluid) -> f64 {
     let s = tf.solids(0);
     let g = tf.grid();
     let (nx, dx, dy) = (g.nx(), g.x.widths(), g.y.widths());
+    let extra = tf.sidewall_extra_normal_load(0);
     s.eps()
         .iter()
         .zip(&s.theta)
         .enumerate()
         .filter(|(_, (&eps, _))| eps > 1e-4)
-        .map(|(k, (&eps, &theta))| mu_i_pressure(eps, theta) * dx[k % nx] * dy[k / nx])
+        .map(|(k, (&eps, &theta))| {
+            (mu_i_pressure(eps, theta) + extra[k]).max(0.0) * dx[k % nx] * dy[k / nx]
+        })
         .sum()
 }
 
@@ -156,12 +161,12 @@ fn assert_budget(what: &str, lost: f64, expected: f64) {
     );
 }
 
-/// Coulomb side walls (docs/model.md §3.11) take μ_w P per unit wall area from a block that
+/// Coulomb side walls (docs/model.md §3.11) take μ_w N per unit wall area from a block that
 /// slides at 2 m/s (|u_sl| ≫ u_min): each step of Δt the block loses
-/// (2/W) μ_w ∫P dV Δt/ρs of its momentum Σ εs u V, with P at the step's end (the walls'
-/// terms are implicit).
+/// (2/W) μ_w ∫N dV Δt/ρs of its momentum Σ εs u V, with N (the pressure and −λ_s tr D) at
+/// the step's end (the walls' terms are implicit).
 #[test]
-fn coulomb_side_walls_take_mu_w_p_from_a_sliding_block() {
+fn coulomb_side_walls_take_mu_w_n_from_a_sliding_block() {
     let mu_i = |case: &mut Case| {
         case.models.friction = FrictionModel::MuI(MuIConstants::glass_beads_jop_2005());
         // the walls change u by 3e-4 of itself per step, below the case's residual 1e-3: the
@@ -176,7 +181,7 @@ fn coulomb_side_walls_take_mu_w_p_from_a_sliding_block() {
     let plane = flume_slide_with(None, mu_i, |_| {});
     let mut expected = 0.0;
     let walled = flume_slide_with(walls(width, coulomb), mu_i, |tf| {
-        expected += 2.0 / width * mu_w * pressure_volume(tf) * DT / rho_s;
+        expected += 2.0 / width * mu_w * load_volume(tf) * DT / rho_s;
     });
     assert_budget("side walls", momentum(&plane) - momentum(&walled), expected);
 }
@@ -226,17 +231,19 @@ fn mu_i_pressure(eps: f64, theta: f64) -> f64 {
 }
 
 /// A Coulomb floor (docs/model.md §3.11) under the sliding μ(I) block, against a free-slip
-/// one: each step the block loses Σ μ_w P w Δt/ρs of its momentum, summed over the floor's u
-/// nodes of width w, with P at each node as the wall closure takes it (εs interpolated
-/// between the two cells beside the node, θ their mean; no stress where the cell west of
-/// the node holds εs ≤ 1e-4, docs/model.md §3.5 step 0).
+/// one: each step the block loses Σ μ_w N_w w Δt/ρs of its momentum, summed over the floor's
+/// u nodes of width w, with N_w the normal load the floor read at each node
+/// ([`TwoFluid::floor_normal_load`]: the pressure and the load beyond it; no stress where the
+/// cell west of the node holds εs ≤ 1e-4, docs/model.md §3.5 step 0). That N_w is the
+/// block's weight is `cargo test --release -p runout-verification --test coulomb_floor`'s
+/// check; this one, that the floor imposes μ_w times it.
 #[test]
-fn a_coulomb_floor_takes_mu_w_p_from_a_sliding_block() {
+fn a_coulomb_floor_takes_mu_w_n_from_a_sliding_block() {
     let (mu_w, rho_s) = (0.4, 2300.0);
     let floor = |solids: SolidsWall| {
         move |case: &mut Case| {
             case.models.friction = FrictionModel::MuI(MuIConstants::glass_beads_jop_2005());
-            // see coulomb_side_walls_take_mu_w_p_from_a_sliding_block
+            // see coulomb_side_walls_take_mu_w_n_from_a_sliding_block
             case.run.tolerances.residual = 1e-6;
             if let runout_case::Boundary::Wall { solids: s, .. } = &mut case.boundaries.south {
                 *s = solids.clone();
@@ -249,10 +256,12 @@ fn a_coulomb_floor_takes_mu_w_p_from_a_sliding_block() {
         slip_floor: None,
     };
     let mut expected = 0.0;
+    let mut beyond_pressure: f64 = 0.0;
     let walled = flume_slide_with(None, floor(coulomb), |tf| {
         let s = tf.solids(0);
         let x = &tf.grid().x;
         let dx = x.widths();
+        let load = tf.floor_normal_load(0);
         // interior u nodes k (between cells k − 1 and k) of the floor row
         let force: f64 = (1..tf.grid().nx())
             .filter(|&k| s.eps()[k - 1] > 1e-4)
@@ -260,10 +269,13 @@ fn a_coulomb_floor_takes_mu_w_p_from_a_sliding_block() {
                 let w = x.interpolation_weight(k - 1);
                 let eps = w * s.eps()[k - 1] + (1.0 - w) * s.eps()[k];
                 let theta = 0.5 * (s.theta[k - 1] + s.theta[k]);
-                mu_w * mu_i_pressure(eps, theta) * 0.5 * (dx[k - 1] + dx[k])
+                beyond_pressure = beyond_pressure.max((load[k] - mu_i_pressure(eps, theta)).abs());
+                mu_w * load[k] * 0.5 * (dx[k - 1] + dx[k])
             })
             .sum();
         expected += force * DT / rho_s;
     });
+    // the floor read more than the pressure (the half cell's weight at least)
+    assert!(beyond_pressure > 1.0, "{beyond_pressure} Pa");
     assert_budget("floor", momentum(&free) - momentum(&walled), expected);
 }

@@ -8,6 +8,7 @@
 //! | `taylor-green` | decaying vortex, mass of every step | closed form |
 //! | `chute` | steady chute on a periodic column | the 1-D chute solver |
 //! | `incline` | μ(I) on a rough incline, flowing and at rest | Bagnold profile, creep closed form |
+//! | `coulomb-floor` | a block on a Coulomb floor, a layer between Coulomb side walls | the sliding-block law |
 //! | `haff` | energy equation in a box at rest | Haff (1983) |
 //! | `cooling` | cooling through the two-fluid step | Haff with viscous damping |
 //! | `settling` | settling column | the bed's weight |
@@ -27,7 +28,8 @@
 
 use crate::check::Check;
 use crate::checks::{
-    Cavity, Chute, Cooling, FluidizedBed, Haff, Incline, Poiseuille, SJjPhi, Settling, TaylorGreen,
+    Cavity, Chute, Cooling, CoulombFloor, FluidizedBed, Haff, Incline, Poiseuille, SJjPhi,
+    Settling, TaylorGreen,
 };
 
 /// Every check, in the order `cargo xtask verify all` runs them.
@@ -38,6 +40,7 @@ pub fn registry() -> Vec<Box<dyn Check>> {
         Box::new(TaylorGreen),
         Box::new(Chute),
         Box::new(Incline),
+        Box::new(CoulombFloor),
         Box::new(Haff),
         Box::new(Cooling),
         Box::new(Settling),

@@ -1,16 +1,18 @@
 //! A Coulomb wall: the grains slide on the wall against a friction proportional to the
 //! pressure they carry (docs/model.md §3.11; not in MFIX).
 //!
-//! τ_w = −μ_w P u_sl/|u_sl|, P = P_kin + P_fric the solids pressure at the wall, μ_w = tan δ_w
-//! the grain–wall friction coefficient. This is the side-wall stress of Jop, Forterre &
+//! τ_w = −μ_w N_w u_sl/|u_sl|, N_w the solids' normal load on the wall (the normal traction
+//! −n·σ_s·n: the pressure P = P_kin + P_fric at the wall and the load beyond it that the
+//! solver measures, [`MomentumWallState::extra_normal_load`]), μ_w = tan δ_w the grain–wall
+//! friction coefficient. This is the side-wall stress of Jop, Forterre &
 //! Pouliquen (2005, J. Fluid Mech. 541, 167) for a granular flow between glass walls, and
 //! the frictional wall that a μ(I) flow needs (a Coulomb law at the wall like the Coulomb law
 //! in the bulk). The sign function is regularised as the μ(I) law's strain rate is
 //! (docs/model.md §2.4.4):
 //!
-//!   K = τ_w/|u_sl| = μ_w P/√(|u_sl|² + u_min²)   [Pa s m⁻¹],
+//!   K = τ_w/|u_sl| = μ_w N_w/√(|u_sl|² + u_min²)   [Pa s m⁻¹],
 //!
-//! so that a layer pushed along the wall by a stress r μ_w P, r < 1, creeps at
+//! so that a layer pushed along the wall by a stress r μ_w N_w, r < 1, creeps at
 //! |u_sl| = u_min r/√(1 − r²) ([`CoulombWall::creep_slip`]) instead of standing still.
 //! The default u_min = 1e-4 m/s keeps that creep below 2.1e-4 m/s for r ≤ 0.9: at most
 //! 0.05 % of √(g H0) for the collapse check's columns (H0 ≥ 2.5 cm), far below its "at
@@ -54,14 +56,14 @@ impl CoulombWall {
         checks.finish(Some(wall))
     }
 
-    /// K = μ_w P/√(|u_sl|² + u_min²) [Pa s m⁻¹]: the wall stress per unit slip at solids
-    /// pressure `pressure` [Pa] and slip speed `slip` [m s⁻¹] (module doc).
+    /// K = μ_w N/√(|u_sl|² + u_min²) [Pa s m⁻¹]: the wall stress per unit slip at normal
+    /// load `normal_load` [Pa] and slip speed `slip` [m s⁻¹] (module doc).
     #[inline]
-    pub fn stress_per_slip(&self, pressure: f64, slip: f64) -> f64 {
-        self.friction * pressure / slip.hypot(self.slip_floor)
+    pub fn stress_per_slip(&self, normal_load: f64, slip: f64) -> f64 {
+        self.friction * normal_load / slip.hypot(self.slip_floor)
     }
 
-    /// The slip speed at which the regularised wall stress K |u_sl| equals r μ_w P, r ∈ [0, 1):
+    /// The slip speed at which the regularised wall stress K |u_sl| equals r μ_w N, r ∈ [0, 1):
     /// u_min r/√(1 − r²) [m s⁻¹] (the creep of a layer loaded below the wall's strength).
     pub fn creep_slip(&self, stress_ratio: f64) -> f64 {
         self.slip_floor * stress_ratio / (1.0 - stress_ratio * stress_ratio).sqrt()
@@ -71,7 +73,8 @@ impl CoulombWall {
 /// The momentum face of a Coulomb wall (module doc): free slip next to a
 /// cell with εs ≤ `DIL_EP_S` (as JJ, docs/model.md §3.5 step 0); else, with θ ≥ 1e-8,
 /// P = P_kin (Lun 1984) + P_fric (the friction model's, where it has a wall friction and the
-/// interpolated εs > εs,min), K = μ_w P/√(|u_sl|² + u_min²) (in `col`), and
+/// interpolated εs > εs,min), N_w = P + the state's `extra_normal_load` (≥ 0),
+/// K = μ_w N_w/√(|u_sl|² + u_min²) (in `col`), and
 /// h_w^u = K/μ_s with the viscosity of the wall routine, μ_k joined with μ_f as the friction
 /// model joins them (the rule that forms JJ's h_w^u, §3.5 step 4). The wall is at rest.
 /// The solver replaces h by K/Γ with its own face viscosity Γ
@@ -100,12 +103,21 @@ pub(crate) fn coulomb_momentum(
     if params.friction_model.has_wall_friction() && state.eps_s > params.friction.eps_s_min {
         diagnostics.add_wall_friction(state, params);
     }
-    diagnostics.col = wall.stress_per_slip(diagnostics.p_kin + diagnostics.p_fric, state.slip);
+    diagnostics.normal_load = normal_load(&diagnostics, state);
+    diagnostics.col = wall.stress_per_slip(diagnostics.normal_load, state.slip);
     diagnostics.h_u = ratio_or_zero(diagnostics.col, diagnostics.viscosity());
     MomentumWall {
         face: RobinFace::partial_slip(diagnostics.h_u, 0.0),
         diagnostics,
     }
+}
+
+/// The normal load N_w = P_kin + P_fric + (N_w − P_s) the wall's friction is proportional
+/// to \[Pa\] (docs/model.md §3.11): the pressure at the wall state plus the load beyond it
+/// that the solver measured ([`MomentumWallState::extra_normal_load`]); a wall is pressed
+/// on, never pulled, so N_w ≥ 0.
+fn normal_load(diagnostics: &MomentumDiagnostics, state: &MomentumWallState) -> f64 {
+    (diagnostics.p_kin + diagnostics.p_fric + state.extra_normal_load).max(0.0)
 }
 
 #[cfg(test)]
@@ -155,6 +167,7 @@ mod tests {
             tr_d: 0.0,
             s_ddot_s: 50.0,
             s_nn: 0.0,
+            extra_normal_load: 0.0,
         }
     }
 
@@ -184,6 +197,27 @@ mod tests {
         let tau = face.face.h * d.viscosity() * state.slip;
         assert!((tau / (0.4 * (p_kin + p_c)) - 1.0).abs() < 1e-7, "{tau}");
         assert_eq!((face.face.g, face.face.c), (1.0, 0.0));
+    }
+
+    /// The load beyond the pressure adds to it (N_w = P + extra), and a wall is never pulled:
+    /// an extra load below −P gives no stress.
+    #[test]
+    fn the_normal_load_beyond_the_pressure_adds_to_it() {
+        let params = mu_i_params();
+        let wall = SolidsWallModel::coulomb(0.3, DEFAULT_SLIP_FLOOR).unwrap();
+        let bare = wall.momentum(&dense_state(0.5), &params).diagnostics;
+        let pressure = bare.p_kin + bare.p_fric;
+        let loaded = MomentumWallState {
+            extra_normal_load: 0.25 * pressure,
+            ..dense_state(0.5)
+        };
+        let col = wall.momentum(&loaded, &params).diagnostics.col;
+        assert!((col / bare.col - 1.25).abs() < 1e-12, "{col} {}", bare.col);
+        let pulled = MomentumWallState {
+            extra_normal_load: -2.0 * pressure,
+            ..dense_state(0.5)
+        };
+        assert_eq!(wall.momentum(&pulled, &params).diagnostics.col, 0.0);
     }
 
     /// Dilute cells slide freely; the granular-energy flux is zero everywhere; the side-wall

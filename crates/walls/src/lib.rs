@@ -32,7 +32,7 @@
 //! let params = ClosureParams::default();
 //! let state = MomentumWallState {
 //!     eps_s_fluid: 0.3, eps_s: 0.3, theta: 0.5, slip: 2.0, gas_slip: 0.0,
-//!     tr_d: 0.0, s_ddot_s: 0.0, s_nn: 0.0,
+//!     tr_d: 0.0, s_ddot_s: 0.0, s_nn: 0.0, extra_normal_load: 0.0,
 //! };
 //! let u = wall.momentum(&state, &params);
 //! // below εs,min: h = COL/μ_k, and the face closure has g = 1, c = h U_w

@@ -307,6 +307,13 @@ impl SolidsWallModel {
         }
     }
 
+    /// Whether the wall's stress reads the solids' normal load beyond their pressure
+    /// ([`MomentumWallState::extra_normal_load`]): the Coulomb wall (docs/model.md §3.11).
+    /// MFIX's JJ and Jenkins read the pressure (their FRI's P_f − 2 μ_f S_nn, §3.5).
+    pub fn reads_normal_traction(&self) -> bool {
+        matches!(self, Self::Coulomb(_))
+    }
+
     /// The solids wall velocity U_w [m/s] the slip speed is measured against (0 for no-slip
     /// and free-slip walls: MFIX NSW ignores it).
     pub fn wall_velocity(&self) -> f64 {
@@ -639,6 +646,9 @@ pub struct MomentumDiagnostics {
     pub p_kin: f64,
     /// P_f at the wall \[Pa\]
     pub p_fric: f64,
+    /// N_w, the normal load a Coulomb wall's friction is proportional to (P_k + P_f and the
+    /// load beyond them, docs/model.md §3.11) \[Pa\]; 0 for the other conditions
+    pub normal_load: f64,
     /// Princeton strain scale ζ [1/s] (0 if friction was not evaluated)
     pub zeta: f64,
     /// how μ_k joins μ_f in the viscosity h divides by (the frictional model's)

@@ -39,6 +39,11 @@ pub struct MomentumWallState {
     pub s_ddot_s: f64,
     /// S_nn = D_nn − tr D/3, the normal–normal deviatoric strain rate, n = wall normal [1/s]
     pub s_nn: f64,
+    /// the solids' normal load on the wall beyond the isotropic pressure at this location
+    /// \[Pa\]: N_w − P_s, with N_w = −n·σ_s·n the normal traction (the viscous normal stress
+    /// −τ_nn of the wall cells and their half cell's normal body load, docs/model.md
+    /// §3.11). Read by the Coulomb wall only; MFIX's JJ and Jenkins read the pressure.
+    pub extra_normal_load: f64,
 }
 
 /// Near-wall state of the granular-temperature condition at one wall face (docs/model.md §3.6):

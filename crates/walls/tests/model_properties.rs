@@ -58,6 +58,7 @@ fn momentum_state() -> impl Strategy<Value = MomentumWallState> {
                 tr_d: strain.tr_d,
                 s_ddot_s: strain.s_ddot_s,
                 s_nn: strain.s_nn,
+                extra_normal_load: 0.0,
             }
         })
 }
@@ -102,7 +103,7 @@ proptest! {
         prop_assert_eq!(collisional_johnson_jackson(0.0, &s, eps_max), 0.0);
         // and so is the model's diagnostic COL
         let state = MomentumWallState { eps_s_fluid: eps_s.max(1e-3), eps_s, theta, slip: 1.0,
-            gas_slip: 0.1, tr_d: 0.0, s_ddot_s: 10.0, s_nn: 0.0 };
+            gas_slip: 0.1, tr_d: 0.0, s_ddot_s: 10.0, s_nn: 0.0, extra_normal_load: 0.0 };
         let jj = |phi| SolidsWallModel::johnson_jackson(phi, E_W, DELTA_W, 0.0).unwrap()
             .momentum(&state, &p).diagnostics.col;
         prop_assert!((jj(phi) - phi * jj(1.0)).abs() <= 1e-13 * jj(1.0));
@@ -172,7 +173,7 @@ proptest! {
         let p = params(dry, friction);
         let strain = WallStrain::planar_floor(g[0], g[1], g[2], g[3]);
         let m_state = MomentumWallState { eps_s_fluid, eps_s, theta, slip, gas_slip,
-            tr_d: strain.tr_d, s_ddot_s: strain.s_ddot_s, s_nn: strain.s_nn };
+            tr_d: strain.tr_d, s_ddot_s: strain.s_ddot_s, s_nn: strain.s_nn, extra_normal_load: 0.0 };
         let t_state = ThetaWallState { eps_s: eps_s_fluid, theta, slip, gas_slip };
         for wall in every_model() {
             let m = wall.momentum(&m_state, &p);
@@ -260,6 +261,7 @@ fn branch_rules() {
         tr_d: 0.0,
         s_ddot_s: 100.0,
         s_nn: 0.0,
+        extra_normal_load: 0.0,
     };
     let m = jj.momentum(&dense, &p);
     assert_eq!(m.diagnostics.branch, MomentumBranch::KineticFrictional);
@@ -395,6 +397,7 @@ fn verification_notes_dry_table() {
                     tr_d: 0.0,
                     s_ddot_s: 0.0,
                     s_nn: 0.0,
+                    extra_normal_load: 0.0,
                 },
                 &p,
             );

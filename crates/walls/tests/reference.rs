@@ -98,6 +98,7 @@ fn momentum_coefficients_match_reference() {
             tr_d: num(row, "tr_d"),
             s_ddot_s: num(row, "s_ddot_s"),
             s_nn: num(row, "s_nn"),
+            extra_normal_load: 0.0,
         };
         let got = model(&s, row).momentum(&state, &s.params);
         let want = &row["result"];

@@ -62,6 +62,7 @@ mod setup;
 mod sidewalls;
 mod state;
 mod wall_closures;
+mod wall_load;
 mod walls;
 mod workspace;
 
@@ -85,6 +86,7 @@ use diagnostics::{since, Diagnostics};
 use model::Model;
 use residuals::Convergence;
 use wall_closures::PhaseWallClosures;
+use wall_load::BodyForce;
 use walls::{GasNearWalls, WallRelaxation};
 use workspace::{IterationFlags, PhaseWork, Solvers, Workspace};
 
@@ -435,6 +437,22 @@ impl TwoFluid {
         &self.wall_closures[m].floor_h_u
     }
 
+    /// The normal load N_w of a Coulomb floor per u-node of phase m at the last wall
+    /// evaluation [Pa] (docs/model.md §3.11); 0 on other floors.
+    pub fn floor_normal_load(&self, m: usize) -> &[f64] {
+        &self.wall_closures[m].floor_normal_load
+    }
+
+    /// The side walls' normal load beyond the pressure per cell of phase m [Pa]: −λ_s tr D
+    /// where they are Coulomb walls (docs/model.md §3.11), else 0.
+    pub fn sidewall_extra_normal_load(&self, m: usize) -> Vec<f64> {
+        self.coefficients[m]
+            .sidewall
+            .iter()
+            .map(|t| t.extra_normal_load)
+            .collect()
+    }
+
     /// Material density ρ_s of phase m [kg m⁻³].
     pub fn solids_density(&self, m: usize) -> f64 {
         self.model.solids_specs[m].params.particles.density
@@ -565,6 +583,11 @@ fn update_walls(
         walls: &model.gas_walls,
         u: &state.gas().u,
         v: &state.gas().v,
+        p: &state.gas().p,
+    };
+    let body = BodyForce {
+        gravity: model.gravity,
+        bent_floor: model.bent_floor.as_ref(),
     };
     let relax = WallRelaxation {
         weight: model.settings.relax_wall_closures,
@@ -573,6 +596,7 @@ fn update_walls(
     let faces = walls::update_walls(
         &model.grid,
         gas,
+        &body,
         relax,
         state,
         (wall_closures, coefficients),

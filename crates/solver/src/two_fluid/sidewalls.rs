@@ -23,6 +23,7 @@ use runout_mesh::Grid;
 use runout_walls::{MomentumWallState, SolidsWallModel, ThetaWallState};
 
 use super::momentum_pea::SolidsComponent;
+use super::wall_load::side_wall_extra_load;
 use super::{PhaseCoefficients, SolidsSpec, State};
 use crate::staggered::Component;
 
@@ -58,6 +59,8 @@ pub struct SidewallCell {
     pub s_ddot_s: f64,
     /// μ_s of the cell [Pa s]
     pub mu_s: f64,
+    /// λ_s of the cell [Pa s] (the walls' normal load, [`side_wall_extra_load`])
+    pub lambda_s: f64,
     /// κ_s of the cell [kg m⁻¹ s⁻¹]
     pub kappa_s: f64,
 }
@@ -71,6 +74,9 @@ pub struct SidewallTerms {
     pub theta_sink: f64,
     /// (2/W) c_θ: θ source [W m⁻³]
     pub theta_source: f64,
+    /// the walls' normal load beyond the pressure, −λ_s tr D, where they read it (a Coulomb
+    /// wall, docs/model.md §3.11), else 0 \[Pa\]
+    pub extra_normal_load: f64,
 }
 
 impl Sidewalls {
@@ -86,6 +92,7 @@ impl Sidewalls {
             s_ddot_s: cell.s_ddot_s,
             // the wall normal z: D_zz = 0
             s_nn: -cell.tr_d / 3.0,
+            extra_normal_load: side_wall_extra_load(cell.lambda_s, cell.tr_d),
         };
         let k = self
             .solids
@@ -115,6 +122,11 @@ impl Sidewalls {
             drag: per_width * self.stress_per_slip(cell, params),
             theta_sink: per_width * h_theta,
             theta_source: per_width * c_theta,
+            extra_normal_load: if self.solids.reads_normal_traction() {
+                side_wall_extra_load(cell.lambda_s, cell.tr_d)
+            } else {
+                0.0
+            },
         }
     }
 
@@ -159,6 +171,7 @@ pub(super) fn update_sidewalls(
                 tr_d: s.strain[k].tr_d,
                 s_ddot_s: s.strain[k].s_ddot_s,
                 mu_s: s.mu[k],
+                lambda_s: s.lambda[k],
                 kappa_s: s.kappa[k],
             };
             s.sidewall[k] = sidewalls.solids_terms(&cell, &spec.params);
@@ -233,6 +246,7 @@ mod tests {
             tr_d: 0.0,
             s_ddot_s: 0.0,
             mu_s: 0.2,
+            lambda_s: -0.2 * 2.0 / 3.0,
             kappa_s: 0.4,
         }
     }

@@ -23,6 +23,10 @@ pub(crate) struct PhaseWallClosures {
     pub wall_theta: WallFaces,
     /// h_w^u of the last floor evaluation per u-node (the wall probe of paper Fig. 9)
     pub floor_h_u: Vec<f64>,
+    /// the normal load N_w a Coulomb floor read at its last evaluation per u-node
+    /// (docs/model.md §3.11) [Pa]; 0 elsewhere. Recomputed every outer iteration (not in a
+    /// checkpoint)
+    pub floor_normal_load: Vec<f64>,
 }
 
 impl PhaseWallClosures {
@@ -39,6 +43,7 @@ impl PhaseWallClosures {
             wall_velocity_cycle: Sides::all(Vec::new()),
             wall_theta: WallFaces::default(),
             floor_h_u: vec![0.0; nx + 1],
+            floor_normal_load: vec![0.0; nx + 1],
         }
     }
 }

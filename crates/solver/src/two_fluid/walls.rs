@@ -9,6 +9,7 @@ use runout_walls::state::{corner_theta, face_theta};
 use runout_walls::{MomentumWallState, RobinFace, SolidsWallModel, ThetaWallState, WallStrain};
 
 use super::dilute::{relax_face, turns_back, ClosureCycle};
+use super::wall_load::{extra_normal_load, BodyForce, PhaseLoad};
 use super::{PhaseCoefficients, PhaseState, PhaseWallClosures, SolidsSpec, State};
 use crate::momentum::{harmonic, WallFaces};
 use crate::single_phase::SideBc;
@@ -98,7 +99,7 @@ impl WallRelaxation {
 }
 
 /// The gas next to the walls: its wall closures and velocities (the gas–solids slips use the
-/// gas's own wall face values).
+/// gas's own wall face values), its pressure (the buoyancy in a wall's normal load).
 #[derive(Clone, Copy)]
 pub(super) struct GasNearWalls<'a> {
     /// the gas's closure on each side
@@ -107,6 +108,8 @@ pub(super) struct GasNearWalls<'a> {
     pub u: &'a [f64],
     /// gas v on the y-faces
     pub v: &'a [f64],
+    /// gas pressure per cell [Pa]
+    pub p: &'a [f64],
 }
 
 /// Per-face closures of the state-dependent walls from the current iterate (lagged one
@@ -129,6 +132,7 @@ pub(super) struct GasNearWalls<'a> {
 pub(super) fn update_walls(
     grid: &Grid,
     gas: GasNearWalls<'_>,
+    body: &BodyForce<'_>,
     relax: WallRelaxation,
     state: &State,
     (solids, coefficients): (&mut [PhaseWallClosures], &[PhaseCoefficients]),
@@ -165,11 +169,25 @@ pub(super) fn update_walls(
             if relax.watches_cycles() {
                 cycle.resize(wall.n_cells + 1, ClosureCycle::default());
             }
+            // the normal load beyond the pressure, for the walls that read it (wall_load.rs)
+            let extra_load = model.reads_normal_traction().then(|| {
+                let load = PhaseLoad {
+                    eps: phase.eps(),
+                    u: &phase.u,
+                    v: &phase.v,
+                    mu: &coefficients.mu,
+                    lambda: &coefficients.lambda,
+                    tr_d: &coefficients.tr_d,
+                    density: spec.params.particles.density,
+                };
+                extra_normal_load(grid, side, &load, gas.p, body)
+            });
             let closures = SideClosures {
                 model,
                 spec,
                 phase,
                 mu: &coefficients.mu,
+                extra_load: extra_load.as_deref(),
                 gas: gas_side,
             };
             momentum_closures(
@@ -313,6 +331,9 @@ struct SideClosures<'a> {
     /// μ_s per cell [Pa s], whose mean along the wall the momentum assembly applies a face's
     /// h with
     mu: &'a [f64],
+    /// the normal load beyond the pressure per cell of the wall row [Pa], where the wall
+    /// reads it ([`extra_normal_load`])
+    extra_load: Option<&'a [f64]>,
     gas: GasSide<'a>,
 }
 
@@ -334,6 +355,7 @@ fn momentum_closures(
         spec,
         phase: p,
         mu,
+        extra_load,
         gas,
     } = closures;
     let u_w = model.wall_velocity();
@@ -391,6 +413,10 @@ fn momentum_closures(
             tr_d: strain.tr_d,
             s_ddot_s: strain.s_ddot_s,
             s_nn: strain.s_nn,
+            // along the wall as εs is
+            extra_normal_load: extra_load.map_or(0.0, |load| {
+                weight * load[c_lo] + (1.0 - weight) * load[c_hi]
+            }),
         };
         // a Coulomb face's h is K over the viscosity the assembly applies it with
         // (momentum.rs `mu_wall`), so that it imposes μ_w P (docs/model.md §3.11)
@@ -400,6 +426,7 @@ fn momentum_closures(
             .with_face_viscosity(gamma);
         if wall.side == Side::South {
             s.floor_h_u[k] = computed.diagnostics.h_u;
+            s.floor_normal_load[k] = computed.diagnostics.normal_load;
         }
         faces[k] = if relax.watches_cycles() {
             let node = &mut cycle[k];

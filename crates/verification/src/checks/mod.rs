@@ -4,6 +4,7 @@
 mod cavity;
 mod chute;
 mod cooling;
+mod coulomb_floor;
 mod fluidized_bed;
 mod haff;
 mod incline;
@@ -15,6 +16,7 @@ mod taylor_green;
 pub use cavity::{Cavity, CAVITY_CELLS, CAVITY_FAST_TARGET, CAVITY_TARGET};
 pub use chute::{relative_change, Chute, ChuteRun, CHUTE_TOLERANCE, FULL_RUNS};
 pub use cooling::Cooling;
+pub use coulomb_floor::{CoulombFloor, FRICTION_TOLERANCE};
 pub use fluidized_bed::FluidizedBed;
 pub use haff::Haff;
 pub use incline::{Incline, FULL_CELLS as INCLINE_CELLS, INCLINE_TOLERANCE};

@@ -49,6 +49,7 @@ pub(super) fn floor_closure(
                 tr_d: strain.tr_d,
                 s_ddot_s: strain.s_ddot_s,
                 s_nn: strain.s_nn,
+                extra_normal_load: 0.0,
             },
             params,
         );

@@ -58,6 +58,7 @@ impl ChuteSidewalls {
                         tr_d: 0.0,
                         s_ddot_s: 0.5 * shear_rate * shear_rate,
                         s_nn: 0.0,
+                        extra_normal_load: 0.0,
                     },
                     params,
                 );

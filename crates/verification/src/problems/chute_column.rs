@@ -71,6 +71,9 @@ pub struct ChuteCheckSetup {
     pub initial_u_s: Option<Vec<f64>>,
     /// the 2-D column's starting θ \[m²/s²\]
     pub initial_theta: f64,
+    /// the 2-D column's momentum under-relaxation (MFIX's UR_FAC, Patankar's form; default
+    /// 0.5, the solver's)
+    pub relax_velocity: f64,
     /// the 1-D reference's iteration controls and starting point
     pub reference_settings: SolverSettings,
 }
@@ -97,6 +100,7 @@ impl Default for ChuteCheckSetup {
             initial_eps_s: None,
             initial_u_s: None,
             initial_theta: 1e-3,
+            relax_velocity: TwoFluidSettings::default().relax_velocity,
             reference_settings: SolverSettings::default(),
         }
     }
@@ -225,6 +229,14 @@ pub struct SteadyColumn {
     pub wall_time: f64,
 }
 
+/// The 2-D column of `setup` on its `cells` uniform cells under gravity `g` [m s⁻²], started
+/// as the setup says, for a caller that marches it itself (a transient).
+pub fn sliding_column(setup: &ChuteCheckSetup, g: f64) -> Result<TwoFluid, ChuteCheckError> {
+    let axis = Axis::uniform(0.0, setup.height, setup.cells)
+        .map_err(|e| ChuteCheckError::Column(e.to_string()))?;
+    column(setup, axis, setup.closures, g)
+}
+
 /// Marches the 2-D column of `setup` to its steady state.
 pub fn steady_column(setup: &ChuteCheckSetup) -> Result<SteadyColumn, ChuteCheckError> {
     let axis = Axis::uniform(0.0, setup.height, setup.cells)
@@ -337,6 +349,7 @@ fn column(
     let gravity = (g * alpha.sin(), -g * alpha.cos());
     let settings = TwoFluidSettings {
         scheme: Scheme::Upwind,
+        relax_velocity: setup.relax_velocity,
         ..TwoFluidSettings::default()
     };
     let gas = Fluid {

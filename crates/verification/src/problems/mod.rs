@@ -29,7 +29,9 @@
 //! Where a flow stops (issue 43):
 //!
 //! - [`incline`]: the μ(I) law on a rough incline, flowing against the Bagnold profile and
-//!   at rest below μ_s against the creep of its regularisation.
+//!   at rest below μ_s against the creep of its regularisation;
+//! - [`coulomb_floor`]: a block sliding on a Coulomb floor and a layer between Coulomb side
+//!   walls against the sliding-block law (issue 61).
 
 use std::f64::consts::PI;
 use std::time::Instant;
@@ -86,6 +88,7 @@ pub enum VerifyError {
 mod channel;
 pub mod chute_column;
 pub mod cooling_box;
+pub mod coulomb_floor;
 pub mod fluidized_bed;
 pub mod haff_energy;
 pub mod incline;

@@ -1,0 +1,76 @@
+//! The `coulomb-floor` check (issue 61): the Coulomb wall's friction is μ_w times the
+//! solids' normal load on it ([`crate::problems::coulomb_floor`]):
+//! - a μ(I) block released sliding at 1 m/s down a 20° Coulomb floor accelerates at
+//!   g (sin θ − μ_w cos θ): the μ_w its acceleration implies within 2 % of μ_w;
+//! - a packed layer sliding on a Coulomb floor between Coulomb side walls accelerates at
+//!   g sin θ − μ_f g cos θ − (2 μ_sw/W) g cos θ y_c: the friction it feels within 2 % of that.
+//!
+//! - fast: the block at μ_w = 0.2 on 60 × 8 and 120 × 16 cells, the layer on 25 cells;
+//! - full: the block at μ_w = 0.1, 0.2, 0.3 and 0.5 (above tan θ: it slows) on 60 × 8,
+//!   120 × 16 and 240 × 32 cells, the layer on 12, 25 and 50 cells.
+
+use crate::check::{Check, Limit, Outcome, Size};
+use crate::problems::coulomb_floor::{run_block, run_layer, LAYER_WALLS, SLOPE_DEG};
+
+/// The largest relative error of the implied friction [-] (issue 61).
+pub const FRICTION_TOLERANCE: f64 = 0.02;
+
+/// The block and the layer against the sliding-block law.
+pub struct CoulombFloor;
+
+impl Check for CoulombFloor {
+    fn name(&self) -> &'static str {
+        "coulomb-floor"
+    }
+
+    fn description(&self) -> &'static str {
+        "a block on a Coulomb floor and a layer between Coulomb side walls: a = g (sin θ − μ_w cos θ)"
+    }
+
+    fn run(&self, size: Size) -> anyhow::Result<Outcome> {
+        let mut outcome = Outcome::new(self.name(), size);
+        let (grids, frictions, layers): (&[(usize, usize)], &[f64], &[usize]) = match size {
+            Size::Fast => (&[(60, 8), (120, 16)], &[0.2], &[25]),
+            Size::Full => (
+                &[(60, 8), (120, 16), (240, 32)],
+                &[0.1, 0.2, 0.3, 0.5],
+                &[12, 25, 50],
+            ),
+        };
+        println!("block on a {SLOPE_DEG}° Coulomb floor, released at 1 m/s:");
+        for &mu_w in frictions {
+            for &(nx, ny) in grids {
+                let r = run_block(nx, ny, mu_w)?;
+                println!(
+                    "  μ_w {mu_w:.2}, {nx:>3} × {ny:<2}: a = {:.4} m/s² (law {:.4}), implied μ_w {:.4} \
+                     ({:+.2} %), {:.1} s wall",
+                    r.acceleration,
+                    r.expected,
+                    r.effective_mu_w,
+                    100.0 * (r.effective_mu_w / mu_w - 1.0),
+                    r.wall_time
+                );
+                outcome.measure(
+                    format!("block μ_w {mu_w} on {nx} × {ny}: |implied μ_w/μ_w − 1|"),
+                    (r.effective_mu_w / mu_w - 1.0).abs(),
+                    Limit::AtMost(FRICTION_TOLERANCE),
+                );
+            }
+        }
+        let (mu_f, mu_sw, width) = LAYER_WALLS;
+        println!("layer on a Coulomb floor μ_f {mu_f} between Coulomb side walls μ_sw {mu_sw}, W = {width} m:");
+        for &cells in layers {
+            let r = run_layer(cells)?;
+            println!(
+                "  {cells:>3} cells: a = {:.4} m/s² (law {:.4}), friction measured/law {:.4}",
+                r.acceleration, r.expected, r.friction_ratio
+            );
+            outcome.measure(
+                format!("layer on {cells} cells: |friction/law − 1|"),
+                (r.friction_ratio - 1.0).abs(),
+                Limit::AtMost(FRICTION_TOLERANCE),
+            );
+        }
+        Ok(outcome)
+    }
+}
