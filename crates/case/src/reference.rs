@@ -164,6 +164,7 @@ const CASE: &[Field] = &[
     f("numerics.relaxation.theta", "number", "-", "0.5", "", "granular energy (`UR_FAC(8)`)"),
     f("numerics.relaxation.wall_closures", "number", "-", "1", "", "the state-dependent solids wall closures between outer iterations (1 = MFIX)"),
     f("numerics.relaxation.wall_closures_at", "Everywhere \\| Oscillating", "", "Everywhere", "", "where `wall_closures` applies: every wall node, or the nodes whose closure changed direction"),
+    f("numerics.relaxation.solids_velocity_base", "Centre \\| OwnPart", "", "the friction model's", "", "what the solids momentum relaxation is proportional to: the whole centre coefficient (MFIX, Patankar) or the row's own part (model.md §4.10); default OwnPart with μ(I), Centre otherwise"),
     f("numerics.exact_solids_mass", "bool", "", "false", "", "end every converged step with exact discrete solids continuity (not MFIX)"),
     f("numerics.dilute_cells", "EveryIteration \\| FrozenWhenCycling", "", "EveryIteration", "", "how θ rows are classed dilute or dense (model.md §4.8)"),
     f("fidelity.smoke", "Preset", "", REQ, "", "the seconds-long fidelity (CI); see Preset"),

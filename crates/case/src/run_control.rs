@@ -208,6 +208,21 @@ pub struct Relaxation {
     /// that floors whose iteration converges monotonically keep MFIX's iteration
     #[serde(default)]
     pub wall_closures_at: WallRelaxationScope,
+    /// what the solids momentum rows' relaxation is proportional to: the whole centre
+    /// coefficient (MFIX, Patankar) or the row's own part, without its links (docs/model.md
+    /// §4.10: a μ(I) plug's rigid motion, which the centre form freezes); default: the
+    /// friction model's (own part for μ(I), centre otherwise)
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub solids_velocity_base: Option<SolidsRelaxationBase>,
+}
+
+/// What the solids momentum relaxation is proportional to ([`Relaxation::solids_velocity_base`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum SolidsRelaxationBase {
+    /// a_P/ω: the whole centre coefficient (MFIX, Patankar)
+    Centre,
+    /// a_P + (1 − ω)/ω (a_P − Σ a_nb): the row's own part
+    OwnPart,
 }
 
 /// Where the wall-closure relaxation applies ([`Relaxation::wall_closures_at`]).
@@ -242,6 +257,7 @@ impl Default for Relaxation {
             theta: ur_half(),
             wall_closures: ur_one(),
             wall_closures_at: WallRelaxationScope::Everywhere,
+            solids_velocity_base: None,
         }
     }
 }

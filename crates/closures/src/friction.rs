@@ -526,6 +526,14 @@ impl FrictionModel {
         }
     }
 
+    /// Whether the solids momentum rows are under-relaxed in proportion to their own part
+    /// a_P − Σ a_nb rather than the whole a_P (docs/model.md §4.10): μ(I), whose regularised
+    /// viscosity μ(I) P/γ̇_min at rest makes a layer's links about 1e4 times its inertia, so
+    /// that Patankar's a_P/ω freezes its rigid motion; MFIX's Patankar form otherwise.
+    pub fn relaxes_momentum_by_own_part(&self) -> bool {
+        matches!(self, Self::MuI(_))
+    }
+
     /// Whether the model has a plastic pressure P* ([`FrictionModel::plastic_pressure`]).
     #[inline]
     pub fn has_plastic_pressure(self) -> bool {

@@ -13,7 +13,7 @@ use crate::RunError;
 use runout_solver::bent_floor::BentFloor;
 use runout_solver::single_phase::{Fluid, Settings, SideBc, SinglePhase};
 use runout_solver::transport::Scheme;
-use runout_solver::two_fluid::{SolidsSpec, TwoFluid, TwoFluidSettings};
+use runout_solver::two_fluid::{RelaxationBase, SolidsSpec, TwoFluid, TwoFluidSettings};
 
 fn wall_closure(gas: &GasWall) -> RobinFace {
     match *gas {
@@ -311,6 +311,10 @@ fn two_fluid_settings(case: &Case) -> TwoFluidSettings {
             Convection::Superbee => Scheme::Superbee,
         },
         relax_velocity: r.velocity,
+        solids_relaxation_base: r.solids_velocity_base.map(|base| match base {
+            runout_case::SolidsRelaxationBase::Centre => RelaxationBase::Centre,
+            runout_case::SolidsRelaxationBase::OwnPart => RelaxationBase::OwnPart,
+        }),
         relax_pressure: r.pressure,
         relax_eps: r.eps_s,
         relax_theta: r.theta,

@@ -302,6 +302,23 @@ fn runs_section(s: &mut String, outcomes: &[Outcome]) {
     );
 }
 
+/// The μ(I) page's thresholds paragraph (`law_failures` in mod.rs).
+const THRESHOLDS: &str =
+    "\n\n**Thresholds** (issues 43 and 57, μ(I) columns only). A plane run is judged \
+         like for like: (L∞ − L0)/L0 to the *grain edge* within 25 % of the 2-D μ(I) \
+         continuum of Lagrée, Staron & Popinet (2011) at every a. Where a ≤ 3 it must also \
+         lie within 25 % of Lajeunesse et al. (2005) as the compiled table gives it, with \
+         H∞/L0 within 25 % of their height law as Kumar (2015) cites it; beyond a = 3 the \
+         laboratory laws are shown, not judged: the laboratory channels' side walls shorten \
+         tall columns (Balmforth & Kerswell 2005: runout exponent 0.65 in narrow slots, 0.9 \
+         in wide channels) and the laws' prefactors differ by 50 % between laboratories \
+         (docs/collapse-laws.md). A column between side walls (`--sidewalls`) is not the \
+         continuum's plane flow and is judged against the laboratory laws where a ≤ 3. \
+         Every deposit must be at rest (εs-weighted mean u_s below 1 % of √(g H0) and a \
+         still front from then on) by t = 10 √(H0/g), the runs' end. The laws are \
+         second-hand (below, docs/collapse-laws.md): the column *(Kumar's reading)* shows \
+         the same paper as another source gives it.\n\n";
+
 /// docs/collapse-mu-i.md (or, `both`, docs/collapse.md): the glass-bead columns with μ(I)
 /// (and with Princeton beside them), the check's thresholds, the figures, the tables, the
 /// laws and what the runs show.
@@ -352,14 +369,7 @@ pub(super) fn document_mu_i(
              (docs/model.md §2.4), not by weaker friction.",
         );
     }
-    s.push_str(
-        "\n\n**Thresholds** (issue 43, μ(I) columns only): (L∞ − L0)/L0 to the *grain edge* \
-         within 25 % of Lajeunesse et al. (2005) as the compiled table gives it, H∞/L0 within \
-         25 % of their height law as Kumar (2015) cites it, and the deposit at rest \
-         (εs-weighted mean u_s below 1 % of √(g H0) and a still front from then on) by t = 10 \
-         √(H0/g), the runs' end. The laws are second-hand (below, docs/collapse-laws.md): \
-         the column *(Kumar's reading)* shows the same paper as another source gives it.\n\n",
-    );
+    s.push_str(THRESHOLDS);
     let _ = writeln!(s, "![runout against a]({})\n", figures.runout);
     s.push_str(table);
     let _ = writeln!(s, "\n![final deposits]({})\n", figures.deposits);

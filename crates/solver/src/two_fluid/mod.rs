@@ -56,6 +56,7 @@ mod granular_energy;
 mod model;
 mod momentum_pea;
 mod pressure;
+mod relaxation;
 mod residuals;
 mod scene;
 mod setup;
@@ -68,6 +69,7 @@ mod workspace;
 
 pub use closures::CellClosures;
 pub use diagnostics::{Counters, LinearIterations, Profile};
+pub use relaxation::RelaxationBase;
 pub use residuals::TwoFluidResiduals;
 pub use scene::{PhaseScene, Scene, WallClosure};
 pub use sidewalls::{SidewallCell, SidewallTerms, Sidewalls};
@@ -184,6 +186,11 @@ pub struct TwoFluidSettings {
     pub scheme: Scheme,
     /// momentum relaxation (`UR_FAC(3..4)`)
     pub relax_velocity: f64,
+    /// what the solids momentum rows are relaxed in proportion to ([`RelaxationBase`]:
+    /// MFIX's whole centre coefficient, or the row's own part, docs/model.md §4.10); `None`:
+    /// each phase's friction model answers
+    /// ([`runout_closures::FrictionModel::relaxes_momentum_by_own_part`])
+    pub solids_relaxation_base: Option<RelaxationBase>,
     /// gas-pressure relaxation (`UR_FAC(1)`)
     pub relax_pressure: f64,
     /// selective ε-correction relaxation (`UR_FAC(2)`)
@@ -236,6 +243,7 @@ impl Default for TwoFluidSettings {
         TwoFluidSettings {
             scheme: Scheme::Upwind,
             relax_velocity: 0.5,
+            solids_relaxation_base: None,
             relax_pressure: 0.8,
             relax_eps: 0.5,
             relax_theta: 0.5,

@@ -25,6 +25,7 @@ use super::diagnostics::since;
 use super::diagnostics::Diagnostics;
 use super::dilute::{dilute_faces, dilute_row};
 use super::model::Model;
+use super::relaxation::RelaxationBase;
 use super::residuals::CoupledNode;
 use super::sidewalls::add_momentum_sinks;
 use super::state::GasState;
@@ -423,10 +424,28 @@ fn decouple_component(
         add_momentum_sinks(&model.grid, c, (&mut *gas.a, gas_drag), solids);
     }
     let mut worst = (0.0, 0, 0, 0, 0);
-    let relax = model.settings.relax_velocity;
+    let mut solids_bases = [RelaxationBase::Centre; MAX_SOLIDS_PHASES];
+    for (base, spec) in solids_bases.iter_mut().zip(&model.solids_specs) {
+        *base = RelaxationBase::for_phase(
+            model.settings.solids_relaxation_base,
+            &spec.params.friction_model,
+        );
+    }
+    let relax = Relax {
+        omega: model.settings.relax_velocity,
+        solids_bases,
+    };
     let residual = eliminate_drag(&model.grid, c, relax, &mut gas, solids, &mut worst);
     fix_wall_rows(c, &model.gas_inflow, &mut gas, solids);
     (residual, worst)
+}
+
+/// The momentum relaxation: ω, and the base of each solids phase's rows (the gas's is
+/// Patankar's).
+#[derive(Clone, Copy, Debug)]
+struct Relax {
+    omega: f64,
+    solids_bases: [RelaxationBase; MAX_SOLIDS_PHASES],
 }
 
 /// The partial elimination of the drag at every coupled (not fixed) node of component `c`,
@@ -435,7 +454,7 @@ fn decouple_component(
 fn eliminate_drag(
     grid: &Grid,
     c: Component,
-    relax: f64,
+    relax: Relax,
     gas: &mut GasComponent<'_>,
     solids: &mut [SolidsComponent<'_>],
     worst: &mut (f64, usize, usize, usize, usize),
@@ -459,7 +478,7 @@ fn eliminate_drag(
 fn eliminate_drag_with<const N: usize>(
     grid: &Grid,
     c: Component,
-    relax: f64,
+    relax: Relax,
     gas: &mut GasComponent<'_>,
     solids: &mut [SolidsComponent<'_>],
     worst: &mut (f64, usize, usize, usize, usize),
@@ -552,7 +571,7 @@ fn decouple<const N: usize>(
     c: Component,
     (i, j): (usize, usize),
     area: f64,
-    relax: f64,
+    relax: Relax,
     node: &CoupledNode<N>,
     gas: &mut GasComponent<'_>,
     solids: &mut [SolidsComponent<'_>],
@@ -573,13 +592,16 @@ fn decouple<const N: usize>(
         &mut a_out[..=m],
         &mut r_out[..=m],
     );
-    // relaxed centre coefficients, d_g (docs/model.md §4.6), e_s (§4.7)
-    let gas_ap = a_out[0] / relax;
+    // relaxed centre coefficients (relaxation.rs), d_g (docs/model.md §4.6), e_s (§4.7)
+    let omega = relax.omega;
+    let gas_ap = a_out[0] / omega;
     let eps_face_g = face_mean(gas.eps, c0, c1);
     let mut numerator = eps_face_g;
-    let mut denominator = a_in[0] / relax;
+    let mut denominator = a_in[0] / omega;
     for (p, sc) in solids.iter_mut().enumerate() {
-        let a_s = a_in[p + 1] / relax;
+        let links = sc.a.a_w[k] + sc.a.a_e[k] + sc.a.a_s[k] + sc.a.a_n[k];
+        let base = relax.solids_bases[p];
+        let a_s = base.relaxed_centre(a_in[p + 1], links, omega);
         let f = drag[p];
         let (eps, phi) = (sc.phase.eps(), c.pick(&sc.phase.u, &sc.phase.v));
         let eps_face_s = face_mean(eps, c0, c1);
@@ -591,12 +613,17 @@ fn decouple<const N: usize>(
             continue;
         }
         sc.e[k] = area / a_s;
-        let ap = a_out[p + 1] / relax;
-        sc.a.b[k] += (r_out[p + 1] - r_in[p + 1]) + (1.0 - relax) * ap * phi[k];
+        let ap = base.relaxed_centre(a_out[p + 1], links, omega);
+        let false_inertia = match base {
+            // as MFIX writes it, (1 − ω) a_P/ω
+            RelaxationBase::Centre => (1.0 - omega) * ap,
+            RelaxationBase::OwnPart => ap - a_out[p + 1],
+        };
+        sc.a.b[k] += (r_out[p + 1] - r_in[p + 1]) + false_inertia * phi[k];
         sc.a.a_p[k] = ap;
     }
     let gas_phi = c.pick(gas.u, gas.v);
-    gas.a.b[k] += (r_out[0] - r_in[0]) + (1.0 - relax) * gas_ap * gas_phi[k];
+    gas.a.b[k] += (r_out[0] - r_in[0]) + (1.0 - omega) * gas_ap * gas_phi[k];
     gas.a.a_p[k] = gas_ap;
     gas.d[k] = area * numerator / denominator;
     if c.periodic {
@@ -672,7 +699,11 @@ mod tests {
         let c = Component::u(nx, ny, false);
         let coef = PhaseCoefficients::new((nx, ny));
         let [su, _] = solids.components(&state.phases()[0], &coef);
-        decouple(c, (1, 0), area, relax, &node, &mut gas, &mut [su]);
+        let relaxation = Relax {
+            omega: relax,
+            solids_bases: [RelaxationBase::Centre; MAX_SOLIDS_PHASES],
+        };
+        decouple(c, (1, 0), area, relaxation, &node, &mut gas, &mut [su]);
         let (ag, as_) = (a_gas / relax, a_s / relax);
         let d_expected = area * (0.5 + 0.5 * f / (as_ + f)) / (ag + f * as_ / (as_ + f));
         assert!((d[1] - d_expected).abs() < 1e-15 * d_expected);

@@ -23,7 +23,7 @@ use runout_closures::{ClosureParams, Gas};
 use runout_mesh::{Axis, Grid, Sides};
 use runout_walls::{RobinFace, SolidsWallModel};
 
-use runout_solver::two_fluid::{Sidewalls, SolidsSpec, TwoFluid, TwoFluidSettings};
+use runout_solver::two_fluid::{RelaxationBase, Sidewalls, SolidsSpec, TwoFluid, TwoFluidSettings};
 use runout_solver::{Fluid, Scheme, SideBc};
 
 use crate::chute1d::{
@@ -71,9 +71,11 @@ pub struct ChuteCheckSetup {
     pub initial_u_s: Option<Vec<f64>>,
     /// the 2-D column's starting θ \[m²/s²\]
     pub initial_theta: f64,
-    /// the 2-D column's momentum under-relaxation (MFIX's UR_FAC, Patankar's form; default
-    /// 0.5, the solver's)
+    /// the 2-D column's momentum under-relaxation (MFIX's UR_FAC; default 0.5, the
+    /// solver's)
     pub relax_velocity: f64,
+    /// what the solids rows' relaxation is proportional to (default: the friction model's)
+    pub solids_relaxation_base: Option<RelaxationBase>,
     /// the 1-D reference's iteration controls and starting point
     pub reference_settings: SolverSettings,
 }
@@ -101,6 +103,7 @@ impl Default for ChuteCheckSetup {
             initial_u_s: None,
             initial_theta: 1e-3,
             relax_velocity: TwoFluidSettings::default().relax_velocity,
+            solids_relaxation_base: TwoFluidSettings::default().solids_relaxation_base,
             reference_settings: SolverSettings::default(),
         }
     }
@@ -350,6 +353,7 @@ fn column(
     let settings = TwoFluidSettings {
         scheme: Scheme::Upwind,
         relax_velocity: setup.relax_velocity,
+        solids_relaxation_base: setup.solids_relaxation_base,
         ..TwoFluidSettings::default()
     };
     let gas = Fluid {
