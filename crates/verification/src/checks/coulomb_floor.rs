@@ -5,12 +5,19 @@
 //! - a packed layer sliding on a Coulomb floor between Coulomb side walls accelerates at
 //!   g sin θ − μ_f g cos θ − (2 μ_sw/W) g cos θ y_c: the friction it feels within 2 % of that.
 //!
-//! - fast: the block at μ_w = 0.2 on 60 × 8 and 120 × 16 cells, the layer on 25 cells;
+//! - a block released at rest on a 30° slope that turns onto a flat floor, μ_w = 0.3, comes
+//!   to rest on the flat with its centre's drop over its horizontal travel at least μ_w.
+//!
+//! - fast: the block at μ_w = 0.2 on 60 × 8 and 120 × 16 cells, the layer on 25 cells, the
+//!   energy line on 60 × 8;
 //! - full: the block at μ_w = 0.1, 0.2, 0.3 and 0.5 (above tan θ: it slows) on 60 × 8,
-//!   120 × 16 and 240 × 32 cells, the layer on 12, 25 and 50 cells.
+//!   120 × 16 and 240 × 32 cells, the layer on 12, 25 and 50 cells, the energy line on 60 × 8
+//!   and 120 × 16.
 
 use crate::check::{Check, Limit, Outcome, Size};
-use crate::problems::coulomb_floor::{run_block, run_layer, LAYER_WALLS, SLOPE_DEG};
+use crate::problems::coulomb_floor::{
+    run_block, run_energy_line, run_layer, ENERGY_LINE_BED, LAYER_WALLS, SLOPE_DEG,
+};
 
 /// The largest relative error of the implied friction [-] (issue 61).
 pub const FRICTION_TOLERANCE: f64 = 0.02;
@@ -29,12 +36,16 @@ impl Check for CoulombFloor {
 
     fn run(&self, size: Size) -> anyhow::Result<Outcome> {
         let mut outcome = Outcome::new(self.name(), size);
-        let (grids, frictions, layers): (&[(usize, usize)], &[f64], &[usize]) = match size {
-            Size::Fast => (&[(60, 8), (120, 16)], &[0.2], &[25]),
+        type Sizes = (&'static [(usize, usize)], &'static [f64], &'static [usize]);
+        let ((grids, frictions, layers), energy_grids): (Sizes, &[(usize, usize)]) = match size {
+            Size::Fast => ((&[(60, 8), (120, 16)], &[0.2], &[25]), &[(60, 8)]),
             Size::Full => (
-                &[(60, 8), (120, 16), (240, 32)],
-                &[0.1, 0.2, 0.3, 0.5],
-                &[12, 25, 50],
+                (
+                    &[(60, 8), (120, 16), (240, 32)],
+                    &[0.1, 0.2, 0.3, 0.5],
+                    &[12, 25, 50],
+                ),
+                &[(60, 8), (120, 16)],
             ),
         };
         println!("block on a {SLOPE_DEG}° Coulomb floor, released at 1 m/s:");
@@ -69,6 +80,30 @@ impl Check for CoulombFloor {
                 format!("layer on {cells} cells: |friction/law − 1|"),
                 (r.friction_ratio - 1.0).abs(),
                 Limit::AtMost(FRICTION_TOLERANCE),
+            );
+        }
+        let (slope, _, _, end) = ENERGY_LINE_BED;
+        let mu_w = 0.3;
+        println!("block released on a {slope}° slope onto a flat Coulomb floor, μ_w {mu_w}:");
+        for &(nx, ny) in energy_grids {
+            let r = run_energy_line(nx, ny, mu_w)?;
+            println!(
+                "  {nx:>3} × {ny:<2}: centre's drop/travel {:.4}, Heim's ratio {:.4}, grain edge \
+                 {:.3} m past the foot, at rest from {}",
+                r.centre_ratio,
+                r.heim_ratio,
+                r.past_foot,
+                r.rest_time
+                    .map_or(String::from("never"), |t| format!("{t:.3} s"))
+            );
+            outcome.measure(
+                format!("energy line on {nx} × {ny}: centre's drop/travel"),
+                r.centre_ratio,
+                Limit::AtLeast(mu_w),
+            );
+            outcome.holds(
+                format!("energy line on {nx} × {ny}: at rest by {end} s"),
+                r.rest_time.is_some(),
             );
         }
         Ok(outcome)

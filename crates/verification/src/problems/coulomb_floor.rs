@@ -32,6 +32,10 @@
 //!   a = g sin θ − μ_f g cos θ − (2 μ_sw/W) g cos θ y_c                                 (2)
 //!
 //! with y_c the height of the layer's centre of mass.
+//!
+//! **The energy line.** A block released at rest on a 30° slope that turns onto a flat floor
+//! ([`run_energy_line`]) stops on the flat; the drop of its centre of mass over the centre's
+//! horizontal travel is at least μ_w.
 
 use std::path::Path;
 
@@ -367,4 +371,87 @@ mod plug {
             assert!(gain < 1e-2, "relaxation {relax}: {gain}");
         }
     }
+}
+
+/// The energy line's slope [deg], bend (start along the floor, radius) [m] and run-out end
+/// time [s]: a block released at rest 0.10 m up a 30° slope that turns on a 0.1 m arc onto a
+/// flat floor at x = 0.3 m (tan 30° = 0.577 above μ_w, so it slides; the flat stops it).
+pub const ENERGY_LINE_BED: (f64, f64, f64, f64) = (30.0, 0.3, 0.1, 1.5);
+
+/// The energy line of a block that slides down a slope onto a flat floor and stops there:
+/// the drop of its centre over the centre's horizontal travel (runout_post's
+/// `centre_ratio`), which is at least μ_w because the floor's friction μ_w N, with N the
+/// weight plus the centrifugal load on the arc, does work μ_w g cos α ds or more per unit
+/// mass over every stretch ds, and the grains' own shearing only adds to it; whether it is
+/// at rest by the end.
+#[derive(Clone, Debug)]
+pub struct EnergyLineRun {
+    /// cells along and across the floor
+    pub cells: (usize, usize),
+    /// μ_w of the floor
+    pub mu_w: f64,
+    /// drop of the centre over its horizontal travel [-]
+    pub centre_ratio: f64,
+    /// the same of the rear of the release to the grain edge (Heim's ratio) [-]
+    pub heim_ratio: f64,
+    /// when the deposit came to rest [s], if it did
+    pub rest_time: Option<f64>,
+    /// the grain edge past the foot [m]
+    pub past_foot: f64,
+}
+
+/// Runs the energy-line block (module doc of [`EnergyLineRun`]) through the driver.
+pub fn run_energy_line(cells_x: usize, cells_y: usize, mu_w: f64) -> Result<EnergyLineRun> {
+    let (slope, at, radius, end) = ENERGY_LINE_BED;
+    let mut case = block_case(cells_x, cells_y, mu_w)?;
+    case.name = format!("coulomb-energy-line-mu{mu_w}-{cells_x}x{cells_y}");
+    case.domain.x.segments = vec![Segment::Uniform {
+        length: 0.8,
+        cells: cells_x,
+    }];
+    case.gravity = Gravity::Constant {
+        magnitude: GRAVITY,
+        slope,
+    };
+    case.bed = runout_case::Bed::Bend {
+        at,
+        radius,
+        slope_after: 0.0,
+    };
+    let block = &mut case.initial.regions[0];
+    block.solids[0].velocity = (0.0, 0.0);
+    case.run.end_time = end;
+    case.fidelity.smoke.end_time = end;
+    case.fidelity.coarse.end_time = end;
+    runout_case::validate_case(&case).map_err(|errors| {
+        anyhow::anyhow!(
+            "the energy-line case is invalid: {}",
+            errors
+                .iter()
+                .map(|e| e.to_string())
+                .collect::<Vec<_>>()
+                .join("; ")
+        )
+    })?;
+    let out = std::env::temp_dir().join(format!("runout-{}-{}", case.name, std::process::id()));
+    runout_run::run_case(&case, Fidelity::Paper, &out, |_| {})?;
+    let resolved = case.at_fidelity(Fidelity::Paper);
+    let (deposit, _) = runout_post::deposit::read_deposit(
+        &out,
+        &resolved,
+        runout_post::deposit::DEFAULT_REST_FRACTION,
+    )
+    .map_err(anyhow::Error::msg)?;
+    let _ = std::fs::remove_dir_all(&out);
+    let run_out = deposit
+        .on_the_run_out
+        .context("a bent floor's deposit has its place on the run-out")?;
+    Ok(EnergyLineRun {
+        cells: (cells_x, cells_y),
+        mu_w,
+        centre_ratio: run_out.centre_ratio,
+        heim_ratio: run_out.heim_ratio,
+        rest_time: deposit.rest_time,
+        past_foot: run_out.grain_edge_past_foot,
+    })
 }
