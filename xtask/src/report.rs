@@ -162,7 +162,7 @@ fn preamble(md: &mut String, names: &[String], records: &Records, requested: Opt
     }
     md.push_str(
         "The paper's numbers are MFIX's (shared/docs/cases.md \"What the paper reports\"); \
-         runout's are computed from the monitor files as defined in xtask/src/metrics.rs (air \
+         runout's are computed from the monitor files as defined in crates/post/src/metrics.rs (air \
          cushion: floor εs below 0.8 × the profile's peak; flow thickness: top of the highest \
          cell with εs ≥ 0.01; max u_s over cells with εs ≥ 0.01).\n\n",
     );
