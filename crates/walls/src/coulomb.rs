@@ -1,5 +1,5 @@
 //! A Coulomb wall: the grains slide on the wall against a friction proportional to the
-//! pressure they carry (docs/model.md §3.11; not in MFIX).
+//! load they put on it (docs/model.md §3.11; not in MFIX).
 //!
 //! τ_w = −μ_w N_w u_sl/|u_sl|, N_w the solids' normal load on the wall (the normal traction
 //! −n·σ_s·n: the pressure P = P_kin + P_fric at the wall and the load beyond it that the
