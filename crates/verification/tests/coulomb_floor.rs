@@ -11,3 +11,19 @@ fn coulomb_floor_fast() {
     print!("{outcome}");
     assert!(outcome.passed(), "{outcome}");
 }
+
+/// The Coulomb floor's load is the block's weight within 2 % at t = 0.1 and 0.15 s, on
+/// 120 × 16 and 240 × 32 cells (about 6 min): `cargo test --release -p runout-verification
+/// --test coulomb_floor -- --ignored --nocapture`.
+#[test]
+#[ignore = "six minutes: the finest grid"]
+fn the_floor_load_is_the_weight() {
+    use runout_verification::problems::coulomb_floor::floor_load_ratios;
+    for (nx, ny) in [(120, 16), (240, 32)] {
+        let ratios = floor_load_ratios(nx, ny, 0.1, &[0.1, 0.15]).expect("the block ran");
+        println!("{nx} × {ny}: floor load / weight at 0.10, 0.15 s: {ratios:.4?}");
+        for r in ratios {
+            assert!((r - 1.0).abs() < 0.02, "{nx} × {ny}: {r}");
+        }
+    }
+}

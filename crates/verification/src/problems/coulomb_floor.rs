@@ -455,3 +455,57 @@ pub fn run_energy_line(cells_x: usize, cells_y: usize, mu_w: f64) -> Result<Ener
         past_foot: run_out.grain_edge_past_foot,
     })
 }
+
+/// The block's floor load over its weight normal to the floor, Σ N_w w over the floor's u
+/// nodes against M g cos θ, at each of `times` [s] (the block of [`block_case`] stepped as
+/// the driver would): the load the Coulomb wall reads, against the weight it should carry
+/// once the block's motion across the floor has settled.
+pub fn floor_load_ratios(
+    cells_x: usize,
+    cells_y: usize,
+    mu_w: f64,
+    times: &[f64],
+) -> Result<Vec<f64>> {
+    let case = block_case(cells_x, cells_y, mu_w)?.at_fidelity(Fidelity::Paper);
+    let mut tf = runout_run::two_fluid_solver(&case)?;
+    let tol = &case.run.tolerances;
+    let (mut time, mut dt) = (0.0, case.run.dt.initial);
+    let mut ratios = Vec::with_capacity(times.len());
+    for &until in times {
+        while time < until - 1e-12 {
+            let this = dt.min(until - time);
+            let step = tf.step(
+                this,
+                tol.residual,
+                tol.theta_residual,
+                tol.diverge,
+                tol.max_iterations as usize,
+            )?;
+            if !step.converged {
+                dt *= 0.5;
+                if dt < case.run.dt.min {
+                    bail!("the block's step at t = {time} s did not converge: {step:?}");
+                }
+                continue;
+            }
+            time += this;
+            dt = (dt * 1.2).min(case.run.dt.max);
+        }
+        let grid = tf.grid();
+        let mass: f64 = tf
+            .solids(0)
+            .eps()
+            .iter()
+            .enumerate()
+            .map(|(k, e)| e * grid.cell_volume(k % grid.nx(), k / grid.nx()))
+            .sum::<f64>()
+            * tf.solids_density(0);
+        let weight = mass * GRAVITY * SLOPE_DEG.to_radians().cos();
+        let spacing = grid.x.face_spacing();
+        let load: f64 = (1..grid.nx())
+            .map(|k| tf.floor_normal_load(0)[k] * spacing[k])
+            .sum();
+        ratios.push(load / weight);
+    }
+    Ok(ratios)
+}
