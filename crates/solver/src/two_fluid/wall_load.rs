@@ -99,35 +99,27 @@ pub(super) fn extra_normal_load(
             let c = i + nx * j;
             let u_centre = 0.5 * (phase.u[i + (nx + 1) * j] + phase.u[i + 1 + (nx + 1) * j]);
             let (f_x, f_y) = body.at(xc[i], yc[j], u_centre);
+            // the next cell inward along an axis of `len` cells, and the face between them
+            // (whose spacing is the centres' distance)
+            let inward = |k: usize, len: usize| {
+                if n_sign > 0.0 {
+                    (k + 1 < len).then_some((k + 1, k + 1))
+                } else {
+                    k.checked_sub(1).map(|m| (m, k))
+                }
+            };
             // ∂u_n/∂n (sign-free), the body force along n, ∇P_g·n to the next cell inward
             let (dun_dn, f_n, dp_n, delta) = if horizontal {
                 let dv = (phase.v[i + nx * (j + 1)] - phase.v[c]) / dy[j];
-                let inward = if n_sign > 0.0 {
-                    j + 1
-                } else {
-                    j.wrapping_sub(1)
-                };
-                let dp = if inward < ny {
-                    // the centres' distance is the face spacing of the face between them
-                    let face = if n_sign > 0.0 { j + 1 } else { j };
-                    (gas_pressure[i + nx * inward] - gas_pressure[c]) / dyc[face]
-                } else {
-                    0.0
-                };
+                let dp = inward(j, ny).map_or(0.0, |(m, face)| {
+                    (gas_pressure[i + nx * m] - gas_pressure[c]) / dyc[face]
+                });
                 (dv, n_sign * f_y, dp, dy[j])
             } else {
                 let du = (phase.u[i + 1 + (nx + 1) * j] - phase.u[i + (nx + 1) * j]) / dx[i];
-                let inward = if n_sign > 0.0 {
-                    i + 1
-                } else {
-                    i.wrapping_sub(1)
-                };
-                let dp = if inward < nx {
-                    let face = if n_sign > 0.0 { i + 1 } else { i };
-                    (gas_pressure[inward + nx * j] - gas_pressure[c]) / dxc[face]
-                } else {
-                    0.0
-                };
+                let dp = inward(i, nx).map_or(0.0, |(m, face)| {
+                    (gas_pressure[m + nx * j] - gas_pressure[c]) / dxc[face]
+                });
                 (du, n_sign * f_x, dp, dx[i])
             };
             let tau_nn = 2.0 * phase.mu[c] * dun_dn + phase.lambda[c] * phase.tr_d[c];

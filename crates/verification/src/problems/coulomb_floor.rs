@@ -130,24 +130,80 @@ pub fn block_case(cells_x: usize, cells_y: usize, mu_w: f64) -> Result<Case> {
     block.y = (0.0, 0.02);
     block.solids[0].eps_s = BLOCK_EPS_S;
     block.solids[0].velocity = (BLOCK_SPEED, 0.0);
-    let end = FIT_WINDOW.1;
+    validated(ending_at(case, FIT_WINDOW.1), "block")
+}
+
+/// `case` with every fidelity ending at `end` [s].
+fn ending_at(mut case: Case, end: f64) -> Case {
     case.run.end_time = end;
     case.fidelity.smoke.end_time = end;
     case.fidelity.coarse.end_time = end;
     if let Some(wall) = case.fidelity.wall.as_mut() {
         wall.end_time = end;
     }
+    case
+}
+
+/// `case` if it validates, else an error naming `what` and every refused field.
+fn validated(case: Case, what: &str) -> Result<Case> {
     runout_case::validate_case(&case).map_err(|errors| {
-        anyhow::anyhow!(
-            "the block case is invalid: {}",
-            errors
-                .iter()
-                .map(|e| e.to_string())
-                .collect::<Vec<_>>()
-                .join("; ")
-        )
+        let fields: Vec<String> = errors.iter().map(|e| e.to_string()).collect();
+        anyhow::anyhow!("the {what} case is invalid: {}", fields.join("; "))
     })?;
     Ok(case)
+}
+
+/// How a problem steps a solver itself, as the driver would: Δt from `dt.0`, growing by 1.2
+/// to `dt.2` while steps converge, halved when one does not, and given up below `dt.1`.
+#[derive(Clone, Copy, Debug)]
+struct Stepping {
+    /// residual, θ residual and divergence tolerances, largest outer iterations
+    tolerances: (f64, f64, f64, usize),
+    /// initial, smallest and largest Δt [s]
+    dt: (f64, f64, f64),
+}
+
+impl Stepping {
+    /// The case's own controls (`run.tolerances`, `run.dt`).
+    fn of(case: &Case) -> Self {
+        let (tol, dt) = (&case.run.tolerances, &case.run.dt);
+        Stepping {
+            tolerances: (
+                tol.residual,
+                tol.theta_residual,
+                tol.diverge,
+                tol.max_iterations as usize,
+            ),
+            dt: (dt.initial, dt.min, dt.max),
+        }
+    }
+
+    /// Steps `tf` from `*time` to `until`, calling `sample` after every converged step; `dt`
+    /// carries the time step from one call to the next.
+    fn march(
+        self,
+        tf: &mut TwoFluid,
+        (time, dt): (&mut f64, &mut f64),
+        until: f64,
+        mut sample: impl FnMut(f64, &TwoFluid),
+    ) -> Result<()> {
+        let (residual, theta_residual, diverge, iterations) = self.tolerances;
+        while *time < until - 1e-12 {
+            let this = dt.min(until - *time);
+            let step = tf.step(this, residual, theta_residual, diverge, iterations)?;
+            if !step.converged {
+                *dt *= 0.5;
+                if *dt < self.dt.1 {
+                    bail!("the step at t = {time} s did not converge: {step:?}");
+                }
+                continue;
+            }
+            *time += this;
+            sample(*time, tf);
+            *dt = (*dt * 1.2).min(self.dt.2);
+        }
+        Ok(())
+    }
 }
 
 /// One block run: its measured acceleration against Eq. (1).
@@ -229,23 +285,14 @@ pub fn run_layer(cells: usize) -> Result<LayerRun> {
     };
     let mut tf = sliding_column(&setup, GRAVITY)?;
     let (mut times, mut speeds) = (vec![0.0], vec![mean_speed(&tf)]);
-    // Δt from 1e-4 s, growing by 1.2 to `dt` while steps converge, halved when one does not
-    let (mut time, mut step_dt) = (0.0, 1e-4_f64);
-    while time < end - 1e-12 {
-        let this = step_dt.min(end - time);
-        let step = tf.step(this, 1e-3, 1e-4, 1e4, 100)?;
-        if !step.converged {
-            step_dt *= 0.5;
-            if step_dt < 1e-7 {
-                bail!("the layer's step at t = {time} s did not converge: {step:?}");
-            }
-            continue;
-        }
-        time += this;
+    let stepping = Stepping {
+        tolerances: (1e-3, 1e-4, 1e4, 100),
+        dt: (1e-4, 1e-7, dt),
+    };
+    stepping.march(&mut tf, (&mut 0.0, &mut 1e-4), end, |time, tf| {
         times.push(time);
-        speeds.push(mean_speed(&tf));
-        step_dt = (step_dt * 1.2).min(dt);
-    }
+        speeds.push(mean_speed(tf));
+    })?;
     let acceleration = fitted_slope(&times, &speeds, (0.0, end)).context("no samples")?;
     let theta = SLOPE_DEG.to_radians();
     let y_c = centre_height(&tf);
@@ -420,19 +467,7 @@ pub fn run_energy_line(cells_x: usize, cells_y: usize, mu_w: f64) -> Result<Ener
     };
     let block = &mut case.initial.regions[0];
     block.solids[0].velocity = (0.0, 0.0);
-    case.run.end_time = end;
-    case.fidelity.smoke.end_time = end;
-    case.fidelity.coarse.end_time = end;
-    runout_case::validate_case(&case).map_err(|errors| {
-        anyhow::anyhow!(
-            "the energy-line case is invalid: {}",
-            errors
-                .iter()
-                .map(|e| e.to_string())
-                .collect::<Vec<_>>()
-                .join("; ")
-        )
-    })?;
+    let case = validated(ending_at(case, end), "energy-line")?;
     let out = std::env::temp_dir().join(format!("runout-{}-{}", case.name, std::process::id()));
     runout_run::run_case(&case, Fidelity::Paper, &out, |_| {})?;
     let resolved = case.at_fidelity(Fidelity::Paper);
@@ -468,39 +503,13 @@ pub fn floor_load_ratios(
 ) -> Result<Vec<f64>> {
     let case = block_case(cells_x, cells_y, mu_w)?.at_fidelity(Fidelity::Paper);
     let mut tf = runout_run::two_fluid_solver(&case)?;
-    let tol = &case.run.tolerances;
-    let (mut time, mut dt) = (0.0, case.run.dt.initial);
+    let stepping = Stepping::of(&case);
+    let (mut time, mut dt) = (0.0, stepping.dt.0);
     let mut ratios = Vec::with_capacity(times.len());
     for &until in times {
-        while time < until - 1e-12 {
-            let this = dt.min(until - time);
-            let step = tf.step(
-                this,
-                tol.residual,
-                tol.theta_residual,
-                tol.diverge,
-                tol.max_iterations as usize,
-            )?;
-            if !step.converged {
-                dt *= 0.5;
-                if dt < case.run.dt.min {
-                    bail!("the block's step at t = {time} s did not converge: {step:?}");
-                }
-                continue;
-            }
-            time += this;
-            dt = (dt * 1.2).min(case.run.dt.max);
-        }
+        stepping.march(&mut tf, (&mut time, &mut dt), until, |_, _| {})?;
         let grid = tf.grid();
-        let mass: f64 = tf
-            .solids(0)
-            .eps()
-            .iter()
-            .enumerate()
-            .map(|(k, e)| e * grid.cell_volume(k % grid.nx(), k / grid.nx()))
-            .sum::<f64>()
-            * tf.solids_density(0);
-        let weight = mass * GRAVITY * SLOPE_DEG.to_radians().cos();
+        let weight = tf.solids_mass(0) * GRAVITY * SLOPE_DEG.to_radians().cos();
         let spacing = grid.x.face_spacing();
         let load: f64 = (1..grid.nx())
             .map(|k| tf.floor_normal_load(0)[k] * spacing[k])
