@@ -10,7 +10,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::run_control::{FidelityPresets, Numerics, RunControl};
 
-pub use crate::bed::Bed;
+pub use crate::bed::{path_arcs, transect_arcs, Bed, BedPiece};
 pub use crate::sidewalls::{GasSidewall, Sidewalls};
 /// A side's solids condition: the wall crate's type, with its validation
 /// ([`SolidsWall::model`]).

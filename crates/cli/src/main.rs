@@ -352,6 +352,9 @@ fn mesh(file: &Path, fidelity: Fidelity) -> ExitCode {
                     println!("{} ({fidelity}):\n{s}", case.name);
                     printed.push(s);
                 }
+                if let Ok(Some(floor)) = case.bent_floor() {
+                    print!("{}", floor.describe(grid.x.start(), grid.x.end()));
+                }
             }
             Err(e) => {
                 eprintln!("{}: case `{}`: grid error: {e}", file.display(), case.name);

@@ -59,7 +59,7 @@ fn initial_gas_pressure(
     case: &Case,
     gas: &runout_case::Gas,
     gravity: (f64, f64),
-    bent: Option<BentFloor>,
+    bent: Option<&BentFloor>,
     grid: &Grid,
     (x, y): (f64, f64),
 ) -> f64 {
@@ -244,8 +244,8 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
     // a bent floor acts with the tilted gravity: from the start under a constant one, at
     // the tilt otherwise (`PendingTilt`)
     let bent = bent_floor(case)?.filter(|_| matches!(case.gravity, Gravity::Constant { .. }));
+    fill_initial_state(&mut tf, case, gas, (gravity, bent.as_ref()), &grid);
     tf.set_bent_floor(bent);
-    fill_initial_state(&mut tf, case, gas, (gravity, bent), &grid);
     let gas = tf.state_mut().gas_mut();
     zero_normal_velocity_on_walls(b, &grid, &mut gas.u, &mut gas.v);
     for s in tf.state_mut().phases_mut() {
@@ -334,7 +334,7 @@ fn fill_initial_state(
     tf: &mut TwoFluid,
     case: &Case,
     gas: &runout_case::Gas,
-    (gravity, bent): (GravityVector, Option<BentFloor>),
+    (gravity, bent): (GravityVector, Option<&BentFloor>),
     grid: &Grid,
 ) {
     let (nx, ny) = (grid.nx(), grid.ny());

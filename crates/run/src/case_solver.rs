@@ -184,7 +184,7 @@ pub(super) enum ImpactTrigger {
 }
 
 /// A tilt-on-impact schedule that has not tilted yet.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub(super) struct PendingTilt {
     /// |g| [m s⁻²]
     pub(super) magnitude: f64,
@@ -376,7 +376,7 @@ impl CaseSolver for TwoFluidCase {
     }
 
     fn before_step(&mut self, time: f64) -> bool {
-        let Some(tilt) = self.tilt else {
+        let Some(tilt) = self.tilt.clone() else {
             return false;
         };
         if !self.impacted(tilt.trigger, time) {
@@ -397,7 +397,7 @@ impl CaseSolver for TwoFluidCase {
     }
 
     fn next_event(&self) -> Option<f64> {
-        match self.tilt?.trigger {
+        match self.tilt.as_ref()?.trigger {
             ImpactTrigger::Time(t) => Some(t),
             ImpactTrigger::FloorEpsS(_) | ImpactTrigger::CentroidBelow(_) => None,
         }

@@ -64,6 +64,10 @@ pub fn explain(case: &Case, fidelity: Fidelity) -> Result<String, RunError> {
     } else {
         let solver = two_fluid_solver(&resolved)?;
         let _ = write!(text, "{}", solver.scene());
+        if let Ok(Some(floor)) = resolved.bent_floor() {
+            let x = &resolved.domain.x;
+            let _ = write!(text, "{}", floor.describe(x.origin, x.end()));
+        }
     }
     let _ = writeln!(text, "monitors:");
     for line in monitor_lines(&resolved) {

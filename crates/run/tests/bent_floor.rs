@@ -8,7 +8,7 @@
 
 use std::path::Path;
 
-use runout_case::{load_case, Bed, Case, Fidelity, Gravity};
+use runout_case::{load_case, Bed, BedPiece, Case, Fidelity, Gravity};
 use runout_closures::FaceMean;
 use runout_linsolve::{Pattern, Stencil5};
 use runout_mesh::Sides;
@@ -23,11 +23,16 @@ use runout_walls::RobinFace;
 /// The family-S slide's domain (20 m × 1.8 m) at smoke size with no solids, a 40° slope
 /// from the start.
 fn empty_slide(bed: Bed) -> Case {
+    empty_slide_at(bed, 40.0)
+}
+
+/// [`empty_slide`] with the gravity's slope `slope` [deg] (0 for a path).
+fn empty_slide_at(bed: Bed, slope: f64) -> Case {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     let mut case = load_case(&root.join("cases/sensitivity/base.ron")).unwrap();
     case.gravity = Gravity::Constant {
         magnitude: 9.80665,
-        slope: 40.0,
+        slope,
     };
     case.initial.regions.clear();
     case.bed = bed;
@@ -45,7 +50,7 @@ const BEND: Bed = Bed::Bend {
 /// built solver's initial pressure `p` under `floor`, largest magnitude over the u and the
 /// v nodes that move (the top outlet's included), against the largest weight of a node's
 /// gas, ρ_g g V.
-fn largest_gas_imbalance(tf: &TwoFluid, p: &[f64], floor: Option<BentFloor>) -> f64 {
+fn largest_gas_imbalance(tf: &TwoFluid, p: &[f64], floor: Option<&BentFloor>) -> f64 {
     let grid = tf.grid();
     let (nx, ny) = (grid.nx(), grid.ny());
     let walls = SideBc::Wall(RobinFace::partial_slip(0.0, 0.0));
@@ -133,6 +138,84 @@ fn gas_at_rest_stays_at_rest_over_the_bend() {
         imbalance > 1e-2,
         "the contrast should be out of balance: {imbalance}"
     );
+}
+
+/// A path down the family-S domain with a concave arc, a convex one and a concave one onto
+/// an uphill counter-slope (every concave radius above the domain's 1.8 m).
+fn hills() -> Bed {
+    let s = |length: f64, slope: f64| BedPiece::Straight { length, slope };
+    let a = |radius: f64| BedPiece::Arc { radius };
+    Bed::Path(vec![
+        s(6.0, 40.0),
+        a(3.0),
+        s(3.0, 15.0),
+        a(2.0),
+        s(3.0, 30.0),
+        a(4.0),
+        s(20.0, -5.0),
+    ])
+}
+
+#[test]
+fn gas_at_rest_stays_at_rest_on_a_path_of_bends() {
+    let case = empty_slide_at(hills(), 0.0);
+    let tf = two_fluid_solver(&case).unwrap();
+    let floor = tf.bent_floor();
+    assert!(floor.is_some());
+    let imbalance = largest_gas_imbalance(&tf, tf.p_g(), floor);
+    eprintln!("balanced on the path: {imbalance:e}");
+    assert!(
+        imbalance < 1e-9,
+        "gas imbalance {imbalance} of a node's weight"
+    );
+    let plane = two_fluid_solver(&empty_slide(Bed::Plane)).unwrap();
+    let imbalance = largest_gas_imbalance(&tf, plane.p_g(), floor);
+    assert!(
+        imbalance > 1e-2,
+        "the contrast should be out of balance: {imbalance}"
+    );
+}
+
+/// Paths and transects the bed-following coordinates cannot carry are refused before any
+/// step, naming the field: a concave arc no wider than the domain is high (a fold), a kink,
+/// a step beyond vertical, a path that stops short of the domain's end, a tilted gravity.
+#[test]
+fn bad_paths_are_refused_with_the_field() {
+    let fields = |bed: Bed, slope: f64| -> Vec<String> {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+        let mut case = load_case(&root.join("cases/sensitivity/base.ron")).unwrap();
+        case.gravity = Gravity::Constant {
+            magnitude: 9.80665,
+            slope,
+        };
+        case.bed = bed;
+        runout_case::validate_case(&case)
+            .err()
+            .unwrap_or_default()
+            .into_iter()
+            .map(|e| e.field)
+            .collect()
+    };
+    let s = |length: f64, slope: f64| BedPiece::Straight { length, slope };
+    let a = |radius: f64| BedPiece::Arc { radius };
+    assert!(fields(hills(), 0.0).is_empty());
+    assert_eq!(fields(hills(), 40.0), ["gravity"]);
+    let fold = Bed::Path(vec![s(5.0, 40.0), a(1.5), s(20.0, 0.0)]);
+    assert_eq!(fields(fold, 0.0), ["bed.Path: arc 0 at x = 5 m"]);
+    let convex = Bed::Path(vec![s(5.0, 10.0), a(1.0), s(20.0, 40.0)]);
+    assert!(fields(convex, 0.0).is_empty(), "a convex arc does not fold");
+    let kink = Bed::Path(vec![s(5.0, 40.0), s(20.0, 0.0)]);
+    assert_eq!(fields(kink, 0.0), ["bed.Path[1]"]);
+    let short = Bed::Path(vec![s(5.0, 40.0), a(3.0), s(5.0, 0.0)]);
+    assert_eq!(fields(short, 0.0), ["bed.Path"]);
+    let transect = |points: Vec<(f64, f64)>| Bed::Transect {
+        points,
+        radius: 2.0,
+    };
+    let cliff = transect(vec![(0.0, 20.0), (8.0, 10.0), (8.0, 5.0), (30.0, 0.0)]);
+    assert_eq!(fields(cliff, 0.0), ["bed.Transect.points[2]"]);
+    let fine = transect(vec![(0.0, 20.0), (8.0, 10.0), (12.0, 9.0), (30.0, 8.0)]);
+    assert!(fields(fine, 0.0).is_empty());
 }
 
 /// A bend that ends beyond the domain, a convex one and one in a gas-only case are refused

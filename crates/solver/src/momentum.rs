@@ -97,7 +97,7 @@ pub struct Context<'a> {
     pub gravity: (f64, f64),
     /// a floor that bends (docs/model.md §9): when set, gravity is its field, not `gravity`,
     /// and the v equations gain the centrifugal force of `PhaseFields::velocity_along`
-    pub bent_floor: Option<BentFloor>,
+    pub bent_floor: Option<&'a BentFloor>,
     /// time step [s] (`f64::INFINITY` for a steady iteration)
     pub dt: f64,
     /// convection scheme

@@ -84,7 +84,7 @@ impl OutletPoint {
 /// A side's outlet pressure at a point: under a bent floor the hydrostatic pressure follows
 /// its potential, p0 + ρ (Φ(corner) − Φ(point)); else p0 + ρ g_s s ([`SideBc`]).
 pub(crate) fn outlet_pressure(
-    bent_floor: Option<BentFloor>,
+    bent_floor: Option<&BentFloor>,
     bc: &SideBc,
     at: OutletPoint,
 ) -> Option<f64> {

@@ -297,7 +297,7 @@ fn bent_floor_sources_are_its_gravity_and_the_centrifugal_force() {
             grid: &grid,
             bcs: &bcs,
             gravity: (0.0, 0.0),
-            bent_floor: Some(floor),
+            bent_floor: Some(&floor),
             dt: f64::INFINITY,
             scheme: Scheme::Upwind,
             gas_pressure: &zeros,

@@ -9,6 +9,7 @@
 //! | `chute` | steady chute on a periodic column | the 1-D chute solver |
 //! | `incline` | μ(I) on a rough incline, flowing and at rest | Bagnold profile, creep closed form |
 //! | `coulomb-floor` | a block on a Coulomb floor, a layer between Coulomb side walls | the sliding-block law |
+//! | `bed-path` | a block sliding down a path of bends, a layer at rest on one | ū = √(2 g Δz), rest below the friction angle |
 //! | `haff` | energy equation in a box at rest | Haff (1983) |
 //! | `cooling` | cooling through the two-fluid step | Haff with viscous damping |
 //! | `settling` | settling column | the bed's weight |
@@ -28,7 +29,7 @@
 
 use crate::check::Check;
 use crate::checks::{
-    Cavity, Chute, Cooling, CoulombFloor, FluidizedBed, Haff, Incline, Poiseuille, SJjPhi,
+    BedPath, Cavity, Chute, Cooling, CoulombFloor, FluidizedBed, Haff, Incline, Poiseuille, SJjPhi,
     Settling, TaylorGreen,
 };
 
@@ -41,6 +42,7 @@ pub fn registry() -> Vec<Box<dyn Check>> {
         Box::new(Chute),
         Box::new(Incline),
         Box::new(CoulombFloor),
+        Box::new(BedPath),
         Box::new(Haff),
         Box::new(Cooling),
         Box::new(Settling),

@@ -755,8 +755,8 @@ impl TwoFluid {
     }
 
     /// The bent floor, if one acts.
-    pub fn bent_floor(&self) -> Option<BentFloor> {
-        self.model.bent_floor
+    pub fn bent_floor(&self) -> Option<&BentFloor> {
+        self.model.bent_floor.as_ref()
     }
 
     /// Whether solids phase `m` has a state-dependent model (JJ, revisited JJ, Jenkins) on

@@ -101,7 +101,7 @@ fn assemble_momentum(
         grid,
         bcs: &model.gas_walls,
         gravity: model.gravity,
-        bent_floor: model.bent_floor,
+        bent_floor: model.bent_floor.as_ref(),
         dt,
         scheme: model.settings.scheme,
         gas_pressure: &g.p,

@@ -1,6 +1,7 @@
 //! The checks of the registry ([`crate::registry`]), one per file, each a problem of
 //! [`crate::problems`] judged against its reference at a fast and a full size.
 
+mod bed_path;
 mod cavity;
 mod chute;
 mod cooling;
@@ -13,6 +14,7 @@ mod s_jj_phi;
 mod settling;
 mod taylor_green;
 
+pub use bed_path::BedPath;
 pub use cavity::{Cavity, CAVITY_CELLS, CAVITY_FAST_TARGET, CAVITY_TARGET};
 pub use chute::{relative_change, Chute, ChuteRun, CHUTE_TOLERANCE, FULL_RUNS};
 pub use cooling::Cooling;

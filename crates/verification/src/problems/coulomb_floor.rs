@@ -56,8 +56,10 @@ use runout_solver::two_fluid::{RelaxationBase, TwoFluid};
 use runout_walls::SolidsWallModel;
 
 use crate::chute1d::ChuteSidewalls;
+use crate::problems::case_copy::{ending_at, validated};
 use crate::problems::chute_column::{sliding_column, ChuteCheckSetup};
 use crate::problems::incline::{glass_beads, packed_layer, HEIGHT, HOLDUP};
+use crate::problems::stepping::Stepping;
 
 /// The gas in the block's pores (module doc).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -158,79 +160,6 @@ pub fn block_case(cells_x: usize, cells_y: usize, mu_w: f64, pore_gas: PoreGas) 
     block.solids[0].eps_s = BLOCK_EPS_S;
     block.solids[0].velocity = (BLOCK_SPEED, 0.0);
     validated(ending_at(case, FIT_WINDOW.1), "block")
-}
-
-/// `case` with every fidelity ending at `end` [s].
-fn ending_at(mut case: Case, end: f64) -> Case {
-    case.run.end_time = end;
-    case.fidelity.smoke.end_time = end;
-    case.fidelity.coarse.end_time = end;
-    if let Some(wall) = case.fidelity.wall.as_mut() {
-        wall.end_time = end;
-    }
-    case
-}
-
-/// `case` if it validates, else an error naming `what` and every refused field.
-fn validated(case: Case, what: &str) -> Result<Case> {
-    runout_case::validate_case(&case).map_err(|errors| {
-        let fields: Vec<String> = errors.iter().map(|e| e.to_string()).collect();
-        anyhow::anyhow!("the {what} case is invalid: {}", fields.join("; "))
-    })?;
-    Ok(case)
-}
-
-/// How a problem steps a solver itself, as the driver would: Δt from `dt.0`, growing by 1.2
-/// to `dt.2` while steps converge, halved when one does not, and given up below `dt.1`.
-#[derive(Clone, Copy, Debug)]
-struct Stepping {
-    /// residual, θ residual and divergence tolerances, largest outer iterations
-    tolerances: (f64, f64, f64, usize),
-    /// initial, smallest and largest Δt [s]
-    dt: (f64, f64, f64),
-}
-
-impl Stepping {
-    /// The case's own controls (`run.tolerances`, `run.dt`).
-    fn of(case: &Case) -> Self {
-        let (tol, dt) = (&case.run.tolerances, &case.run.dt);
-        Stepping {
-            tolerances: (
-                tol.residual,
-                tol.theta_residual,
-                tol.diverge,
-                tol.max_iterations as usize,
-            ),
-            dt: (dt.initial, dt.min, dt.max),
-        }
-    }
-
-    /// Steps `tf` from `*time` to `until`, calling `sample` after every converged step; `dt`
-    /// carries the time step from one call to the next.
-    fn march(
-        self,
-        tf: &mut TwoFluid,
-        (time, dt): (&mut f64, &mut f64),
-        until: f64,
-        mut sample: impl FnMut(f64, &TwoFluid),
-    ) -> Result<()> {
-        let (residual, theta_residual, diverge, iterations) = self.tolerances;
-        while *time < until - 1e-12 {
-            let this = dt.min(until - *time);
-            let step = tf.step(this, residual, theta_residual, diverge, iterations)?;
-            if !step.converged {
-                *dt *= 0.5;
-                if *dt < self.dt.1 {
-                    bail!("the step at t = {time} s did not converge: {step:?}");
-                }
-                continue;
-            }
-            *time += this;
-            sample(*time, tf);
-            *dt = (*dt * 1.2).min(self.dt.2);
-        }
-        Ok(())
-    }
 }
 
 /// One block run: its measured acceleration against Eq. (1).

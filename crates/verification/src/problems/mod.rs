@@ -85,6 +85,8 @@ pub enum VerifyError {
     Setup(String),
 }
 
+pub mod bed_path;
+pub(crate) mod case_copy;
 mod channel;
 pub mod chute_column;
 pub mod cooling_box;
@@ -96,6 +98,7 @@ mod lid_driven;
 pub mod paper_material;
 pub mod s_jj_phi;
 pub mod settling_column;
+pub(crate) mod stepping;
 mod vortex;
 
 pub use channel::*;
