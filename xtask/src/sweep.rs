@@ -18,13 +18,18 @@ pub use runout_study::sweep::{
     csv_field, matrix, parse_shard, progress_style, study_matrix, Matrix, SweepOptions,
 };
 
+/// The folder under cases/ of the slides down beds of several slopes (issue 57), which are
+/// not the paper's.
+pub const SLOPES_DIR: &str = "slopes";
+
 /// The paper's matrix (cases.md families S, F, M and A): every case under `cases_dir` but
 /// the stiff cases of `cargo xtask stability`, the column collapse of `cargo xtask verify
 /// collapse` (issue 7's check, verification-notes §2f), the slide onto a flat run-out
-/// (issue 43 item 5, docs/foot.md) and the sweeps of a study.
+/// (issue 43 item 5, docs/foot.md), the slides down real slopes ([`SLOPES_DIR`]) and the
+/// sweeps of a study.
 pub fn paper_matrix(cases_dir: &Path) -> Result<Matrix> {
     let mut m = matrix(cases_dir)?;
-    let apart = [STABILITY_DIR, COLLAPSE_DIR, FOOT_DIR].map(|d| cases_dir.join(d));
+    let apart = [STABILITY_DIR, COLLAPSE_DIR, FOOT_DIR, SLOPES_DIR].map(|d| cases_dir.join(d));
     m.runs
         .retain(|r| r.study.is_none() && !apart.iter().any(|d| r.file.starts_with(d)));
     Ok(m)
