@@ -17,6 +17,7 @@ mod load;
 mod name;
 mod read;
 pub mod reference;
+pub mod release;
 mod ron_error;
 mod run_control;
 mod schema;

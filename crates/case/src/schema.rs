@@ -11,6 +11,7 @@ use serde::{Deserialize, Serialize};
 use crate::run_control::{FidelityPresets, Numerics, RunControl};
 
 pub use crate::bed::{path_arcs, transect_arcs, Bed, BedPiece};
+pub use crate::release::{Gate, GateOpening, Polygon};
 pub use crate::sidewalls::{GasSidewall, Sidewalls};
 /// A side's solids condition: the wall crate's type, with its validation
 /// ([`SolidsWall::model`]).
@@ -51,6 +52,9 @@ pub struct Case {
     /// (docs/model.md §9).
     #[serde(default, skip_serializing_if = "Bed::is_plane")]
     pub bed: Bed,
+    /// Walls across the flow that hold the release until they open (none by default).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub gates: Vec<Gate>,
     /// What is recorded during the run.
     #[serde(default)]
     pub monitors: Monitors,
@@ -247,6 +251,10 @@ pub struct Initial {
     /// rectangular blocks of solids, later blocks overwrite earlier ones
     #[serde(default)]
     pub regions: Vec<Block>,
+    /// regions of solids bounded by polygons in world coordinates, after the blocks
+    /// (crates/case/src/release.rs)
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub polygons: Vec<Polygon>,
 }
 
 fn default_initial_theta() -> f64 {

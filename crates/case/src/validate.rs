@@ -10,6 +10,7 @@ use crate::bed::check_bed;
 use crate::checker::{Checker, FieldError, B};
 use crate::limits::*;
 use crate::name::name_error;
+use crate::release::check_release;
 use crate::schema::*;
 use crate::sidewalls::check_sidewalls;
 use crate::validate_grid::check_grids;
@@ -127,6 +128,7 @@ fn check_materials(c: &mut Checker, case: &Case) {
         check_sidewalls(c, sidewalls, check_solids_wall);
     }
     check_bed(c, case);
+    check_release(c, case);
 }
 
 /// The initial state: θ, velocities and the regions (inside the domain).

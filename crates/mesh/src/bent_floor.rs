@@ -356,6 +356,44 @@ impl BentFloor {
         -self.curvature(x) * u * u
     }
 
+    /// The bed-following (x, y) of the world point (`horizontal`, `elevation`) on this
+    /// floor's scale (∫ cos α dx and z_b from the path's origin): the x in `range` whose
+    /// normal passes through the point, found by bisection of the tangential offset
+    /// (X − h(x)) cos α − (Z − z_b(x)) sin α, which falls with x where the map does not fold;
+    /// `None` when no normal from `range` reaches it.
+    pub fn to_floor_coordinates(
+        &self,
+        (horizontal, elevation): (f64, f64),
+        range: (f64, f64),
+    ) -> Option<(f64, f64)> {
+        let offset = |x: f64| {
+            let a = self.angle(x);
+            (horizontal - self.floor_horizontal(x)) * a.cos()
+                - (elevation - self.floor_elevation(x)) * a.sin()
+        };
+        let (mut lo, mut hi) = range;
+        let (f_lo, f_hi) = (offset(lo), offset(hi));
+        if f_lo < 0.0 || f_hi > 0.0 {
+            return None;
+        }
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if mid <= lo || mid >= hi {
+                break;
+            }
+            if offset(mid) > 0.0 {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        let x = 0.5 * (lo + hi);
+        let a = self.angle(x);
+        let y = (horizontal - self.floor_horizontal(x)) * a.sin()
+            + (elevation - self.floor_elevation(x)) * a.cos();
+        Some((x, y))
+    }
+
     /// The path as rows (from x, to x, what, angle at the start and end [deg], elevation and
     /// horizontal distance at the start [m]) for `runout mesh` and `runout check --explain`,
     /// between `from` and `to` (the domain's ends).
@@ -543,6 +581,34 @@ mod tests {
                 "({x}, {y})"
             );
         }
+    }
+
+    /// World points mapped back to the floor's coordinates land where they came from (1e-9
+    /// m), on straights, concave and convex arcs; a point beyond the range is refused.
+    #[test]
+    fn world_points_map_back_to_the_floor() {
+        let f = hills();
+        for &(x, y) in &[
+            (0.5, 0.3),
+            (5.0, 0.8),
+            (8.3, 0.05),
+            (9.5, 1.2),
+            (11.0, 0.4),
+            (18.0, 1.0),
+        ] {
+            let a = f.angle(x);
+            let world = (
+                f.floor_horizontal(x) + y * a.sin(),
+                f.floor_elevation(x) + y * a.cos(),
+            );
+            let (xb, yb) = f.to_floor_coordinates(world, (-1.0, 20.0)).unwrap();
+            assert!(
+                (xb - x).abs() < 1e-9 && (yb - y).abs() < 1e-9,
+                "({x}, {y}) → ({xb}, {yb})"
+            );
+        }
+        let beyond = (f.floor_horizontal(20.0) + 1.0, f.floor_elevation(20.0));
+        assert_eq!(f.to_floor_coordinates(beyond, (-1.0, 20.0)), None);
     }
 
     /// `bed: Bend` is the path with one arc from x = 0, and that path's numbers are those of

@@ -11,6 +11,8 @@ use runout_walls::{RobinFace, SolidsWallModel};
 
 use crate::RunError;
 use runout_solver::bent_floor::BentFloor;
+
+use crate::polygon;
 use runout_solver::single_phase::{Fluid, Settings, SideBc, SinglePhase};
 use runout_solver::transport::Scheme;
 use runout_solver::two_fluid::{RelaxationBase, SolidsSpec, TwoFluid, TwoFluidSettings};
@@ -338,6 +340,13 @@ fn fill_initial_state(
     grid: &Grid,
 ) {
     let (nx, ny) = (grid.nx(), grid.ny());
+    // each polygon's corners in the solver's (x, y), as validation found them
+    let polygons: Vec<_> = case
+        .initial
+        .polygons
+        .iter()
+        .filter_map(|p| case.polygon_in_domain(p).ok().map(|corners| (p, corners)))
+        .collect();
     let (u0, v0) = case.initial.gas_velocity;
     let state = tf.state_mut();
     state.gas_mut().u.iter_mut().for_each(|u| *u = u0);
@@ -367,34 +376,55 @@ fn fill_initial_state(
                     }
                     Fill::CoveredFraction => covered_fraction(grid, i, j, block),
                 };
-                if covered <= 0.0 {
-                    continue;
-                }
-                for (m, bs) in block.solids.iter().enumerate() {
-                    let theta_b = bs.theta.max(runout_closures::guards::THETA_SMALL);
-                    let eps = if covered >= 1.0 {
-                        state.solids_mut(m).theta[k] = theta_b;
-                        bs.eps_s
-                    } else {
-                        // the block replaces the covered part of what the cell held
-                        let s = state.solids_mut(m);
-                        let kept = s.eps()[k] * (1.0 - covered);
-                        let added = bs.eps_s * covered;
-                        if kept + added > 0.0 {
-                            s.theta[k] = (kept * s.theta[k] + added * theta_b) / (kept + added);
-                        }
-                        kept + added
-                    };
-                    state.set_solids_fraction(m, k, eps);
-                    let s = state.solids_mut(m);
-                    for f in [i + (nx + 1) * j, i + 1 + (nx + 1) * j] {
-                        s.u[f] = bs.velocity.0;
-                    }
-                    for f in [k, k + nx] {
-                        s.v[f] = bs.velocity.1;
-                    }
-                }
+                fill_cell(state, (i, j, nx), covered, &block.solids);
             }
+            for (polygon, corners) in polygons.iter() {
+                let (xf, yf) = (grid.x.faces(), grid.y.faces());
+                let area = (xf[i + 1] - xf[i]) * (yf[j + 1] - yf[j]);
+                let covered =
+                    polygon::area_inside(corners, (xf[i], xf[i + 1]), (yf[j], yf[j + 1])) / area;
+                fill_cell(state, (i, j, nx), covered, &polygon.solids);
+            }
+        }
+    }
+}
+
+/// Cell (i, j) of a grid `nx` wide takes the solids state `solids` over the fraction
+/// `covered` of its area: all of it where it is covered whole, else the covered part of
+/// what it held replaced (θ weighted by εs); the faces of a cell it covers at all take its
+/// velocity.
+fn fill_cell(
+    state: &mut runout_solver::two_fluid::State,
+    (i, j, nx): (usize, usize, usize),
+    covered: f64,
+    solids: &[runout_case::BlockSolids],
+) {
+    if covered <= 0.0 {
+        return;
+    }
+    let k = i + nx * j;
+    for (m, bs) in solids.iter().enumerate() {
+        let theta_b = bs.theta.max(runout_closures::guards::THETA_SMALL);
+        let eps = if covered >= 1.0 {
+            state.solids_mut(m).theta[k] = theta_b;
+            bs.eps_s
+        } else {
+            // the region replaces the covered part of what the cell held
+            let s = state.solids_mut(m);
+            let kept = s.eps()[k] * (1.0 - covered);
+            let added = bs.eps_s * covered;
+            if kept + added > 0.0 {
+                s.theta[k] = (kept * s.theta[k] + added * theta_b) / (kept + added);
+            }
+            kept + added
+        };
+        state.set_solids_fraction(m, k, eps);
+        let s = state.solids_mut(m);
+        for f in [i + (nx + 1) * j, i + 1 + (nx + 1) * j] {
+            s.u[f] = bs.velocity.0;
+        }
+        for f in [k, k + nx] {
+            s.v[f] = bs.velocity.1;
         }
     }
 }

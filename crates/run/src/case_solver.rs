@@ -30,9 +30,10 @@ pub(super) trait CaseSolver {
     fn before_step(&mut self, _time: f64) -> bool {
         false
     }
-    /// The time of the next scheduled change (a timed gravity tilt), which the time loop
-    /// lands a step on as on the end time; `None` when nothing is scheduled by time.
-    fn next_event(&self) -> Option<f64> {
+    /// The time of the next scheduled change after `time` (a timed gravity tilt, a gate's
+    /// opening), which the time loop lands a step on as on the end time; `None` when
+    /// nothing is scheduled by time.
+    fn next_event(&self, _time: f64) -> Option<f64> {
         None
     }
     fn write_fields(&mut self, series: &mut PvdSeries, time: f64) -> Result<(), OutputError>;
@@ -298,6 +299,8 @@ pub(super) struct TwoFluidCase {
     pub(super) solver: TwoFluid,
     /// a tilt-on-impact schedule not yet tilted
     pub(super) tilt: Option<PendingTilt>,
+    /// the case's gates on the grid
+    pub(super) gates: crate::gates::GateSchedule,
     /// when this process tilted gravity (logged; not in checkpoints)
     pub(super) tilted_at: Option<f64>,
     pub(super) scratch: Vec<f64>,
@@ -376,6 +379,11 @@ impl CaseSolver for TwoFluidCase {
     }
 
     fn before_step(&mut self, time: f64) -> bool {
+        if let Some(faces) = self.gates.faces_if_changed(time) {
+            self.solver
+                .set_gate_faces(faces)
+                .expect("the schedule's faces fit its own grid");
+        }
         let Some(tilt) = self.tilt.clone() else {
             return false;
         };
@@ -396,11 +404,13 @@ impl CaseSolver for TwoFluidCase {
         true
     }
 
-    fn next_event(&self) -> Option<f64> {
-        match self.tilt.as_ref()?.trigger {
+    fn next_event(&self, time: f64) -> Option<f64> {
+        let tilt = self.tilt.as_ref().and_then(|t| match t.trigger {
             ImpactTrigger::Time(t) => Some(t),
             ImpactTrigger::FloorEpsS(_) | ImpactTrigger::CentroidBelow(_) => None,
-        }
+        });
+        let gate = self.gates.next_opening(time);
+        [tilt, gate].into_iter().flatten().min_by(f64::total_cmp)
     }
 
     fn write_fields(&mut self, series: &mut PvdSeries, time: f64) -> Result<(), OutputError> {

@@ -16,9 +16,11 @@ mod case_solver;
 pub mod checkpoint;
 mod dt_controller;
 pub mod explain;
+mod gates;
 pub mod lock;
 mod monitors;
 pub mod out_dir;
+mod polygon;
 pub mod runs_folder;
 pub mod seal;
 mod sidewalls;
@@ -167,9 +169,11 @@ fn case_solver(case: &Case) -> Result<Box<dyn CaseSolver>, RunError> {
     // the tilt's thresholds and times come from the case, so a checkpoint needs only
     // whether the tilt is still pending
     let tilt = PendingTilt::of(case);
+    let gates = gates::GateSchedule::new(&case.gates, tf.grid());
     Ok(Box::new(TwoFluidCase {
         solver: tf,
         tilt,
+        gates,
         tilted_at: None,
         scratch: vec![0.0; 2 * n],
         scratch2: vec![0.0; 2 * n],
@@ -519,7 +523,7 @@ fn time_loop(
         }
         let time = standing.time;
         // a step lands on a scheduled event (a timed tilt) as on the end time
-        let until = match solver.next_event() {
+        let until = match solver.next_event(time) {
             Some(t) if !case_solver::at_or_after(time, t) => t.min(end),
             _ => end,
         };

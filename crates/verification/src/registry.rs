@@ -9,6 +9,7 @@
 //! | `chute` | steady chute on a periodic column | the 1-D chute solver |
 //! | `incline` | μ(I) on a rough incline, flowing and at rest | Bagnold profile, creep closed form |
 //! | `coulomb-floor` | a block on a Coulomb floor, a layer between Coulomb side walls | the sliding-block law |
+//! | `release` | a polygon pile behind a gate on a slope | its mass, at rest until the gate opens |
 //! | `bed-path` | a block sliding down a path of bends, a layer at rest on one | ū = √(2 g Δz), rest below the friction angle |
 //! | `haff` | energy equation in a box at rest | Haff (1983) |
 //! | `cooling` | cooling through the two-fluid step | Haff with viscous damping |
@@ -29,8 +30,8 @@
 
 use crate::check::Check;
 use crate::checks::{
-    BedPath, Cavity, Chute, Cooling, CoulombFloor, FluidizedBed, Haff, Incline, Poiseuille, SJjPhi,
-    Settling, TaylorGreen,
+    BedPath, Cavity, Chute, Cooling, CoulombFloor, FluidizedBed, Haff, Incline, Poiseuille,
+    Release, SJjPhi, Settling, TaylorGreen,
 };
 
 /// Every check, in the order `cargo xtask verify all` runs them.
@@ -43,6 +44,7 @@ pub fn registry() -> Vec<Box<dyn Check>> {
         Box::new(Incline),
         Box::new(CoulombFloor),
         Box::new(BedPath),
+        Box::new(Release),
         Box::new(Haff),
         Box::new(Cooling),
         Box::new(Settling),

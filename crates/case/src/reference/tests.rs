@@ -126,11 +126,12 @@ fn every_field_of_every_shipped_case_is_documented() {
 }
 
 /// The Rust sources of the case file's types.
-const SOURCES: [&str; 10] = [
+const SOURCES: [&str; 11] = [
     include_str!("../schema.rs"),
     include_str!("../run_control.rs"),
     include_str!("../sidewalls.rs"),
     include_str!("../bed.rs"),
+    include_str!("../release.rs"),
     include_str!("../../../walls/src/spec.rs"),
     include_str!("../../../closures/src/friction.rs"),
     include_str!("../../../closures/src/drag.rs"),

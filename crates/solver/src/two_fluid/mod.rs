@@ -269,6 +269,9 @@ pub enum TwoFluidError {
     /// Gas inflow asked for on a side that is not a wall.
     #[error("gas inflow on the {0} side, which is an outlet")]
     InflowOnOutlet(String),
+    /// A field of flags or values of the wrong size.
+    #[error("{0}")]
+    Shape(String),
     /// A solids phase whose side is a wall where the gas's is an outlet, or an outlet where
     /// the gas's is a wall ([`SolidsSpec::walls`]).
     #[error(
@@ -752,6 +755,26 @@ impl TwoFluid {
     /// does not hold it (the case does).
     pub fn set_bent_floor(&mut self, floor: Option<BentFloor>) {
         self.model.bent_floor = floor;
+    }
+
+    /// Closes the u faces flagged in `faces` ((nx + 1) × ny, row by row; empty for none) to
+    /// the gas and every solids phase, as a gate across the flow does (`gates` of a case,
+    /// issue 57 item 2): their rows hold u = 0 with no pressure or volume-fraction correction
+    /// (d = e = 0), as a wall's normal faces do, and they do not count in the momentum
+    /// residual. The gate holds only the normal velocity: it exerts no tangential stress on
+    /// the v nodes beside it, and granular heat conducts across it. A run sets the faces from
+    /// the case's gates before every step.
+    pub fn set_gate_faces(&mut self, faces: Vec<bool>) -> Result<(), TwoFluidError> {
+        let g = &self.model.grid;
+        let expected = (g.nx() + 1) * g.ny();
+        if !faces.is_empty() && faces.len() != expected {
+            return Err(TwoFluidError::Shape(format!(
+                "gate faces: {} flags for {expected} u faces",
+                faces.len()
+            )));
+        }
+        self.model.gate_faces = faces;
+        Ok(())
     }
 
     /// The bent floor, if one acts.

@@ -32,6 +32,9 @@ pub(super) struct Model {
     /// a floor that bends (docs/model.md §9): when set, its field replaces `gravity` and the
     /// v equations gain the centrifugal force; none on a plane floor
     pub bent_floor: Option<BentFloor>,
+    /// the u faces a gate closes at present, (nx + 1) × ny flags (empty: none), where the gas
+    /// and every solids phase hold u = 0 as at a wall ([`super::TwoFluid::set_gate_faces`])
+    pub gate_faces: Vec<bool>,
     /// iteration settings
     pub settings: TwoFluidSettings,
     /// what this solver computes (derived when built, and when the side walls are set)

@@ -435,8 +435,10 @@ fn decouple_component(
         omega: model.settings.relax_velocity,
         solids_bases,
     };
-    let residual = eliminate_drag(&model.grid, c, relax, &mut gas, solids, &mut worst);
-    fix_wall_rows(c, &model.gas_inflow, &mut gas, solids);
+    // a gate closes u faces only (it stands across the flow)
+    let gate: &[bool] = if c.dir == 0 { &model.gate_faces } else { &[] };
+    let residual = eliminate_drag(&model.grid, c, relax, gate, &mut gas, solids, &mut worst);
+    fix_wall_rows(c, &model.gas_inflow, gate, &mut gas, solids);
     (residual, worst)
 }
 
@@ -448,13 +450,14 @@ struct Relax {
     solids_bases: [RelaxationBase; MAX_SOLIDS_PHASES],
 }
 
-/// The partial elimination of the drag at every coupled (not fixed) node of component `c`,
-/// with relaxation `relax` (module doc); returns the component's momentum residual and keeps
-/// the largest in `worst`.
+/// The partial elimination of the drag at every coupled node of component `c` (not fixed,
+/// not closed by a `gate`), with relaxation `relax` (module doc); returns the component's
+/// momentum residual and keeps the largest in `worst`.
 fn eliminate_drag(
     grid: &Grid,
     c: Component,
     relax: Relax,
+    gate: &[bool],
     gas: &mut GasComponent<'_>,
     solids: &mut [SolidsComponent<'_>],
     worst: &mut (f64, usize, usize, usize, usize),
@@ -471,7 +474,7 @@ fn eliminate_drag(
         7 => eliminate_drag_with::<8>,
         m => unreachable!("{m} solids phases: the set-up allows at most {MAX_SOLIDS_PHASES}"),
     };
-    eliminate(grid, c, relax, gas, solids, worst)
+    eliminate(grid, c, relax, gate, gas, solids, worst)
 }
 
 /// [`eliminate_drag`] with N phases (the gas and N − 1 solids phases).
@@ -479,6 +482,7 @@ fn eliminate_drag_with<const N: usize>(
     grid: &Grid,
     c: Component,
     relax: Relax,
+    gate: &[bool],
     gas: &mut GasComponent<'_>,
     solids: &mut [SolidsComponent<'_>],
     worst: &mut (f64, usize, usize, usize, usize),
@@ -490,7 +494,7 @@ fn eliminate_drag_with<const N: usize>(
     for j in 0..c.my {
         for i in 0..c.mx {
             let k = i + c.mx * j;
-            if gas.a.pattern().fixed_mask()[k] {
+            if gas.a.pattern().fixed_mask()[k] || gate.get(k).copied().unwrap_or(false) {
                 continue;
             }
             let node = gather::<N>(c, (i, j), dx, dy, gas, solids);
@@ -634,16 +638,24 @@ fn decouple<const N: usize>(
 }
 
 /// Fixed (wall) nodes of component `c`: the gas holds its wall's velocity (its inflow
-/// through a distributor, else zero), the solids zero; no d or e.
+/// through a distributor, else zero), the solids zero; no d or e. The nodes a `gate` closes
+/// hold zero for every phase, as a wall's.
 fn fix_wall_rows(
     c: Component,
     inflow: &Sides<f64>,
+    gate: &[bool],
     gas: &mut GasComponent<'_>,
     solids: &mut [SolidsComponent<'_>],
 ) {
     for k in 0..gas.d.len() {
-        if gas.a.pattern().fixed_mask()[k] {
-            fixed_row(gas.a, k, c.wall_inflow(inflow, k));
+        let closed = gate.get(k).copied().unwrap_or(false);
+        if gas.a.pattern().fixed_mask()[k] || closed {
+            let wall_velocity = if closed {
+                0.0
+            } else {
+                c.wall_inflow(inflow, k)
+            };
+            fixed_row(gas.a, k, wall_velocity);
             gas.d[k] = 0.0;
             for s in solids.iter_mut() {
                 fixed_row(s.a, k, 0.0);

@@ -96,6 +96,7 @@ impl TwoFluid {
                 solids_specs,
                 gravity,
                 bent_floor: None,
+                gate_faces: Vec::new(),
                 settings,
                 scene,
                 sidewalls: None,

@@ -96,6 +96,7 @@ pub mod haff_energy;
 pub mod incline;
 mod lid_driven;
 pub mod paper_material;
+pub mod release;
 pub mod s_jj_phi;
 pub mod settling_column;
 pub(crate) mod stepping;
