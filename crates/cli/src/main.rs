@@ -107,7 +107,9 @@ enum Command {
     /// (definitions: runout-post's metrics module) and the deposit: whether and when the
     /// solids came to rest (εs-weighted mean u_s ≤ v_rest = 1 % of √(g H∞) and a still
     /// front from then on), the distal edges at εs ≥ 0.01 and ≥ 0.3, L∞ from the release's
-    /// east edge and H∞, the largest thickness at εs ≥ 0.3 (docs/deposit.md).
+    /// east edge and H∞, the largest thickness at εs ≥ 0.3, with the cells across it; a
+    /// warning on stderr where the dense deposit is fewer than `--min-cells` cells thick
+    /// (docs/deposit.md).
     Post {
         /// a run folder (runs/<case>/<fidelity>, or a `.partial` one of a run still going)
         run_dir: PathBuf,
@@ -116,12 +118,15 @@ enum Command {
         #[arg(long, value_name = "CSV")]
         gates: Option<PathBuf>,
         /// write the deposit profile along x to this CSV
-        /// (x,thickness_dense,thickness_dilute,solids_height; m)
+        /// (x,thickness_dense,thickness_dilute,solids_height; m; cells_dense)
         #[arg(long, value_name = "CSV")]
         deposit_profile: Option<PathBuf>,
         /// v_rest as a fraction of √(g H∞)
         #[arg(long, default_value_t = runout_post::deposit::DEFAULT_REST_FRACTION)]
         rest_fraction: f64,
+        /// warn where the dense deposit is fewer than this many cells thick
+        #[arg(long, default_value_t = runout_post::deposit::DEFAULT_MIN_CELLS, value_parser = clap::value_parser!(usize))]
+        min_cells: usize,
     },
     /// Print a wall model's Robin coefficients for velocity and granular temperature, with
     /// the diagnostics the paper plots (h_w^u, φ, COL, FRI, slip), as JSON.
@@ -148,10 +153,14 @@ fn post(
     run_dir: &std::path::Path,
     gates: Option<&std::path::Path>,
     deposit_profile: Option<&std::path::Path>,
-    rest_fraction: f64,
+    (rest_fraction, min_cells): (f64, usize),
 ) -> ExitCode {
     if !(rest_fraction > 0.0 && rest_fraction < 1.0) {
         eprintln!("runout post: --rest-fraction {rest_fraction}: allowed (0, 1)");
+        return ExitCode::FAILURE;
+    }
+    if min_cells == 0 {
+        eprintln!("runout post: --min-cells 0: allowed 1 or more");
         return ExitCode::FAILURE;
     }
     let described = match gates {
@@ -176,10 +185,12 @@ fn post(
             return ExitCode::FAILURE;
         }
     };
-    if rest_fraction != runout_post::deposit::DEFAULT_REST_FRACTION || deposit_profile.is_some() {
+    let custom = rest_fraction != runout_post::deposit::DEFAULT_REST_FRACTION
+        || min_cells != runout_post::deposit::DEFAULT_MIN_CELLS;
+    if custom || deposit_profile.is_some() {
         let read = runout_post::folder::read_resolved_unvalidated(run_dir)
             .and_then(|case| runout_post::deposit::read_deposit(run_dir, &case, rest_fraction));
-        let (deposit, profile) = match read {
+        let (mut deposit, profile) = match read {
             Ok(d) => d,
             Err(e) => {
                 eprintln!("runout post: deposit: {e}");
@@ -193,7 +204,14 @@ fn post(
                 return ExitCode::FAILURE;
             }
         }
+        deposit.thin = runout_post::deposit::thin_deposit(&profile, min_cells);
         metrics.deposit = Ok(deposit);
+    }
+    if let Ok(runout_post::deposit::Deposit {
+        thin: Some(thin), ..
+    }) = &metrics.deposit
+    {
+        eprintln!("runout post: warning: {}", thin.warning());
     }
     match serde_json::to_string_pretty(&metrics) {
         Ok(json) => {
@@ -621,11 +639,12 @@ fn main() -> ExitCode {
             gates,
             deposit_profile,
             rest_fraction,
+            min_cells,
         } => post(
             &run_dir,
             gates.as_deref(),
             deposit_profile.as_deref(),
-            rest_fraction,
+            (rest_fraction, min_cells),
         ),
         Command::Wall(args) => match cmd_wall::run(&args) {
             Ok(()) => ExitCode::SUCCESS,

@@ -18,7 +18,11 @@
 //!   x1 of the initial blocks holding solids);
 //! - **thickness** of a column: the top face of its highest cell with εs ≥ εs*; **H∞**:
 //!   the largest dense (εs ≥ 0.3) thickness; **solids height**: Σ εs Δy (the column's solids
-//!   volume per unit floor area).
+//!   volume per unit floor area);
+//! - **cells across** a column's dense deposit: the cells from the floor to its highest cell
+//!   with εs ≥ 0.3. Where a deposit is fewer than [`DEFAULT_MIN_CELLS`] cells thick its shape
+//!   and its edge are the grid's more than the flow's (docs/collapse-floor.md, docs/foot.md):
+//!   `runout post` warns and says where ([`ThinDeposit`]).
 
 use std::path::Path;
 
@@ -36,6 +40,8 @@ pub const DENSE_EPS_S: f64 = 0.3;
 pub const GRAIN_EDGE_DIAMETERS: f64 = 1.0;
 /// Default v_rest as a fraction of √(g H∞).
 pub const DEFAULT_REST_FRACTION: f64 = 0.01;
+/// The fewest cells across a dense deposit below which `runout post` warns (issue 57 item 3).
+pub const DEFAULT_MIN_CELLS: usize = 5;
 
 /// The deposit of one run (module doc for the definitions).
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -68,6 +74,11 @@ pub struct Deposit {
     pub max_thickness: f64,
     /// x of the column where H∞ is [m]
     pub max_thickness_x: f64,
+    /// cells across the dense deposit where H∞ is
+    pub max_thickness_cells: usize,
+    /// where the dense deposit is fewer than [`DEFAULT_MIN_CELLS`] cells thick, if anywhere
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub thin: Option<ThinDeposit>,
     /// on a floor that bends (`bed: Bend`, docs/model.md §9): where the deposit lies on it
     #[serde(skip_serializing_if = "Option::is_none")]
     pub on_the_run_out: Option<RunOut>,
@@ -101,13 +112,66 @@ pub struct RunOut {
     pub centre_ratio: f64,
 }
 
+/// Where a dense deposit is fewer than `min_cells` cells thick (module doc).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct ThinDeposit {
+    /// the fewest cells asked for
+    pub min_cells: usize,
+    /// the columns of the dense deposit thinner than that, of all its columns
+    pub columns: (usize, usize),
+    /// the westmost and eastmost of them, cell-centre x [m]
+    pub x_range: (f64, f64),
+    /// their share of the dense deposit's solids volume Σ εs Δy Δx [-]
+    pub solids_share: f64,
+}
+
+impl ThinDeposit {
+    /// The warning `runout post` prints.
+    pub fn warning(&self) -> String {
+        format!(
+            "the dense deposit is fewer than {} cells thick in {} of its {} columns, from x = {:.4} to {:.4} m ({:.0} % of its solids): there its thickness and edge are the grid's; refine the grid toward the floor (docs/deposit.md)",
+            self.min_cells,
+            self.columns.0,
+            self.columns.1,
+            self.x_range.0,
+            self.x_range.1,
+            100.0 * self.solids_share
+        )
+    }
+}
+
+/// Where the dense deposit of `profile` is fewer than `min_cells` cells thick, `None` where
+/// it is not (or there is no dense deposit).
+pub fn thin_deposit(profile: &[DepositColumn], min_cells: usize) -> Option<ThinDeposit> {
+    let dense: Vec<&DepositColumn> = profile.iter().filter(|c| c.cells_dense > 0).collect();
+    let thin: Vec<&&DepositColumn> = dense.iter().filter(|c| c.cells_dense < min_cells).collect();
+    if thin.is_empty() {
+        return None;
+    }
+    let volume = |cs: &mut dyn Iterator<Item = &DepositColumn>| -> f64 {
+        cs.map(|c| c.solids_height * c.width).sum()
+    };
+    let total = volume(&mut dense.iter().copied());
+    let share = volume(&mut thin.iter().map(|c| **c));
+    Some(ThinDeposit {
+        min_cells,
+        columns: (thin.len(), dense.len()),
+        x_range: (thin[0].x, thin[thin.len() - 1].x),
+        solids_share: if total > 0.0 { share / total } else { 0.0 },
+    })
+}
+
 /// One column of the deposit profile.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct DepositColumn {
     /// cell-centre x [m]
     pub x: f64,
+    /// the column's width [m]
+    pub width: f64,
     /// thickness at εs ≥ 0.3 [m]
     pub thickness_dense: f64,
+    /// cells across the dense deposit (module doc)
+    pub cells_dense: usize,
     /// thickness at εs ≥ 0.01 [m]
     pub thickness_dilute: f64,
     /// Σ εs Δy [m]
@@ -134,10 +198,13 @@ pub fn read_deposit(
     let speeds = bulk
         .column("mean_u_s")
         .map_err(|e| format!("bulk.csv: {e}"))?;
-    let (max_thickness, max_thickness_x) = profile
+    let (max_thickness, max_thickness_x, max_thickness_cells) = profile
         .iter()
-        .map(|c| (c.thickness_dense, c.x))
-        .fold((0.0, xf[0]), |best, c| if c.0 > best.0 { c } else { best });
+        .map(|c| (c.thickness_dense, c.x, c.cells_dense))
+        .fold(
+            (0.0, xf[0], 0),
+            |best, c| if c.0 > best.0 { c } else { best },
+        );
     let rest_speed = rest_fraction * (gravity_magnitude(case) * max_thickness).sqrt();
     let rest_time = rest_time(&times, &fronts, &speeds, rest_speed);
     let release_edge_x = release_edge(case).unwrap_or(xf[0]);
@@ -162,6 +229,8 @@ pub fn read_deposit(
             runout_grain: distal_edge_grain - release_edge_x,
             max_thickness,
             max_thickness_x,
+            max_thickness_cells,
+            thin: thin_deposit(&profile, DEFAULT_MIN_CELLS),
             on_the_run_out: run_out(case, distal_edge_grain, centre_x(&profile, &xf))?,
         },
         profile,
@@ -210,22 +279,22 @@ fn centre_x(profile: &[DepositColumn], xf: &[f64]) -> f64 {
     moment / volume
 }
 
-/// The area-weighted centre x of the initial blocks that hold solids.
+/// The area-weighted centre x of the released regions.
 fn release_centre(case: &Case) -> Option<f64> {
-    let (moment, area) = released_blocks(case).fold((0.0, 0.0), |(m, a), b| {
-        let area = (b.x.1 - b.x.0) * (b.y.1 - b.y.0);
-        (m + 0.5 * (b.x.0 + b.x.1) * area, a + area)
+    let (moment, area) = released(case).iter().fold((0.0, 0.0), |(m, a), r| {
+        (m + r.centre_x * r.area, a + r.area)
     });
     (area > 0.0).then(|| moment / area)
 }
 
-/// The profile as CSV text: `x,thickness_dense,thickness_dilute,solids_height` (m).
+/// The profile as CSV text: `x,thickness_dense,thickness_dilute,solids_height` (m) and
+/// `cells_dense`.
 pub fn profile_csv(profile: &[DepositColumn]) -> String {
-    let mut s = String::from("x,thickness_dense,thickness_dilute,solids_height\n");
+    let mut s = String::from("x,thickness_dense,thickness_dilute,solids_height,cells_dense\n");
     for c in profile {
         s.push_str(&format!(
-            "{:e},{:e},{:e},{:e}\n",
-            c.x, c.thickness_dense, c.thickness_dilute, c.solids_height
+            "{:e},{:e},{:e},{:e},{}\n",
+            c.x, c.thickness_dense, c.thickness_dilute, c.solids_height, c.cells_dense
         ));
     }
     s
@@ -267,15 +336,13 @@ pub fn profile(eps: &[f64], xf: &[f64], yf: &[f64]) -> Vec<DepositColumn> {
     (0..nx)
         .map(|i| {
             let column = |j: usize| eps[j * nx + i];
-            let top = |threshold: f64| {
-                (0..ny)
-                    .rev()
-                    .find(|&j| column(j) >= threshold)
-                    .map_or(0.0, |j| yf[j + 1] - yf[0])
-            };
+            let highest = |threshold: f64| (0..ny).rev().find(|&j| column(j) >= threshold);
+            let top = |threshold: f64| highest(threshold).map_or(0.0, |j| yf[j + 1] - yf[0]);
             DepositColumn {
                 x: 0.5 * (xf[i] + xf[i + 1]),
+                width: xf[i + 1] - xf[i],
                 thickness_dense: top(DENSE_EPS_S),
+                cells_dense: highest(DENSE_EPS_S).map_or(0, |j| j + 1),
                 thickness_dilute: top(DILUTE_EPS_S),
                 solids_height: (0..ny).map(|j| column(j) * (yf[j + 1] - yf[j])).sum(),
             }
@@ -310,22 +377,64 @@ fn gravity_magnitude(case: &Case) -> f64 {
     }
 }
 
-/// The smallest x0 of the initial blocks that hold solids.
+/// The smallest x of the released regions.
 fn release_rear(case: &Case) -> Option<f64> {
-    released_blocks(case).map(|b| b.x.0).reduce(f64::min)
+    released(case).iter().map(|r| r.x.0).reduce(f64::min)
 }
 
-/// The largest x1 of the initial blocks that hold solids.
+/// The largest x of the released regions.
 fn release_edge(case: &Case) -> Option<f64> {
-    released_blocks(case).map(|b| b.x.1).reduce(f64::max)
+    released(case).iter().map(|r| r.x.1).reduce(f64::max)
 }
 
-/// The initial blocks that hold solids.
-fn released_blocks(case: &Case) -> impl Iterator<Item = &runout_case::Block> {
-    case.initial
+/// One released region in the solver's coordinates: its x extent, area and centre x.
+struct Released {
+    x: (f64, f64),
+    area: f64,
+    centre_x: f64,
+}
+
+/// The initial blocks and polygons that hold solids (a polygon by its corners in the
+/// solver's (x, y), as the run fills it).
+fn released(case: &Case) -> Vec<Released> {
+    let holds = |solids: &[runout_case::BlockSolids]| solids.iter().any(|s| s.eps_s > 0.0);
+    let blocks = case
+        .initial
         .regions
         .iter()
-        .filter(|b| b.solids.iter().any(|s| s.eps_s > 0.0))
+        .filter(|b| holds(&b.solids))
+        .map(|b| Released {
+            x: b.x,
+            area: (b.x.1 - b.x.0) * (b.y.1 - b.y.0),
+            centre_x: 0.5 * (b.x.0 + b.x.1),
+        });
+    let polygons = case
+        .initial
+        .polygons
+        .iter()
+        .filter(|p| holds(&p.solids))
+        .filter_map(|p| case.polygon_in_domain(p).ok())
+        .map(|corners| {
+            let n = corners.len();
+            // the centroid's x: Σ (x_k + x_k+1) c_k / (6 A), c_k the shoelace term
+            let (mut twice_area, mut moment) = (0.0, 0.0);
+            for k in 0..n {
+                let (a, b) = (corners[k], corners[(k + 1) % n]);
+                let c = a.0 * b.1 - b.0 * a.1;
+                twice_area += c;
+                moment += (a.0 + b.0) * c;
+            }
+            let xs = corners.iter().map(|c| c.0);
+            Released {
+                x: (
+                    xs.clone().fold(f64::INFINITY, f64::min),
+                    xs.fold(f64::NEG_INFINITY, f64::max),
+                ),
+                area: 0.5 * twice_area.abs(),
+                centre_x: moment / (3.0 * twice_area),
+            }
+        });
+    blocks.chain(polygons).collect()
 }
 
 #[cfg(test)]
@@ -360,7 +469,9 @@ mod tests {
         // the deposit's centre weighs each column's solids height by its width
         let column = |x: f64, h: f64| DepositColumn {
             x,
+            width: 1.0,
             thickness_dense: h,
+            cells_dense: 1,
             thickness_dilute: h,
             solids_height: h,
         };
@@ -368,6 +479,61 @@ mod tests {
         assert!((centre_x(&profile, &[0.0, 1.0, 3.0]) - (0.5 + 2.0 * 2.0) / 3.0).abs() < 1e-15);
         let plane = runout_case::load_case(&root.join("cases/sensitivity/base.ron")).unwrap();
         assert_eq!(run_out(&plane, 10.0, 10.0).unwrap(), None);
+    }
+
+    /// A polygon release (cases/slopes/gated-pile.ron: a trapezoid in the floor's
+    /// coordinates from the back wall, 2.309 cm high, to the gate at 0.1 m, 8.083 cm high)
+    /// has its rear, edge and centre: the trapezoid's centroid L (h0 + 2 h1)/(3 (h0 + h1)).
+    #[test]
+    fn a_polygon_release_has_its_edges_and_centre() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+        let case = runout_case::load_case(&root.join("cases/slopes/gated-pile.ron")).unwrap();
+        let (h0, h1) = (
+            0.02 / 30f64.to_radians().cos(),
+            (0.02 + 0.05) / 30f64.to_radians().cos(),
+        );
+        assert!(release_rear(&case).unwrap().abs() < 1e-9);
+        assert!((release_edge(&case).unwrap() - 0.1).abs() < 1e-5);
+        let centroid = 0.1 * (h0 + 2.0 * h1) / (3.0 * (h0 + h1));
+        assert!(
+            (release_centre(&case).unwrap() - centroid).abs() < 1e-5,
+            "{:?}",
+            release_centre(&case)
+        );
+    }
+
+    /// A deposit of 2 × 2 cells rising to 6 over 4 columns of a grid whose cells thicken
+    /// upward: its cells across, and the columns thinner than 5 with their share of its
+    /// solids.
+    #[test]
+    fn a_thin_deposit_is_found_and_said() {
+        let xf = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0];
+        let yf: Vec<f64> = (0..=8).map(|j| 0.1 * (j * j) as f64).collect();
+        let (nx, ny) = (5, 8);
+        let heights = [2, 6, 4, 2, 0];
+        let mut eps = vec![0.0; nx * ny];
+        for (i, &h) in heights.iter().enumerate() {
+            for j in 0..h {
+                eps[i + nx * j] = 0.6;
+            }
+        }
+        let p = profile(&eps, &xf, &yf);
+        let cells: Vec<usize> = p.iter().map(|c| c.cells_dense).collect();
+        assert_eq!(cells, [2, 6, 4, 2, 0]);
+        assert!((p[1].thickness_dense - 3.6).abs() < 1e-12);
+        let thin = thin_deposit(&p, 5).unwrap();
+        assert_eq!(thin.columns, (3, 4));
+        assert_eq!(thin.x_range, (0.5, 3.5));
+        // solids heights 0.6 × (0.4, 3.6, 1.6, 0.4): the thin ones hold 2.4 of 6.0
+        assert!(
+            (thin.solids_share - 0.4).abs() < 1e-12,
+            "{}",
+            thin.solids_share
+        );
+        assert!(thin
+            .warning()
+            .contains("fewer than 5 cells thick in 3 of its 4 columns"));
+        assert_eq!(thin_deposit(&p, 2), None);
     }
 
     /// The rest time is the first sample of the final still stretch; a front that moves or a
@@ -410,9 +576,8 @@ mod tests {
         let faces = [0.0, 0.1, 0.2, 0.3, 0.4];
         assert_eq!(distal_edge(&two_rows[..4], &faces, DILUTE_EPS_S), 0.2);
         assert_eq!(distal_edge(&two_rows[..4], &faces, 0.5), 0.1);
-        assert!(
-            profile_csv(&p).starts_with("x,thickness_dense,thickness_dilute,solids_height\n5e-1,")
-        );
+        assert!(profile_csv(&p)
+            .starts_with("x,thickness_dense,thickness_dilute,solids_height,cells_dense\n5e-1,"));
         // the grain edge: the last column holding at least this solids height
         assert_eq!(grain_edge(&p, &xf, 0.1), 2.0);
         assert_eq!(grain_edge(&p, &xf, 0.5), 1.0);
