@@ -12,6 +12,7 @@
 //!   sensitivity <path>`: studies of many runs on the user's own cases ([`cmd_study`]).
 
 mod cmd_closures;
+mod cmd_grid_error;
 mod cmd_study;
 mod cmd_wall;
 mod material;
@@ -146,6 +147,12 @@ enum Command {
     /// the front and mean u_s at each run's end over every one-factor family of the sweeps
     /// under PATH; writes `DIR/results/elasticities.csv`.
     Sensitivity(cmd_study::SensitivityArgs),
+    /// The grid error of where a case's flow stops: the case run on three or more grids,
+    /// each twice as coarse as the one before, into `--out/<case>-x<factor>/` (completed
+    /// levels are reused); for the deposit's runout L∞, maximum thickness H∞ and centre,
+    /// the observed order, the Richardson value and Roache's GCI of the finest grid
+    /// (docs/deposit.md).
+    GridError(cmd_grid_error::GridErrorArgs),
 }
 
 /// `runout post`: the metrics of one run folder as pretty JSON on stdout.
@@ -656,6 +663,7 @@ fn main() -> ExitCode {
         Command::Sweep(args) => exit_code("sweep", cmd_study::sweep(&args)),
         Command::Calibrate(args) => exit_code("calibrate", cmd_study::calibrate(&args)),
         Command::Sensitivity(args) => exit_code("sensitivity", cmd_study::sensitivity(&args)),
+        Command::GridError(args) => exit_code("grid-error", cmd_grid_error::grid_error(&args)),
     }
 }
 

@@ -76,6 +76,8 @@ pub struct Deposit {
     pub max_thickness_x: f64,
     /// cells across the dense deposit where H∞ is
     pub max_thickness_cells: usize,
+    /// the deposit's centre along the floor: the solids-height-weighted x of its columns [m]
+    pub centre_x: f64,
     /// where the dense deposit is fewer than [`DEFAULT_MIN_CELLS`] cells thick, if anywhere
     #[serde(skip_serializing_if = "Option::is_none")]
     pub thin: Option<ThinDeposit>,
@@ -231,6 +233,7 @@ pub fn read_deposit(
             max_thickness_x,
             max_thickness_cells,
             thin: thin_deposit(&profile, DEFAULT_MIN_CELLS),
+            centre_x: centre_x(&profile, &xf),
             on_the_run_out: run_out(case, distal_edge_grain, centre_x(&profile, &xf))?,
         },
         profile,

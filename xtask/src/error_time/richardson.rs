@@ -3,19 +3,8 @@
 //! asymptotic range (which decides whether the Richardson extrapolation of
 //! [`super::errors`] is to be trusted).
 
-use runout_case::Convection;
+pub(super) use runout_post::gci::{asymptotic, ASYMPTOTIC_BAND};
 
-/// An observed order is asymptotic within these fractions of the nominal order range.
-pub(super) const ASYMPTOTIC_BAND: (f64, f64) = (0.5, 1.5);
-
-/// The nominal order range of a scheme (upwind: 1; Superbee: 1 at extrema and fronts where
-/// the limiter falls back to upwind, 2 where the solution is smooth).
-pub(super) fn nominal_order(scheme: &Convection) -> (f64, f64) {
-    match scheme {
-        Convection::Upwind => (1.0, 1.0),
-        Convection::Superbee => (1.0, 2.0),
-    }
-}
 /// The observed order of a quantity from the three finest levels.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Order {
@@ -27,10 +16,4 @@ pub struct Order {
     pub d32: f64,
     /// the observed order, if the differences shrink at a positive rate (p ≤ 20)
     pub p: Option<f64>,
-}
-
-/// Whether an observed order lies within [`ASYMPTOTIC_BAND`] of the scheme's nominal range.
-pub fn asymptotic(p: f64, scheme: &Convection) -> bool {
-    let (lo, hi) = nominal_order(scheme);
-    (ASYMPTOTIC_BAND.0 * lo..=ASYMPTOTIC_BAND.1 * hi).contains(&p)
 }
