@@ -132,9 +132,10 @@ pub fn grid_error(args: &GridErrorArgs) -> Result<()> {
             deposit.max_thickness,
             deposit.max_thickness_cells,
             deposit.centre_x,
-            deposit
-                .thin
-                .map_or(String::new(), |t| format!("; {}", t.warning()))
+            deposit.thin.map_or(String::new(), |t| format!(
+                "; {}",
+                t.message(deposit.max_thickness_cells)
+            ))
         );
         ladder.push(Level {
             spacing: f64::from(*factor),

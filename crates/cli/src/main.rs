@@ -109,8 +109,8 @@ enum Command {
     /// solids came to rest (εs-weighted mean u_s ≤ v_rest = 1 % of √(g H∞) and a still
     /// front from then on), the distal edges at εs ≥ 0.01 and ≥ 0.3, L∞ from the release's
     /// east edge and H∞, the largest thickness at εs ≥ 0.3, with the cells across it; a
-    /// warning on stderr where the dense deposit is fewer than `--min-cells` cells thick
-    /// (docs/deposit.md).
+    /// warning on stderr where the dense deposit is nowhere `--min-cells` cells thick, a
+    /// note on its thin edge (docs/deposit.md).
     Post {
         /// a run folder (runs/<case>/<fidelity>, or a `.partial` one of a run still going)
         run_dir: PathBuf,
@@ -125,7 +125,7 @@ enum Command {
         /// v_rest as a fraction of √(g H∞)
         #[arg(long, default_value_t = runout_post::deposit::DEFAULT_REST_FRACTION)]
         rest_fraction: f64,
-        /// warn where the dense deposit is fewer than this many cells thick
+        /// warn where the dense deposit is nowhere this many cells thick
         #[arg(long, default_value_t = runout_post::deposit::DEFAULT_MIN_CELLS, value_parser = clap::value_parser!(usize))]
         min_cells: usize,
     },
@@ -214,11 +214,10 @@ fn post(
         deposit.thin = runout_post::deposit::thin_deposit(&profile, min_cells);
         metrics.deposit = Ok(deposit);
     }
-    if let Ok(runout_post::deposit::Deposit {
-        thin: Some(thin), ..
-    }) = &metrics.deposit
-    {
-        eprintln!("runout post: warning: {}", thin.warning());
+    if let Ok(d) = &metrics.deposit {
+        if let Some(thin) = &d.thin {
+            eprintln!("runout post: {}", thin.message(d.max_thickness_cells));
+        }
     }
     match serde_json::to_string_pretty(&metrics) {
         Ok(json) => {

@@ -20,9 +20,9 @@
 //!   the largest dense (εs ≥ 0.3) thickness; **solids height**: Σ εs Δy (the column's solids
 //!   volume per unit floor area);
 //! - **cells across** a column's dense deposit: the cells from the floor to its highest cell
-//!   with εs ≥ 0.3. Where a deposit is fewer than [`DEFAULT_MIN_CELLS`] cells thick its shape
+//!   with εs ≥ 0.3. Where a deposit is nowhere [`DEFAULT_MIN_CELLS`] cells thick its shape
 //!   and its edge are the grid's more than the flow's (docs/collapse-floor.md, docs/foot.md):
-//!   `runout post` warns and says where ([`ThinDeposit`]).
+//!   `runout post` warns; it notes the thin edge every deposit has ([`ThinDeposit`]).
 
 use std::path::Path;
 
@@ -128,17 +128,29 @@ pub struct ThinDeposit {
 }
 
 impl ThinDeposit {
-    /// The warning `runout post` prints.
-    pub fn warning(&self) -> String {
-        format!(
-            "the dense deposit is fewer than {} cells thick in {} of its {} columns, from x = {:.4} to {:.4} m ({:.0} % of its solids): there its thickness and edge are the grid's; refine the grid toward the floor (docs/deposit.md)",
-            self.min_cells,
+    /// What `runout post` prints: a warning when even the thickest column, `max_cells`
+    /// across, is thinner than `min_cells` (the deposit is nowhere resolved), else a note on
+    /// its thin edge (every deposit thins to nothing at its edges).
+    pub fn message(&self, max_cells: usize) -> String {
+        let columns = format!(
+            "{} of its {} columns, from x = {:.4} to {:.4} m, {:.0} % of its solids",
             self.columns.0,
             self.columns.1,
             self.x_range.0,
             self.x_range.1,
             100.0 * self.solids_share
-        )
+        );
+        if max_cells < self.min_cells {
+            format!(
+                "warning: the dense deposit is at most {max_cells} cells thick, fewer than {} ({columns}): its thickness and its edge are the grid's; refine the grid toward the floor (docs/deposit.md)",
+                self.min_cells
+            )
+        } else {
+            format!(
+                "note: the dense deposit is fewer than {} cells thick in {columns} (its thin edge)",
+                self.min_cells
+            )
+        }
     }
 }
 
