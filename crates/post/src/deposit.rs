@@ -545,9 +545,12 @@ mod tests {
             "{}",
             thin.solids_share
         );
+        assert!(thin.message(6).starts_with(
+            "note: the dense deposit is fewer than 5 cells thick in 3 of its 4 columns"
+        ));
         assert!(thin
-            .warning()
-            .contains("fewer than 5 cells thick in 3 of its 4 columns"));
+            .message(4)
+            .starts_with("warning: the dense deposit is at most 4 cells thick"));
         assert_eq!(thin_deposit(&p, 2), None);
     }
 
