@@ -3,6 +3,10 @@
 //! - a μ(I) block released sliding at 1 m/s down a 20° Coulomb floor accelerates at
 //!   g (sin θ − μ_w cos θ): the μ_w its acceleration implies within 2 % of μ_w, in a thin
 //!   pore gas (in air the pore gas carries part of the weight; printed, not judged);
+//! - a packed layer released at rest on a Coulomb floor with μ_f = 0.5 above tan θ stays at
+//!   rest (its mean speed below 2e-3 m/s; the regularisation creeps at 1.1e-4 m/s), and with
+//!   μ_f = 0.3 below tan θ it slides (above 0.03 m/s in 0.1 s) — a layer uniform along the
+//!   slope, since a block's free faces slump whatever the floor;
 //! - a packed layer sliding on a Coulomb floor between Coulomb side walls accelerates at
 //!   g sin θ − μ_f g cos θ − (2 μ_sw/W) g cos θ y_c: the friction it feels within 2 % of that.
 //!
@@ -17,7 +21,8 @@
 
 use crate::check::{Check, Limit, Outcome, Size};
 use crate::problems::coulomb_floor::{
-    run_block, run_energy_line, run_layer, PoreGas, ENERGY_LINE_BED, LAYER_WALLS, SLOPE_DEG,
+    layer_at_rest, run_block, run_energy_line, run_layer, PoreGas, ENERGY_LINE_BED, LAYER_WALLS,
+    REST_SPEEDS, SLOPE_DEG,
 };
 
 /// The largest relative error of the implied friction [-] (issue 61).
@@ -68,6 +73,23 @@ impl Check for CoulombFloor {
                     Limit::AtMost(FRICTION_TOLERANCE),
                 );
             }
+        }
+        let (at_rest, sliding) = REST_SPEEDS;
+        for (mu_f, limit) in [
+            (0.5, Limit::AtMost(at_rest)),
+            (0.3, Limit::AtLeast(sliding)),
+        ] {
+            let speed = layer_at_rest(layers[0], mu_f)?;
+            println!(
+                "  a packed layer released at rest on a Coulomb floor μ_f {mu_f} (tan {SLOPE_DEG}° = {:.3}), {} cells: largest mean speed {speed:.2e} m/s",
+                SLOPE_DEG.to_radians().tan(),
+                layers[0]
+            );
+            outcome.measure(
+                format!("layer released at rest, μ_f {mu_f}: largest mean speed [m/s]"),
+                speed,
+                limit,
+            );
         }
         if size == Size::Full {
             let (mu_w, nx, ny) = (0.2, 120, 16);

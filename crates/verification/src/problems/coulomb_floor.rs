@@ -201,6 +201,43 @@ pub fn run_block(cells_x: usize, cells_y: usize, mu_w: f64, pore_gas: PoreGas) -
     })
 }
 
+/// A packed layer released at rest on a Coulomb floor of friction `mu_f` (the layer of
+/// [`run_layer`] without side walls, uniform along the slope, so with no face to slump):
+/// the largest |mean u_s| over [`LAYER_RUN`]'s time [m s⁻¹]. Above tan θ it stays at rest
+/// (but for the regularisation's creep, u_min r/√(1 − r²), 1.1e-4 m/s at μ_f = 0.5);
+/// below, it slides.
+pub fn layer_at_rest(cells: usize, mu_f: f64) -> Result<f64> {
+    let (_, end, dt) = LAYER_RUN;
+    let setup = ChuteCheckSetup {
+        cells,
+        height: HEIGHT,
+        holdup: HOLDUP,
+        slope_deg: SLOPE_DEG,
+        floor: SolidsWallModel::coulomb(mu_f, runout_walls::coulomb::DEFAULT_SLIP_FLOOR)?,
+        sidewalls: None,
+        closures: glass_beads(),
+        initial_velocity: 0.0,
+        initial_eps_s: Some(packed_layer(cells, SLOPE_DEG)),
+        initial_theta: 1e-6,
+        ..ChuteCheckSetup::default()
+    };
+    let mut tf = sliding_column(&setup, GRAVITY)?;
+    let mut largest: f64 = 0.0;
+    let stepping = Stepping {
+        tolerances: (1e-3, 1e-4, 1e4, 100),
+        dt: (1e-4, 1e-7, dt),
+    };
+    stepping.march(&mut tf, (&mut 0.0, &mut 1e-4), end, |_, tf| {
+        largest = largest.max(mean_speed(tf).abs());
+    })?;
+    Ok(largest)
+}
+
+/// The largest mean speed of a layer at rest [m s⁻¹] (20 × the creep at μ_f = 0.5) and the
+/// least of one that slides (μ_f = 0.3, below tan θ: it gains g (sin θ − μ_f cos θ) t =
+/// 0.06 m/s in 0.1 s).
+pub const REST_SPEEDS: (f64, f64) = (2e-3, 0.03);
+
 /// One run of the layer between side walls: its acceleration against Eq. (2).
 #[derive(Clone, Debug)]
 pub struct LayerRun {
