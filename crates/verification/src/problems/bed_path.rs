@@ -29,15 +29,12 @@
 //! hydrostatic balance over a path of bends is exact, to round-off:
 //! crates/run/tests/bent_floor.rs).
 
-use std::path::Path;
-
 use anyhow::{Context, Result};
-use runout_case::{load_case, Bed, BedPiece, Boundary, Case, Fidelity, Gravity, SolidsWall};
+use runout_case::{Bed, BedPiece, Boundary, Case, Fidelity, Gravity, SolidsWall};
 use runout_mesh::bent_floor::BentFloor;
-use runout_mesh::Segment;
 use runout_solver::two_fluid::TwoFluid;
 
-use crate::problems::case_copy::{ending_at, validated};
+use crate::problems::case_copy::{ending_at, template_on_grid, thin_gas, validated};
 use crate::problems::stepping::Stepping;
 
 /// The case the paths are built on, relative to the workspace root.
@@ -91,26 +88,21 @@ fn path_case(
     block: ((f64, f64), (f64, f64), f64),
     end: f64,
 ) -> Result<Case> {
-    let file = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../..")
-        .join(TEMPLATE);
-    let mut case = load_case(&file).with_context(|| format!("loading {}", file.display()))?;
-    case.name = format!("bed-path-{name}-{}x{}", cells.0, cells.1);
-    case.domain.x.segments = vec![Segment::Uniform {
-        length: DOMAIN.0,
-        cells: cells.0,
-    }];
-    case.domain.y.segments = vec![Segment::Uniform {
-        length: DOMAIN.1,
-        cells: cells.1,
-    }];
-    case.gravity = Gravity::Constant {
-        magnitude: GRAVITY,
-        slope: 0.0,
-    };
+    let case = template_on_grid(
+        TEMPLATE,
+        format!("bed-path-{name}-{}x{}", cells.0, cells.1),
+        DOMAIN,
+        cells,
+        Gravity::Constant {
+            magnitude: GRAVITY,
+            slope: 0.0,
+        },
+    )?;
+    let mut case = thin_gas(
+        case,
+        crate::problems::coulomb_floor::THIN_GAS_VISCOSITY_FRACTION,
+    )?;
     case.bed = Bed::Path(path);
-    let gas = case.gas.as_mut().context("the template has a gas")?;
-    gas.viscosity *= crate::problems::coulomb_floor::THIN_GAS_VISCOSITY_FRACTION;
     let Boundary::Wall { solids, .. } = &mut case.boundaries.south else {
         anyhow::bail!("{TEMPLATE}: the floor is not a wall");
     };

@@ -1,8 +1,44 @@
 //! Editing a shipped case into a check's own: its end time at every fidelity, and
 //! validation that names every refused field.
 
-use anyhow::Result;
-use runout_case::Case;
+use std::path::Path;
+
+use anyhow::{Context, Result};
+use runout_case::{load_case, Case, Gravity};
+use runout_mesh::Segment;
+
+/// The shipped case `template` (relative to the workspace root) renamed `name`, on a uniform
+/// grid of `cells` over `size` (along, across) [m], under `gravity`.
+pub(crate) fn template_on_grid(
+    template: &str,
+    name: String,
+    size: (f64, f64),
+    cells: (usize, usize),
+    gravity: Gravity,
+) -> Result<Case> {
+    let file = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .join(template);
+    let mut case = load_case(&file).with_context(|| format!("loading {}", file.display()))?;
+    case.name = name;
+    case.domain.x.segments = vec![Segment::Uniform {
+        length: size.0,
+        cells: cells.0,
+    }];
+    case.domain.y.segments = vec![Segment::Uniform {
+        length: size.1,
+        cells: cells.1,
+    }];
+    case.gravity = gravity;
+    Ok(case)
+}
+
+/// `case` with its gas's viscosity scaled by `fraction` (a thin pore gas whose drag, in the
+/// Stokes regime, scales with it).
+pub(crate) fn thin_gas(mut case: Case, fraction: f64) -> Result<Case> {
+    case.gas.as_mut().context("the case has a gas")?.viscosity *= fraction;
+    Ok(case)
+}
 
 /// `case` with every fidelity ending at `end` [s].
 pub(crate) fn ending_at(mut case: Case, end: f64) -> Case {

@@ -23,7 +23,7 @@
 //! between successive 50 ms windows), which Eq. (1) does not count.
 //!
 //! **The pore gas.** Eq. (1) is the law of a block in vacuum. In air the block is a
-//! two-fluid body: as it spreads and settles (its centre sinks at about 3 cm/s) it expels
+//! two-fluid body: as it spreads and settles it expels
 //! the gas in its pores, and the gas's drag carries part of its weight, so the floor's load
 //! and its friction are smaller than Eq. (1) assumes. At 120 × 16, μ_w = 0.2, the μ_w Eq. (1)
 //! implies is 0.1984 in air and 0.1997 with the gas's viscosity a hundredth of air's
@@ -47,16 +47,14 @@
 //! ([`run_energy_line`]) stops on the flat; the drop of its centre of mass over the centre's
 //! horizontal travel is at least μ_w.
 
-use std::path::Path;
-
 use anyhow::{bail, Context, Result};
-use runout_case::{load_case, Boundary, Case, Fidelity, Gravity, SolidsWall};
+use runout_case::{Boundary, Case, Fidelity, Gravity, SolidsWall};
 use runout_mesh::Segment;
 use runout_solver::two_fluid::{RelaxationBase, TwoFluid};
 use runout_walls::SolidsWallModel;
 
 use crate::chute1d::ChuteSidewalls;
-use crate::problems::case_copy::{ending_at, validated};
+use crate::problems::case_copy::{ending_at, template_on_grid, thin_gas, validated};
 use crate::problems::chute_column::{sliding_column, ChuteCheckSetup};
 use crate::problems::incline::{glass_beads, packed_layer, HEIGHT, HOLDUP};
 use crate::problems::stepping::Stepping;
@@ -126,27 +124,19 @@ pub fn fitted_slope(times: &[f64], values: &[f64], window: (f64, f64)) -> Option
 /// The block case on `cells_x` × `cells_y` cells with floor friction `mu_w` and `pore_gas`
 /// (module doc).
 pub fn block_case(cells_x: usize, cells_y: usize, mu_w: f64, pore_gas: PoreGas) -> Result<Case> {
-    let file = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../..")
-        .join(TEMPLATE);
-    let mut case = load_case(&file).with_context(|| format!("loading {}", file.display()))?;
-    case.name = format!("coulomb-block-mu{mu_w}-{cells_x}x{cells_y}-{pore_gas:?}");
+    let mut case = template_on_grid(
+        TEMPLATE,
+        format!("coulomb-block-mu{mu_w}-{cells_x}x{cells_y}-{pore_gas:?}"),
+        (0.6, 0.04),
+        (cells_x, cells_y),
+        Gravity::Constant {
+            magnitude: GRAVITY,
+            slope: SLOPE_DEG,
+        },
+    )?;
     if pore_gas == PoreGas::Thin {
-        let gas = case.gas.as_mut().context("the template has a gas")?;
-        gas.viscosity *= THIN_GAS_VISCOSITY_FRACTION;
+        case = thin_gas(case, THIN_GAS_VISCOSITY_FRACTION)?;
     }
-    case.domain.x.segments = vec![Segment::Uniform {
-        length: 0.6,
-        cells: cells_x,
-    }];
-    case.domain.y.segments = vec![Segment::Uniform {
-        length: 0.04,
-        cells: cells_y,
-    }];
-    case.gravity = Gravity::Constant {
-        magnitude: GRAVITY,
-        slope: SLOPE_DEG,
-    };
     let Boundary::Wall { solids, .. } = &mut case.boundaries.south else {
         bail!("{TEMPLATE}: the floor is not a wall");
     };
@@ -201,6 +191,29 @@ pub fn run_block(cells_x: usize, cells_y: usize, mu_w: f64, pore_gas: PoreGas) -
     })
 }
 
+/// The packed layer of the glass beads on `cells` cells across its strip, sliding at `speed`
+/// on a Coulomb floor of friction `mu_f`, between `sidewalls` if any.
+fn layer_setup(
+    cells: usize,
+    mu_f: f64,
+    sidewalls: Option<ChuteSidewalls>,
+    speed: f64,
+) -> Result<ChuteCheckSetup> {
+    Ok(ChuteCheckSetup {
+        cells,
+        height: HEIGHT,
+        holdup: HOLDUP,
+        slope_deg: SLOPE_DEG,
+        floor: SolidsWallModel::coulomb(mu_f, runout_walls::coulomb::DEFAULT_SLIP_FLOOR)?,
+        sidewalls,
+        closures: glass_beads(),
+        initial_velocity: speed,
+        initial_eps_s: Some(packed_layer(cells, SLOPE_DEG)),
+        initial_theta: 1e-6,
+        ..ChuteCheckSetup::default()
+    })
+}
+
 /// A packed layer released at rest on a Coulomb floor of friction `mu_f` (the layer of
 /// [`run_layer`] without side walls, uniform along the slope, so with no face to slump):
 /// the largest |mean u_s| over [`LAYER_RUN`]'s time [m s⁻¹]. Above tan θ it stays at rest
@@ -208,19 +221,7 @@ pub fn run_block(cells_x: usize, cells_y: usize, mu_w: f64, pore_gas: PoreGas) -
 /// below, it slides.
 pub fn layer_at_rest(cells: usize, mu_f: f64) -> Result<f64> {
     let (_, end, dt) = LAYER_RUN;
-    let setup = ChuteCheckSetup {
-        cells,
-        height: HEIGHT,
-        holdup: HOLDUP,
-        slope_deg: SLOPE_DEG,
-        floor: SolidsWallModel::coulomb(mu_f, runout_walls::coulomb::DEFAULT_SLIP_FLOOR)?,
-        sidewalls: None,
-        closures: glass_beads(),
-        initial_velocity: 0.0,
-        initial_eps_s: Some(packed_layer(cells, SLOPE_DEG)),
-        initial_theta: 1e-6,
-        ..ChuteCheckSetup::default()
-    };
+    let setup = layer_setup(cells, mu_f, None, 0.0)?;
     let mut tf = sliding_column(&setup, GRAVITY)?;
     let mut largest: f64 = 0.0;
     let stepping = Stepping {
@@ -260,22 +261,11 @@ pub const LAYER_RUN: (f64, f64, f64) = (1.0, 0.1, 1e-3);
 pub fn run_layer(cells: usize) -> Result<LayerRun> {
     let (mu_f, mu_sw, width) = LAYER_WALLS;
     let (speed, end, dt) = LAYER_RUN;
-    let setup = ChuteCheckSetup {
-        cells,
-        height: HEIGHT,
-        holdup: HOLDUP,
-        slope_deg: SLOPE_DEG,
-        floor: SolidsWallModel::coulomb(mu_f, runout_walls::coulomb::DEFAULT_SLIP_FLOOR)?,
-        sidewalls: Some(ChuteSidewalls {
-            width,
-            solids: SolidsWallModel::coulomb(mu_sw, runout_walls::coulomb::DEFAULT_SLIP_FLOOR)?,
-        }),
-        closures: glass_beads(),
-        initial_velocity: speed,
-        initial_eps_s: Some(packed_layer(cells, SLOPE_DEG)),
-        initial_theta: 1e-6,
-        ..ChuteCheckSetup::default()
+    let sidewalls = ChuteSidewalls {
+        width,
+        solids: SolidsWallModel::coulomb(mu_sw, runout_walls::coulomb::DEFAULT_SLIP_FLOOR)?,
     };
+    let setup = layer_setup(cells, mu_f, Some(sidewalls), speed)?;
     let mut tf = sliding_column(&setup, GRAVITY)?;
     let (mut times, mut speeds) = (vec![0.0], vec![mean_speed(&tf)]);
     let stepping = Stepping {

@@ -15,13 +15,10 @@
 //! stays below [`REST_SPEED`], and the front does not pass the gate; 0.2 s after it opens the
 //! front is at least 5 cm past it; the solids mass drifts by at most [`MASS_DRIFT`].
 
-use std::path::Path;
-
 use anyhow::{Context, Result};
-use runout_case::{load_case, Case, Fidelity, Gate, GateOpening, Gravity, Polygon};
-use runout_mesh::Segment;
+use runout_case::{Case, Fidelity, Gate, GateOpening, Gravity, Polygon};
 
-use crate::problems::case_copy::{ending_at, validated};
+use crate::problems::case_copy::{ending_at, template_on_grid, thin_gas, validated};
 
 /// The case the pile is built on, relative to the workspace root.
 pub const TEMPLATE: &str = "cases/collapse/CM-a1.ron";
@@ -39,8 +36,8 @@ pub const END: f64 = 0.4;
 /// [m s⁻¹]: 0.013 % of √(g h) for its 6 cm.
 pub const REST_SPEED: f64 = 1e-4;
 /// When the pile has settled [s]: released at εs 0.58, below the packing its weight holds at
-/// its base, it sinks into it first (its mean speed peaks at 1.3 cm/s at 15 ms and is below
-/// 1e-4 m/s from 45 ms on 100 × 30 cells).
+/// its base, it sinks into it first, at up to about a centimetre per second in its first
+/// tens of milliseconds.
 pub const SETTLED: f64 = 0.1;
 /// The largest drift of the solids mass over the run [-]: the εs correction's closure
 /// (`numerics.exact_solids_mass`), 2e-10 on 100 × 30 once the pile flows.
@@ -66,25 +63,20 @@ pub fn pile_corners() -> Vec<(f64, f64)> {
 
 /// The gated pile on `cells` (along, across) cells.
 pub fn pile_case(cells: (usize, usize)) -> Result<Case> {
-    let file = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../..")
-        .join(TEMPLATE);
-    let mut case = load_case(&file).with_context(|| format!("loading {}", file.display()))?;
-    case.name = format!("release-pile-{}x{}", cells.0, cells.1);
-    case.domain.x.segments = vec![Segment::Uniform {
-        length: DOMAIN.0,
-        cells: cells.0,
-    }];
-    case.domain.y.segments = vec![Segment::Uniform {
-        length: DOMAIN.1,
-        cells: cells.1,
-    }];
-    case.gravity = Gravity::Constant {
-        magnitude: 9.81,
-        slope: SLOPE_DEG,
-    };
-    let gas = case.gas.as_mut().context("the template has a gas")?;
-    gas.viscosity *= crate::problems::coulomb_floor::THIN_GAS_VISCOSITY_FRACTION;
+    let case = template_on_grid(
+        TEMPLATE,
+        format!("release-pile-{}x{}", cells.0, cells.1),
+        DOMAIN,
+        cells,
+        Gravity::Constant {
+            magnitude: 9.81,
+            slope: SLOPE_DEG,
+        },
+    )?;
+    let mut case = thin_gas(
+        case,
+        crate::problems::coulomb_floor::THIN_GAS_VISCOSITY_FRACTION,
+    )?;
     let mut solids = case.initial.regions[0].solids.clone();
     solids[0].eps_s = PILE.1;
     case.initial.regions.clear();
