@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Issue 58's relaxation regression: one family-S case run with the shipped numerics and with
-# one setting changed at a time (MFIX's relaxation 0.5/0.5/0.8, every-iteration dilute cells,
-# an outer-iteration tolerance of 1e-4), each a copy of cases/sensitivity/{base,SWEEP}.ron
-# with `numerics`/`run.tolerances` edited; prints each variant's floor front (εs ≥ 0.01) at
-# the station time and at 1.3, 1.4 and 1.5 s (bulk.csv's interpolated front), and max u_s.
+# one setting changed at a time (MFIX's relaxation 0.5/0.5/0.8; MFIX's pooled momentum
+# residual, with family S's and with MFIX's relaxation; an outer-iteration tolerance of
+# 1e-4), each a copy of cases/sensitivity/{base,SWEEP}.ron with `numerics`/`run.tolerances`
+# edited; prints each variant's floor front (εs ≥ 0.01) at the station time and at 1.3, 1.4
+# and 1.5 s (bulk.csv's interpolated front), max u_s, steps and outer iterations.
 # usage: examples/relaxation-check.sh FIDELITY OUT [SWEEP] [ONLY]
 #   e.g. examples/relaxation-check.sh coarse /tmp/r58            (S-JEN-d, d = 0.5 mm)
 set -euo pipefail
@@ -18,9 +19,11 @@ edit() {  # variant, sed expression on base.ron
 }
 edit shipped ""
 edit mfix-relaxation 's/relaxation: (velocity: 0.7, theta: 1.0, pressure: 1.0,/relaxation: (velocity: 0.5, theta: 0.5, pressure: 0.8,/'
-edit every-iteration 's/dilute_cells: FrozenWhenCycling,/dilute_cells: EveryIteration,/'
+pooled='s/tolerances: (residual: 1e-3,/tolerances: (momentum_residual: Pooled, residual: 1e-3,/'
+edit pooled "$pooled"
+edit pooled-mfix-relaxation "$pooled;s/relaxation: (velocity: 0.7, theta: 1.0, pressure: 1.0,/relaxation: (velocity: 0.5, theta: 0.5, pressure: 0.8,/"
 edit tolerance-1e-4 's/tolerances: (residual: 1e-3,/tolerances: (residual: 1e-4,/'
-for v in shipped mfix-relaxation every-iteration tolerance-1e-4; do
+for v in shipped mfix-relaxation pooled pooled-mfix-relaxation tolerance-1e-4; do
   RAYON_NUM_THREADS=${RAYON_NUM_THREADS:-1} "$runout" sweep "$out/$v/$sweep.ron" --only "$only" \
     --fidelity "$fidelity" --out "$out/$v/out" --jobs 1 > "$out/$v.log" 2>&1
   dir=$(ls -d "$out/$v/out/runs/"*"/$fidelity")
@@ -29,5 +32,7 @@ for v in shipped mfix-relaxation every-iteration tolerance-1e-4; do
   umax=$(echo "$metrics" | grep -m1 '"max_u_s"' | tr -dc '0-9.')
   hist=$(awk -F, 'NR>1 && (($1>=1.2995 && $1<1.3045) || ($1>=1.3995 && $1<1.4045) || ($1>=1.4995 && $1<1.5045)) {printf " %.2f s: %.3f m", $1, $5}' "$dir/bulk.csv")
   wall=$(grep -o '[0-9.]* s wall' "$out/$v.log" | head -1)
-  echo "$v: front at the station $front m, max u_s $umax m/s;$hist ($wall)"
+  its=$(grep -o '"outer_iterations": *[0-9]*' "$dir/summary.json" | tr -dc '0-9')
+  steps=$(grep -o '"steps": *[0-9]*' "$dir/summary.json" | tr -dc '0-9')
+  echo "$v: front at the station $front m, max u_s $umax m/s;$hist; $steps steps, $its outer iterations ($wall)"
 done

@@ -102,6 +102,23 @@ pub struct Tolerances {
     /// (MFIX `DETECT_STALL`, default true; docs/model.md §4.11; the single-phase core ignores it)
     #[serde(default = "default_detect_stall")]
     pub detect_stall: bool,
+    /// two-fluid cases: how the momentum residual is normalised (docs/model.md §4.11):
+    /// per class of node (the gas; each solids phase's packed body and its loose flow;
+    /// default), or pooled over every node and phase as MFIX's `calc_resid.f` does
+    #[serde(default)]
+    pub momentum_residual: MomentumResidual,
+}
+
+/// The normalisation of the momentum residual ([`Tolerances::momentum_residual`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum MomentumResidual {
+    /// Σ|r| / Σ|a_P U| per class of node — the gas, each solids phase's nodes where
+    /// friction carries most of the viscosity, the rest of its nodes — the largest class
+    /// counting: the packed body's large a_P does not hide the head of a flow
+    #[default]
+    ByClass,
+    /// Σ|r| / Σ|a_P U| over every node and phase (MFIX)
+    Pooled,
 }
 
 fn default_detect_stall() -> bool {
@@ -132,6 +149,7 @@ impl Default for Tolerances {
             diverge: default_tol_diverge(),
             max_iterations: default_max_iterations(),
             detect_stall: default_detect_stall(),
+            momentum_residual: MomentumResidual::default(),
         }
     }
 }

@@ -327,6 +327,8 @@ fn two_fluid_settings(case: &Case) -> TwoFluidSettings {
             == runout_case::DiluteCellClass::FrozenWhenCycling,
         exact_solids_continuity: case.numerics.exact_solids_mass,
         detect_stall: case.run.tolerances.detect_stall,
+        pooled_momentum_residual: case.run.tolerances.momentum_residual
+            == runout_case::MomentumResidual::Pooled,
     }
 }
 

@@ -16,6 +16,7 @@
 //! | `settling` | settling column | the bed's weight |
 //! | `fluidized-bed` | fluidized bed | the bed's buoyant weight |
 //! | `s-jj-phi` | the paper's slide through the driver | bounds and conservation |
+//! | `relaxation` | the paper's slide with two under-relaxations | the same front and station numbers |
 //!
 //! Not here, and why: the granular column collapse (`cargo xtask verify collapse`, against
 //! the laboratory runout laws of [`crate::references::runout_laws`]) and family M against
@@ -31,7 +32,7 @@
 use crate::check::Check;
 use crate::checks::{
     BedPath, Cavity, Chute, Cooling, CoulombFloor, FluidizedBed, Haff, Incline, Poiseuille,
-    Release, SJjPhi, Settling, TaylorGreen,
+    Relaxation, Release, SJjPhi, Settling, TaylorGreen,
 };
 
 /// Every check, in the order `cargo xtask verify all` runs them.
@@ -50,6 +51,7 @@ pub fn registry() -> Vec<Box<dyn Check>> {
         Box::new(Settling),
         Box::new(FluidizedBed),
         Box::new(SJjPhi),
+        Box::new(Relaxation),
     ]
 }
 

@@ -27,3 +27,26 @@ fn the_floor_load_is_the_weight() {
         }
     }
 }
+
+/// The block on a frictionless Coulomb floor (μ_w = 0) in the thin pore gas, on 120 × 16 and
+/// 240 × 32 cells: whether the fine grid's deficit of about 0.003 in μ_w (a forward force
+/// that does not scale with μ_w) appears without friction (about 10 min):
+/// `cargo test --release -p runout-verification --test coulomb_floor frictionless --
+/// --ignored --nocapture`.
+#[test]
+#[ignore = "ten minutes: the finest grid"]
+fn the_frictionless_block_slides_at_g_sin_theta() {
+    use runout_verification::problems::coulomb_floor::{run_block, PoreGas};
+    for (nx, ny) in [(120, 16), (240, 32)] {
+        let run = run_block(nx, ny, 0.0, PoreGas::Thin).expect("the block ran");
+        println!(
+            "{nx} × {ny}: a = {:.4} m/s² against g sin θ = {:.4}: effective μ_w {:+.5} ({:.0} s)",
+            run.acceleration, run.expected, run.effective_mu_w, run.wall_time
+        );
+        assert!(
+            run.effective_mu_w.abs() < 0.002,
+            "{nx} × {ny}: {}",
+            run.effective_mu_w
+        );
+    }
+}

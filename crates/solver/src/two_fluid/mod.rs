@@ -236,6 +236,9 @@ pub struct TwoFluidSettings {
     /// below its value 5 iterations before ends the step as failed, so it is retried with a
     /// smaller Δt instead of iterating to `max_iterations`.
     pub detect_stall: bool,
+    /// The momentum residual normalised per class of node (default) or pooled over every
+    /// node as MFIX ([`residuals::ClassedResidual`], docs/model.md §4.11).
+    pub pooled_momentum_residual: bool,
 }
 
 impl Default for TwoFluidSettings {
@@ -252,6 +255,7 @@ impl Default for TwoFluidSettings {
             freeze_cycling_dilute_class: false,
             exact_solids_continuity: false,
             detect_stall: true,
+            pooled_momentum_residual: false,
         }
     }
 }

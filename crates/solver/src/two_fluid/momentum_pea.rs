@@ -13,7 +13,8 @@
 //! solids nodes (DIL_EP_S, docs/model.md §2.7) get the rows of [`super::dilute`] and e = 0;
 //! fixed (wall) nodes hold the wall's velocity and have d = e = 0. The momentum residual of
 //! docs/model.md §4.11 is taken at every coupled node before the elimination
-//! ([`super::residuals::CoupledNode::residual`]).
+//! ([`super::residuals::CoupledNode::residual`]), summed per class of node
+//! ([`super::residuals::ClassedResidual`]).
 
 use std::time::Instant;
 
@@ -26,7 +27,7 @@ use super::diagnostics::Diagnostics;
 use super::dilute::{dilute_faces, dilute_row};
 use super::model::Model;
 use super::relaxation::RelaxationBase;
-use super::residuals::CoupledNode;
+use super::residuals::{ClassedResidual, CoupledNode, NodeClass};
 use super::sidewalls::add_momentum_sinks;
 use super::state::GasState;
 use super::{
@@ -73,9 +74,15 @@ pub(super) fn momentum(
     } else {
         worst_u
     };
-    let mut residual = 0.0;
-    residual += residual_u;
-    residual += residual_v;
+    // docs/model.md §4.11: per class of node, or pooled as MFIX
+    let measure = |r: &ClassedResidual| {
+        if model.settings.pooled_momentum_residual {
+            r.pooled()
+        } else {
+            r.largest()
+        }
+    };
+    let residual = measure(&residual_u) + measure(&residual_v);
     let t = Instant::now();
     diagnostics.profile.iterations.momentum += solve_momentum(&model.grid, state, work)? as u64;
     // solves are reported apart from the assembly that encloses them
@@ -411,13 +418,13 @@ impl PhaseWork {
 }
 
 /// Component `c`'s side-wall sinks, partial elimination and wall rows (module doc); returns
-/// its momentum residual and its largest node residual.
+/// its momentum residual by class of node and its largest node residual.
 fn decouple_component(
     model: &Model,
     c: Component,
     mut gas: GasComponent<'_>,
     solids: &mut [SolidsComponent<'_>],
-) -> (f64, (f64, usize, usize, usize, usize)) {
+) -> (ClassedResidual, (f64, usize, usize, usize, usize)) {
     if let Some(sidewalls) = &model.sidewalls {
         // docs/model.md §8: the side walls' sinks join the rows before the elimination
         let gas_drag = sidewalls.gas_drag(model.gas.viscosity);
@@ -452,7 +459,7 @@ struct Relax {
 
 /// The partial elimination of the drag at every coupled node of component `c` (not fixed,
 /// not closed by a `gate`), with relaxation `relax` (module doc); returns the component's
-/// momentum residual and keeps the largest in `worst`.
+/// momentum residual by class of node and keeps the largest in `worst`.
 fn eliminate_drag(
     grid: &Grid,
     c: Component,
@@ -461,7 +468,7 @@ fn eliminate_drag(
     gas: &mut GasComponent<'_>,
     solids: &mut [SolidsComponent<'_>],
     worst: &mut (f64, usize, usize, usize, usize),
-) -> f64 {
+) -> ClassedResidual {
     // one loop per number of phases, its node arrays sized for it
     let eliminate = match solids.len() {
         0 => eliminate_drag_with::<1>,
@@ -486,11 +493,11 @@ fn eliminate_drag_with<const N: usize>(
     gas: &mut GasComponent<'_>,
     solids: &mut [SolidsComponent<'_>],
     worst: &mut (f64, usize, usize, usize, usize),
-) -> f64 {
+) -> ClassedResidual {
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
     let m = solids.len();
     debug_assert_eq!(m + 1, N);
-    let (mut num, mut den) = (0.0, 0.0);
+    let mut residual = ClassedResidual::default();
     for j in 0..c.my {
         for i in 0..c.mx {
             let k = i + c.mx * j;
@@ -506,8 +513,19 @@ fn eliminate_drag_with<const N: usize>(
                 let Some((res, scale)) = node.residual(p, m) else {
                     continue;
                 };
-                num += res;
-                den += scale;
+                let class = if p == 0 {
+                    NodeClass::Loose
+                } else {
+                    let coef = solids[p - 1].coefficients;
+                    let (c0, c1) = node.cells;
+                    NodeClass::of(
+                        [c0, c1]
+                            .into_iter()
+                            .flatten()
+                            .map(|c| (coef.mu[c], coef.mu_kin[c])),
+                    )
+                };
+                residual.add(p, class, res, scale);
                 if res > worst.0 {
                     *worst = (res, p, c.dir, i, j);
                 }
@@ -516,11 +534,7 @@ fn eliminate_drag_with<const N: usize>(
             decouple(c, (i, j), area, relax, &node, gas, solids);
         }
     }
-    if den > 0.0 {
-        num / den
-    } else {
-        num
-    }
+    residual
 }
 
 /// The coupled equations of node (i, j) of component `c` (index 0 the gas, p the solids

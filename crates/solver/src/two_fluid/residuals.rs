@@ -2,8 +2,9 @@
 //! a time step (docs/model.md §4.11, MFIX `calc_resid.f`, `check_convergence.f`).
 //!
 //! - momentum, per coupled velocity node and phase before relaxation: |r + drag coupling −
-//!   a_P φ|, normalised by Σ |a_P| |(U, V)| over the nodes where the phase moves
-//!   ([`CoupledNode::residual`]), summed over phases and components;
+//!   a_P φ|, normalised by Σ |a_P| |(U, V)| over the nodes of its class where the phase
+//!   moves ([`CoupledNode::residual`], [`ClassedResidual`]): the largest class's per
+//!   component (or, as MFIX, pooled over every node and phase), summed over components;
 //! - gas and solids continuity: the mean |mass imbalance| before the corrections, each
 //!   relative to its value at the step's first outer iteration ([`Convergence`]);
 //! - granular energy: Σ |residual| / Σ |a_P θ_P| over the dense cells, per phase.
@@ -18,7 +19,7 @@ use super::MAX_SOLIDS_PHASES;
 /// Normalised residuals of one outer iteration (docs/model.md §4.11).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct TwoFluidResiduals {
-    /// momentum of all phases and components, MFIX's normalisation, summed
+    /// momentum: per component the largest class's (or MFIX's pooled), summed
     pub momentum: f64,
     /// mean |gas mass imbalance| before the pressure correction [kg s⁻¹ per m depth]
     pub gas_mass: f64,
@@ -87,6 +88,88 @@ impl<const N: usize> CoupledNode<N> {
     }
 }
 
+/// The momentum residual of one velocity component by class of node: the gas, and for each
+/// solids phase its nodes where friction carries most of the viscosity (μ_s > 2 μ_kin in a
+/// cell beside the node: the packed body) apart from the rest (the collisional and loose
+/// flow, the head of a slide). Each class is normalised by its own Σ |a_P| |(U, V)|
+/// (docs/model.md §4.11): pooled as MFIX pools a phase's nodes, the packed body's
+/// frictional a_P, orders of magnitude above the head's, hides the head's residual, and the
+/// outer iterations stop before the head has moved where the converged step puts it (issue
+/// 58: the front of S-JEN-d at `wall` 13.12 m at a pooled 1e-3, 13.76 m at 1e-4 or with
+/// the classes).
+#[derive(Clone, Copy, Debug)]
+pub(super) struct ClassedResidual {
+    /// Σ residual and Σ normaliser per class: 0 the gas, 2p − 1 and 2p solids phase p's
+    /// loose and packed nodes
+    sums: [(f64, f64); 1 + 2 * MAX_SOLIDS_PHASES],
+}
+
+/// Where a solids node sits, for [`ClassedResidual`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum NodeClass {
+    /// friction carries most of the viscosity beside the node
+    Packed,
+    /// the rest: collisional or loose
+    Loose,
+}
+
+impl NodeClass {
+    /// The class of a solids node beside cells whose viscosity and kinetic viscosity are
+    /// `(mu, mu_kin)`: packed where the frictional part exceeds the kinetic one in either.
+    pub fn of(cells: impl IntoIterator<Item = (f64, f64)>) -> Self {
+        if cells.into_iter().any(|(mu, mu_kin)| mu > 2.0 * mu_kin) {
+            NodeClass::Packed
+        } else {
+            NodeClass::Loose
+        }
+    }
+}
+
+impl Default for ClassedResidual {
+    fn default() -> Self {
+        ClassedResidual {
+            sums: [(0.0, 0.0); 1 + 2 * MAX_SOLIDS_PHASES],
+        }
+    }
+}
+
+impl ClassedResidual {
+    /// Adds a node's residual and normaliser of phase p (0 the gas) in `class` (ignored for
+    /// the gas).
+    pub fn add(&mut self, p: usize, class: NodeClass, residual: f64, scale: f64) {
+        let k = match (p, class) {
+            (0, _) => 0,
+            (p, NodeClass::Loose) => 2 * p - 1,
+            (p, NodeClass::Packed) => 2 * p,
+        };
+        self.sums[k].0 += residual;
+        self.sums[k].1 += scale;
+    }
+
+    /// The largest class residual, each Σ residual / Σ normaliser (a class without moving
+    /// nodes counts 0).
+    pub fn largest(&self) -> f64 {
+        self.sums
+            .iter()
+            .filter(|(_, den)| *den > 0.0)
+            .map(|(num, den)| num / den)
+            .fold(0.0, f64::max)
+    }
+
+    /// MFIX's pooled residual: Σ residual / Σ normaliser over every node and phase.
+    pub fn pooled(&self) -> f64 {
+        let (num, den) = self
+            .sums
+            .iter()
+            .fold((0.0, 0.0), |(n, d), (a, b)| (n + a, d + b));
+        if den > 0.0 {
+            num / den
+        } else {
+            num
+        }
+    }
+}
+
 /// The convergence measure of one time step (module doc).
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Convergence {
@@ -146,6 +229,21 @@ impl Convergence {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_head_is_not_hidden_by_the_packed_body() {
+        let mut r = ClassedResidual::default();
+        // a packed body of large a_P converged to 1e-5, a loose head to 1e-2
+        r.add(1, NodeClass::Packed, 1e-5 * 1e6, 1e6);
+        r.add(1, NodeClass::Loose, 1e-2 * 1.0, 1.0);
+        r.add(0, NodeClass::Loose, 1e-4 * 10.0, 10.0);
+        assert!((r.largest() - 1e-2).abs() < 1e-15);
+        // pooled, the head disappears below 1e-3
+        assert!(r.pooled() < 2e-5);
+        assert_eq!(ClassedResidual::default().largest(), 0.0);
+        assert_eq!(NodeClass::of([(3.0, 1.0), (1.0, 1.0)]), NodeClass::Packed);
+        assert_eq!(NodeClass::of([(1.5, 1.0)]), NodeClass::Loose);
+    }
 
     #[test]
     fn a_stall_is_a_sum_that_did_not_fall_over_five_iterations() {

@@ -26,6 +26,8 @@ use anyhow::{bail, Context, Result};
 use runout_post::folder::csv_files;
 use runout_post::front::{front_series, FrontDefinition};
 use runout_post::gates::interpolated_gate_speeds;
+/// Linear interpolation in a sorted series (runout-post's).
+pub use runout_post::interpolate::interpolate;
 use runout_post::table::Table;
 
 /// The profile columns a measured profile may compare.
@@ -247,20 +249,6 @@ fn compare(
         }
     }
     Misfit::from_differences(&diffs, missing)
-}
-
-/// Linear interpolation in `points` (sorted by abscissa).
-pub fn interpolate(points: &[(f64, f64)], a: f64, clamp: bool) -> Option<f64> {
-    let (first, last) = (points.first()?, points.last()?);
-    if a <= first.0 {
-        return (clamp || a == first.0).then_some(first.1);
-    }
-    if a >= last.0 {
-        return (clamp || a == last.0).then_some(last.1);
-    }
-    let k = points.partition_point(|p| p.0 <= a);
-    let (p, q) = (points[k - 1], points[k]);
-    Some(p.1 + (q.1 - p.1) * (a - p.0) / (q.0 - p.0))
 }
 
 /// Two numeric columns of a run's monitor CSV, by name ([`Table`]); rows with an empty cell

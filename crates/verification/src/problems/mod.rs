@@ -24,7 +24,8 @@
 //! - [`cooling_box`]: homogeneous cooling through the whole two-fluid step;
 //! - [`settling_column`]: a suspension settling into a packed bed that carries its weight;
 //! - [`fluidized_bed`]: a bed hanging on the gas pressure drop;
-//! - [`s_jj_phi`]: the paper's slide with a Johnson–Jackson floor through the driver.
+//! - [`s_jj_phi`]: the paper's slide with a Johnson–Jackson floor through the driver;
+//! - [`relaxation`]: the paper's slide with two under-relaxations, the same flow (issue 58).
 //!
 //! Where a flow stops (issue 43):
 //!
@@ -96,6 +97,7 @@ pub mod haff_energy;
 pub mod incline;
 mod lid_driven;
 pub mod paper_material;
+pub mod relaxation;
 pub mod release;
 pub mod s_jj_phi;
 pub mod settling_column;
