@@ -22,14 +22,19 @@ pub use runout_study::sweep::{
 /// not the paper's.
 pub const SLOPES_DIR: &str = "slopes";
 
+/// The folder under cases/ of the cases of gas let in through walls (issue 60), which are
+/// not the paper's.
+pub const GAS_DIR: &str = "gas";
+
 /// The paper's matrix (cases.md families S, F, M and A): every case under `cases_dir` but
 /// the stiff cases of `cargo xtask stability`, the column collapse of `cargo xtask verify
 /// collapse` (issue 7's check, verification-notes §2f), the slide onto a flat run-out
-/// (issue 43 item 5, docs/foot.md), the slides down real slopes ([`SLOPES_DIR`]) and the
-/// sweeps of a study.
+/// (issue 43 item 5, docs/foot.md), the slides down real slopes ([`SLOPES_DIR`]), the cases of
+/// gas let in through walls ([`GAS_DIR`]) and the sweeps of a study.
 pub fn paper_matrix(cases_dir: &Path) -> Result<Matrix> {
     let mut m = matrix(cases_dir)?;
-    let apart = [STABILITY_DIR, COLLAPSE_DIR, FOOT_DIR, SLOPES_DIR].map(|d| cases_dir.join(d));
+    let apart =
+        [STABILITY_DIR, COLLAPSE_DIR, FOOT_DIR, SLOPES_DIR, GAS_DIR].map(|d| cases_dir.join(d));
     m.runs
         .retain(|r| r.study.is_none() && !apart.iter().any(|d| r.file.starts_with(d)));
     Ok(m)

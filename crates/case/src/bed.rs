@@ -96,12 +96,18 @@ pub fn path_arcs(
     let mut k = 0;
     loop {
         if !(length.is_finite() && length > 0.0) {
-            return Err((k, format!("a length > 0 (got {length})")));
+            return Err((
+                k,
+                format!("a length > 0 (got {})", runout_mesh::short(length)),
+            ));
         }
         if !(slope.is_finite() && slope.abs() < 90.0) {
             return Err((
                 k,
-                format!("a slope in (−90°, 90°) (got {slope}°: beyond vertical)"),
+                format!(
+                    "a slope in (−90°, 90°) (got {}°: beyond vertical)",
+                    runout_mesh::short(slope)
+                ),
             ));
         }
         x += length;
@@ -117,7 +123,10 @@ pub fn path_arcs(
             ));
         };
         if !(radius.is_finite() && radius > 0.0) {
-            return Err((k + 1, format!("a radius > 0 (got {radius})")));
+            return Err((
+                k + 1,
+                format!("a radius > 0 (got {})", runout_mesh::short(radius)),
+            ));
         }
         let (next_length, next_slope) = straight(k + 2)?;
         if next_slope == slope {
@@ -177,7 +186,10 @@ pub fn transect_arcs(
         })
         .collect();
     if !(radius.is_finite() && radius > 0.0) {
-        return Err((0, format!("radius > 0 (got {radius})")));
+        return Err((
+            0,
+            format!("radius > 0 (got {})", runout_mesh::short(radius)),
+        ));
     }
     let mut arcs = Vec::new();
     let mut x = origin;

@@ -12,6 +12,7 @@
 mod bed;
 mod checker;
 mod clock;
+mod gas_inlet;
 pub mod limits;
 mod load;
 mod name;

@@ -11,6 +11,7 @@ use serde::{Deserialize, Serialize};
 use crate::run_control::{FidelityPresets, Numerics, RunControl};
 
 pub use crate::bed::{path_arcs, transect_arcs, Bed, BedPiece};
+pub use crate::gas_inlet::{GasInlet, InletRate};
 pub use crate::release::{Gate, GateOpening, Polygon};
 pub use crate::sidewalls::{GasSidewall, Sidewalls};
 /// A side's solids condition: the wall crate's type, with its validation
@@ -55,6 +56,9 @@ pub struct Case {
     /// Walls across the flow that hold the release until they open (none by default).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub gates: Vec<Gate>,
+    /// Segments of wall sides that let gas in, on a schedule (none by default).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub gas_inlets: Vec<GasInlet>,
     /// What is recorded during the run.
     #[serde(default)]
     pub monitors: Monitors,

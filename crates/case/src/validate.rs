@@ -8,6 +8,7 @@ use runout_mesh::{short, Side};
 
 use crate::bed::check_bed;
 use crate::checker::{Checker, FieldError, B};
+use crate::gas_inlet::check_gas_inlets;
 use crate::limits::*;
 use crate::name::name_error;
 use crate::release::check_release;
@@ -129,6 +130,7 @@ fn check_materials(c: &mut Checker, case: &Case) {
     }
     check_bed(c, case);
     check_release(c, case);
+    check_gas_inlets(c, case);
 }
 
 /// The initial state: θ, velocities and the regions (inside the domain).

@@ -40,6 +40,12 @@ impl Side {
         }
     }
 
+    /// Whether the side runs along x (the floor and the top), so that its faces are
+    /// counted by the cells along x; the west and east sides run along y.
+    pub fn is_horizontal(self) -> bool {
+        matches!(self, Side::South | Side::North)
+    }
+
     /// Lower-case name, as in case files and messages.
     pub fn name(self) -> &'static str {
         match self {

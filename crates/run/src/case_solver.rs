@@ -301,6 +301,8 @@ pub(super) struct TwoFluidCase {
     pub(super) tilt: Option<PendingTilt>,
     /// the case's gates on the grid
     pub(super) gates: crate::gates::GateSchedule,
+    /// the case's gas inlets on the grid
+    pub(super) inlets: crate::gas_inlets::InletSchedule,
     /// when this process tilted gravity (logged; not in checkpoints)
     pub(super) tilted_at: Option<f64>,
     pub(super) scratch: Vec<f64>,
@@ -384,6 +386,11 @@ impl CaseSolver for TwoFluidCase {
                 .set_gate_faces(faces)
                 .expect("the schedule's faces fit its own grid");
         }
+        if let Some(faces) = self.inlets.faces_if_changed(time) {
+            self.solver
+                .set_gas_inflow_faces(faces)
+                .expect("validated inlets on wall sides of the schedule's own grid");
+        }
         let Some(tilt) = self.tilt.clone() else {
             return false;
         };
@@ -410,7 +417,11 @@ impl CaseSolver for TwoFluidCase {
             ImpactTrigger::FloorEpsS(_) | ImpactTrigger::CentroidBelow(_) => None,
         });
         let gate = self.gates.next_opening(time);
-        [tilt, gate].into_iter().flatten().min_by(f64::total_cmp)
+        let inlet = self.inlets.next_change(time);
+        [tilt, gate, inlet]
+            .into_iter()
+            .flatten()
+            .min_by(f64::total_cmp)
     }
 
     fn write_fields(&mut self, series: &mut PvdSeries, time: f64) -> Result<(), OutputError> {

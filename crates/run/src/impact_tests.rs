@@ -43,6 +43,7 @@ fn tilt_time(case: &Case, tag: &str) -> f64 {
         solver: tf,
         tilt: PendingTilt::of(case),
         gates: Default::default(),
+        inlets: Default::default(),
         tilted_at: None,
         scratch: vec![0.0; 2 * n],
         scratch2: vec![0.0; 2 * n],

@@ -16,6 +16,7 @@ mod case_solver;
 pub mod checkpoint;
 mod dt_controller;
 pub mod explain;
+mod gas_inlets;
 mod gates;
 pub mod lock;
 mod monitors;
@@ -170,10 +171,13 @@ fn case_solver(case: &Case) -> Result<Box<dyn CaseSolver>, RunError> {
     // whether the tilt is still pending
     let tilt = PendingTilt::of(case);
     let gates = gates::GateSchedule::new(&case.gates, tf.grid());
+    let density = case.gas.as_ref().map_or(0.0, |g| g.density);
+    let inlets = gas_inlets::InletSchedule::new(&case.gas_inlets, density, tf.grid());
     Ok(Box::new(TwoFluidCase {
         solver: tf,
         tilt,
         gates,
+        inlets,
         tilted_at: None,
         scratch: vec![0.0; 2 * n],
         scratch2: vec![0.0; 2 * n],

@@ -125,19 +125,23 @@ impl Component {
         }
     }
 
-    /// The gas normal velocity (in +x or +y) that fixed node k holds: the inflow of its
-    /// wall side, 0 on impermeable walls.
-    pub fn wall_inflow(self, inflow: &Sides<f64>, k: usize) -> f64 {
+    /// The gas normal velocity (in +x or +y) that fixed node k holds: the inflow through
+    /// its wall face (`inflow`: per side, one velocity into the domain per face along it,
+    /// empty for none), 0 on impermeable walls.
+    pub fn wall_inflow(self, inflow: &Sides<Vec<f64>>, k: usize) -> f64 {
+        let at = |faces: &[f64], along: usize| faces.get(along).copied().unwrap_or(0.0);
         if self.dir == 0 {
+            let j = k / (self.nx + 1);
             match k % (self.nx + 1) {
-                0 => inflow.west,
-                i if i == self.nx => -inflow.east,
+                0 => at(&inflow.west, j),
+                i if i == self.nx => -at(&inflow.east, j),
                 _ => 0.0,
             }
         } else {
+            let i = k % self.nx;
             match k / self.nx {
-                0 => inflow.south,
-                j if j == self.ny => -inflow.north,
+                0 => at(&inflow.south, i),
+                j if j == self.ny => -at(&inflow.north, i),
                 _ => 0.0,
             }
         }

@@ -15,6 +15,7 @@
 //! | `cooling` | cooling through the two-fluid step | Haff with viscous damping |
 //! | `settling` | settling column | the bed's weight |
 //! | `fluidized-bed` | fluidized bed | the bed's buoyant weight |
+//! | `gas-inlet` | a bed fluidised through a floor inlet on a schedule, through the driver | the bed's buoyant weight while open, none while shut |
 //! | `s-jj-phi` | the paper's slide through the driver | bounds and conservation |
 //! | `relaxation` | the paper's slide with two under-relaxations | the same front and station numbers |
 //!
@@ -31,8 +32,8 @@
 
 use crate::check::Check;
 use crate::checks::{
-    BedPath, Cavity, Chute, Cooling, CoulombFloor, FluidizedBed, Haff, Incline, Poiseuille,
-    Relaxation, Release, SJjPhi, Settling, TaylorGreen,
+    BedPath, Cavity, Chute, Cooling, CoulombFloor, FluidizedBed, GasInlet, Haff, Incline,
+    Poiseuille, Relaxation, Release, SJjPhi, Settling, TaylorGreen,
 };
 
 /// Every check, in the order `cargo xtask verify all` runs them.
@@ -50,6 +51,7 @@ pub fn registry() -> Vec<Box<dyn Check>> {
         Box::new(Cooling),
         Box::new(Settling),
         Box::new(FluidizedBed),
+        Box::new(GasInlet),
         Box::new(SJjPhi),
         Box::new(Relaxation),
     ]

@@ -126,8 +126,9 @@ fn every_field_of_every_shipped_case_is_documented() {
 }
 
 /// The Rust sources of the case file's types.
-const SOURCES: [&str; 11] = [
+const SOURCES: [&str; 12] = [
     include_str!("../schema.rs"),
+    include_str!("../gas_inlet.rs"),
     include_str!("../run_control.rs"),
     include_str!("../sidewalls.rs"),
     include_str!("../bed.rs"),

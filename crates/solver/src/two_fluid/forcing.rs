@@ -9,17 +9,51 @@ use crate::bent_floor::BentFloor;
 use crate::SideBc;
 
 impl TwoFluid {
-    /// Gas enters through the wall sides given, at this velocity normal to the side into
-    /// the domain [m s⁻¹] (a distributor plate or porous wall: the gas's normal velocity on
-    /// the side's faces is fixed at it and its face εg is 1, as MFIX's mass inlet with
-    /// BC_EP_G = 1; the solids still see the wall). Outlet sides must get 0.
+    /// Gas enters through the whole of the wall sides given, at this velocity normal to the
+    /// side into the domain [m s⁻¹] ([`TwoFluid::set_gas_inflow_faces`] with one velocity on
+    /// every face of a side). Outlet sides must get 0.
     pub fn set_gas_inflow(&mut self, inflow: Sides<f64>) -> Result<(), TwoFluidError> {
-        for (side, &v) in inflow.iter() {
-            if v != 0.0 && !matches!(self.model.gas_walls.get(side), SideBc::Wall(_)) {
+        let (nx, ny) = (self.model.grid.nx(), self.model.grid.ny());
+        let faces = Sides::from_fn(|side| {
+            let n = if side.is_horizontal() { nx } else { ny };
+            let v = *inflow.get(side);
+            if v == 0.0 {
+                Vec::new()
+            } else {
+                vec![v; n]
+            }
+        });
+        self.set_gas_inflow_faces(faces)
+    }
+
+    /// Gas enters through wall faces (a distributor plate, a porous wall, a vent): on each
+    /// side, the velocity normal to the side into the domain on each face along it [m s⁻¹]
+    /// (nx faces on the floor and top, ny on the west and east sides; an empty list for
+    /// none). The gas's normal velocity on those faces is fixed at it and its face εg is 1
+    /// where it is not 0, as MFIX's mass inlet with BC_EP_G = 1; the solids still see the
+    /// wall. A run sets the faces from the case's `gas_inlets` before every step. Refused: a
+    /// list of another length, a value that is not finite, gas let in through an outlet.
+    pub fn set_gas_inflow_faces(&mut self, faces: Sides<Vec<f64>>) -> Result<(), TwoFluidError> {
+        let (nx, ny) = (self.model.grid.nx(), self.model.grid.ny());
+        for (side, velocities) in faces.iter() {
+            let n = if side.is_horizontal() { nx } else { ny };
+            if !velocities.is_empty() && velocities.len() != n {
+                return Err(TwoFluidError::Shape(format!(
+                    "gas inflow on the {side:?} side: {} velocities for {n} faces",
+                    velocities.len()
+                )));
+            }
+            if let Some(v) = velocities.iter().find(|v| !v.is_finite()) {
+                return Err(TwoFluidError::Shape(format!(
+                    "gas inflow on the {side:?} side: {v} m/s"
+                )));
+            }
+            let open = velocities.iter().any(|&v| v != 0.0);
+            if open && !matches!(self.model.gas_walls.get(side), SideBc::Wall(_)) {
                 return Err(TwoFluidError::InflowOnOutlet(format!("{side:?}")));
             }
         }
-        self.model.gas_inflow = inflow;
+        self.model.gas_inflow = faces;
         Ok(())
     }
 

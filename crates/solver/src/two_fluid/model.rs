@@ -24,7 +24,7 @@ pub(super) struct Model {
     /// gas velocity into the domain through each wall side [m s⁻¹] (a distributor: gas
     /// enters with εg = 1, solids see the wall; MFIX's mass inlet with BC_EP_G = 1), 0 on
     /// impermeable walls
-    pub gas_inflow: Sides<f64>,
+    pub gas_inflow: Sides<Vec<f64>>,
     /// the solids phases: closure parameters, packing and walls
     pub solids_specs: Vec<SolidsSpec>,
     /// gravity (g_x, g_y) [m s⁻²]

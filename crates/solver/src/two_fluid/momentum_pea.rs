@@ -656,7 +656,7 @@ fn decouple<const N: usize>(
 /// hold zero for every phase, as a wall's.
 fn fix_wall_rows(
     c: Component,
-    inflow: &Sides<f64>,
+    inflow: &Sides<Vec<f64>>,
     gate: &[bool],
     gas: &mut GasComponent<'_>,
     solids: &mut [SolidsComponent<'_>],

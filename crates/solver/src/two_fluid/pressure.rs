@@ -86,8 +86,8 @@ struct GasContinuity<'a> {
     /// d_g of the u and v nodes
     d_u: &'a [f64],
     d_v: &'a [f64],
-    /// gas velocity into the domain through each wall side
-    inflow: &'a Sides<f64>,
+    /// gas velocity into the domain through each face of each wall side (empty: none)
+    inflow: &'a Sides<Vec<f64>>,
     /// convection scheme of the face εg
     scheme: Scheme,
     /// P' fixed at cell 0 (no open side)
@@ -125,8 +125,8 @@ fn assemble(
         }
     };
     // gas entering through a distributor is pure gas (MFIX BC_EP_G = 1)
-    let inlet = |at_side: bool, inflow: f64, value: f64| {
-        if at_side && inflow != 0.0 {
+    let inlet = |at_side: bool, faces: &[f64], along: usize, value: f64| {
+        if at_side && faces.get(along).is_some_and(|&v| v != 0.0) {
             1.0
         } else {
             value
@@ -143,10 +143,10 @@ fn assemble(
             let east = (i + 1 < nx).then_some(k + 1);
             let south = (j > 0).then(|| k - nx);
             let north = (j + 1 < ny).then_some(k + nx);
-            let ew = inlet(i == 0, f.west, face(u[kw], west, Some(k), 1));
-            let ee = inlet(i + 1 == nx, f.east, face(u[ke], Some(k), east, 1));
-            let es = inlet(j == 0, f.south, face(v[ks], south, Some(k), nx));
-            let en = inlet(j + 1 == ny, f.north, face(v[kn], Some(k), north, nx));
+            let ew = inlet(i == 0, &f.west, j, face(u[kw], west, Some(k), 1));
+            let ee = inlet(i + 1 == nx, &f.east, j, face(u[ke], Some(k), east, 1));
+            let es = inlet(j == 0, &f.south, i, face(v[ks], south, Some(k), nx));
+            let en = inlet(j + 1 == ny, &f.north, i, face(v[kn], Some(k), north, nx));
             let volume = dx[i] * dy[j];
             row.b[i] = rho
                 * (-(eps[k] - gas.eps_old[k]) * volume / dt + ew * u[kw] * dy[j]

@@ -92,7 +92,7 @@ impl TwoFluid {
                 grid,
                 gas,
                 gas_walls,
-                gas_inflow: Sides::all(0.0),
+                gas_inflow: Sides::all(Vec::new()),
                 solids_specs,
                 gravity,
                 bent_floor: None,

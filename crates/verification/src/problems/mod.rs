@@ -24,6 +24,8 @@
 //! - [`cooling_box`]: homogeneous cooling through the whole two-fluid step;
 //! - [`settling_column`]: a suspension settling into a packed bed that carries its weight;
 //! - [`fluidized_bed`]: a bed hanging on the gas pressure drop;
+//! - [`gas_inlet`]: the same through the driver, the floor's inlet opened and shut by the
+//!   case's schedule (issue 60);
 //! - [`s_jj_phi`]: the paper's slide with a Johnson–Jackson floor through the driver;
 //! - [`relaxation`]: the paper's slide with two under-relaxations, the same flow (issue 58).
 //!
@@ -93,6 +95,7 @@ pub mod chute_column;
 pub mod cooling_box;
 pub mod coulomb_floor;
 pub mod fluidized_bed;
+pub mod gas_inlet;
 pub mod haff_energy;
 pub mod incline;
 mod lid_driven;
