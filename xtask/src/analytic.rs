@@ -2,8 +2,8 @@
 //!
 //! Reads `cases/analytic/A-fig1.ron`, evaluates the closed-form profiles of paper Eqs. 12–13
 //! (`runout_walls::analytic::RobinProfile`: dφ/dn = c − h(φ − φ_w) from the bulk value at
-//! n = 0 to the wall at n = depth; docs/walls.md says why this is the problem the paper
-//! solved) and writes into `docs/analytic/`:
+//! n = 0 to the wall at n = depth; docs/reference/walls.md says why this is the problem the paper
+//! solved) and writes into `docs/reports/analytic/`:
 //! - `fig1.svg`: U(n) for every h_w^u, and θ(n) for every h_w^θ, one panel per c_w; lines are
 //!   the closed forms, dots the discrete solution of the same boundary-value problem with the
 //!   solver's wall-face closure on the paper's 5 mm cells;
@@ -34,7 +34,7 @@ const FIGURE_SIZE: (u32, u32) = (1200, 900);
 const CASE_FILE: &str = "cases/analytic/A-fig1.ron";
 
 /// Output directory, relative to the workspace root.
-const OUTPUT_DIR: &str = "docs/analytic";
+const OUTPUT_DIR: &str = "docs/reports/analytic";
 
 /// One curve of a panel.
 struct Curve {
@@ -50,7 +50,7 @@ struct Panel {
 }
 
 /// Reads the family-A case file under `root` and writes Fig. 1 as SVG and CSV into
-/// `root/docs/analytic/`.
+/// `root/docs/reports/analytic/`.
 pub fn report(root: &Path) -> Result<()> {
     let file = root.join(CASE_FILE);
     let analytic = match load(&file)? {

@@ -18,7 +18,7 @@
 //! Each row gives steps, outer iterations per step, µs per cell per outer iteration, the
 //! linear-solver iterations per solve of each equation and the profile (share of the
 //! solver's time per part). `--smoke` runs every row at a tiny size (CI: the command works;
-//! no timing is asserted); `--write` appends the rows to docs/performance.md with the
+//! no timing is asserted); `--write` appends the rows to docs/studies/performance.md with the
 //! commit and date.
 
 use std::path::{Path, PathBuf};
@@ -70,7 +70,7 @@ pub struct Options {
     /// leave out the family-M rows (thread and refinement)
     #[arg(long)]
     skip_family_m: bool,
-    /// append the rows to docs/performance.md
+    /// append the rows to docs/studies/performance.md
     #[arg(long)]
     write: bool,
 }
@@ -485,7 +485,7 @@ pub fn run(root: &Path, args: &[String]) -> Result<()> {
         );
     }
     if opts.write && !opts.smoke {
-        let path: PathBuf = root.join("docs/performance.md");
+        let path: PathBuf = root.join("docs/studies/performance.md");
         let mut text = std::fs::read_to_string(&path)?;
         text.push_str(&format!(
             "\n### `cargo xtask bench two-fluid {}` ({date})\n\n{table}",

@@ -2,9 +2,9 @@
 //! check of runout-verification ([`Chute::run_full`], `runout_verification::problems::chute_column`),
 //! written up. The 2-D two-fluid solver on a periodic column, marched to
 //! a steady state, against the 1-D steady boundary-value solve (`chute1d`) of the same
-//! equations on the same 80-cell y grid, at 15°, 25° (docs/chute1d.md's reference case) and
+//! equations on the same 80-cell y grid, at 15°, 25° (docs/studies/chute1d.md's reference case) and
 //! 35°, and at 25° with side walls (docs/model.md §8). Passes when every run is steady and εs, u_s and θ agree within 2 % of their largest
-//! value. Writes docs/chute.md and docs/chute/profiles-25deg.svg.
+//! value. Writes docs/reports/chute.md and docs/reports/chute/profiles-25deg.svg.
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -22,7 +22,7 @@ const TOLERANCE: f64 = CHUTE_TOLERANCE;
 /// SVG size [px].
 const FIGURE_SIZE: (u32, u32) = (1200, 500);
 
-/// Runs the full-size chute check and writes docs/chute.md and its figure; returns the
+/// Runs the full-size chute check and writes docs/reports/chute.md and its figure; returns the
 /// check's outcome.
 pub fn verify(root: &Path) -> Result<Outcome> {
     let mut md = String::new();
@@ -32,7 +32,7 @@ pub fn verify(root: &Path) -> Result<Outcome> {
          Written by `cargo xtask verify chute` (`xtask/src/chute.rs`, \
          `crates/verification/src/checks/chute.rs`; fast version: \
          `cargo test -p runout-verification --release --test chute_column`, 40 cells at 25°).\n\n\
-         **Setup** (docs/chute1d.md §3): a confined strip H = 8.7 mm high holding 5 mm of \
+         **Setup** (docs/studies/chute1d.md §3): a confined strip H = 8.7 mm high holding 5 mm of \
          solids (mean εs 0.575); the paper's material (d = 0.5 mm, ρs = 2000 kg m⁻³, e = 0.9, \
          Princeton friction φ = 35°, εs,max = 0.65, εs,min = 0.5); Johnson–Jackson floor \
          φ' = 0.1, e_w = 0.7, δ_w = 11°; free-slip lid with zero θ flux; 80 uniform cells.\n\n\
@@ -108,9 +108,9 @@ pub fn verify(root: &Path) -> Result<Outcome> {
          steady-state and step tolerances. The check therefore verifies the 2-D machinery \
          (momentum, εs correction, θ, the wall closures per face) in the fully developed \
          limit; the 1-D solver itself is verified against closed forms and grid \
-         convergence in docs/chute1d.md.\n"
+         convergence in docs/studies/chute1d.md.\n"
     )?;
-    let dir = root.join("docs/chute");
+    let dir = root.join("docs/reports/chute");
     std::fs::create_dir_all(&dir).with_context(|| format!("creating {}", dir.display()))?;
     if let Some(c) = at_25 {
         draw(c, &dir.join("profiles-25deg.svg"))?;
@@ -120,7 +120,7 @@ pub fn verify(root: &Path) -> Result<Outcome> {
              circles 2-D (every second cell)."
         )?;
     }
-    let path = root.join("docs/chute.md");
+    let path = root.join("docs/reports/chute.md");
     std::fs::write(&path, md).with_context(|| format!("writing {}", path.display()))?;
     eprintln!("wrote {}", path.display());
     Ok(outcome)

@@ -4,7 +4,7 @@
 //!   expanded, validated and run in parallel into `runs/`, its rows merged into
 //!   `results/summary.csv` (the study engine, [`runout_study`]);
 //!   cases that need the two-fluid model (issue 7) are reported as unsupported.
-//! - `bench linsolve`: the linear-solver timing table of docs/performance.md;
+//! - `bench linsolve`: the linear-solver timing table of docs/studies/performance.md;
 //! - `bench two-fluid`: the two-fluid solver's cost table (issue 22).
 //! - `verify <name> [--report]`: the checks of runout-verification's registry at full size
 //!   ([`verify`]): one check (cavity, poiseuille, taylor-green, chute, incline, haff, cooling,
@@ -13,21 +13,21 @@
 //!   `verify collapse [--fidelity smoke|coarse] [--reuse]`: issue 7's granular column collapse
 //!   check;
 //! - `report analytic`: family A, the closed-form profiles of paper Fig. 1, as SVG and CSV
-//!   in docs/analytic/;
+//!   in docs/reports/analytic/;
 //! - `report [results] [--fidelity F]`: the runs of the sweep beside the paper, in
-//!   docs/results.md with SVG figures in docs/results/, and the elasticities of family S's
+//!   docs/reports/results.md with SVG figures in docs/reports/results/, and the elasticities of family S's
 //!   one-factor families ([`runout_study::sensitivity`]) as a table, a heat map and a CSV;
 //! - `ledger add RUN_DIR...`: records run folders made elsewhere in the metrics ledger
-//!   docs/results/ledger/<fidelity>.csv, which the report judges the findings from where a
+//!   docs/reports/results/ledger/<fidelity>.csv, which the report judges the findings from where a
 //!   case has no run folder ([`report::ledger`]);
 //! - `error-time`: the discretisation error of the paper's station and probe numbers (with
 //!   Roache's GCI), the station profiles, gate speeds and bulk histories against CPU time
-//!   over a ladder of grids ([`error_time`]), in docs/error-time.md;
+//!   over a ladder of grids ([`error_time`]), in docs/reports/error-time.md;
 //! - `calibrate`: fits one or two numeric fields of a case to measurements (front speeds at
 //!   gates, front positions or a profile) by minimising the RMS misfit: a landscape scan,
-//!   then Brent (1-D) or Nelder–Mead (2-D) from argmin ([`calibrate`], docs/calibrate.md);
+//!   then Brent (1-D) or Nelder–Mead (2-D) from argmin ([`calibrate`], docs/reference/calibrate.md);
 //! - `stability`: the stiff and extreme cases of cases/stability/ (issue 7), one at a time,
-//!   with the table of docs/stability.md; fails if a run writes NaN.
+//!   with the table of docs/reports/stability.md; fails if a run writes NaN.
 
 mod analytic;
 mod bench_two_fluid;
@@ -91,7 +91,7 @@ enum Task {
         #[arg(long)]
         study: Option<String>,
     },
-    /// Fit one or two numeric fields of a case to measurements (docs/calibrate.md): a scan
+    /// Fit one or two numeric fields of a case to measurements (docs/reference/calibrate.md): a scan
     /// of the misfit landscape in parallel, then Brent (1-D) or Nelder–Mead (2-D); every
     /// evaluation is a run in runs/calibrate/<study>/, reused when the same case repeats (a
     /// killed study resumes when the command is run again).
@@ -146,7 +146,7 @@ enum Task {
         #[arg(long)]
         dry_run: bool,
     },
-    /// Write synthetic measurements from a finished run (docs/calibrate.md, "Synthetic
+    /// Write synthetic measurements from a finished run (docs/reference/calibrate.md, "Synthetic
     /// truths"): its interpolated front at given times, its gate speeds or a profile column,
     /// with a stated σ
     /// and optionally Gaussian noise of that σ; a calibration against them has a known truth.
@@ -179,7 +179,7 @@ enum Task {
         out: PathBuf,
     },
     /// Run the stiff and extreme cases of cases/stability/ (issue 7) and write their table to
-    /// docs/stability.md and docs/stability/summary.csv; fails if a run writes a NaN or an
+    /// docs/reports/stability.md and docs/reports/stability/summary.csv; fails if a run writes a NaN or an
     /// infinity, or panics (a stop with a diagnosis is acceptable).
     Stability {
         /// smoke, coarse (default: the table) or paper
@@ -195,7 +195,7 @@ enum Task {
     /// Discretisation error of the paper's station and probe numbers, the station profiles,
     /// gate speeds and bulk histories against CPU time (issues 8, 45): each case on a ladder
     /// of grids, one run at a time, with the observed order, Richardson and Roache's GCI;
-    /// writes docs/error-time.md, docs/error-time/error_time.csv and SVG figures.
+    /// writes docs/reports/error-time.md, docs/reports/error-time/error_time.csv and SVG figures.
     ErrorTime {
         /// comma-separated levels: tiny (pipeline check), smoke, coarse, half (the paper grid
         /// coarsened 2×), paper, finer
@@ -227,7 +227,7 @@ enum Task {
         /// a check, a group (single-phase, two-fluid, all), cavity-re1000, collapse or
         /// mfix-slope
         name: String,
-        /// also write error against run time (CSV/SVG/Markdown) into docs/verification/
+        /// also write error against run time (CSV/SVG/Markdown) into docs/reports/verification/
         #[arg(long)]
         report: bool,
         /// fidelity of the runs (collapse: smoke or coarse, default coarse; mu-i also paper, L0/20; mfix-slope:
@@ -259,8 +259,8 @@ enum Task {
         skip_variants: bool,
     },
     /// Figures and tables: `cargo xtask report [results]` (the runs beside the paper, into
-    /// docs/results.md and docs/results/), `cargo xtask report analytic` (paper Fig. 1 into
-    /// docs/analytic/), `release` (docs/reports/release.md) or `foot` (the slide onto a flat
+    /// docs/reports/results.md and docs/reports/results/), `cargo xtask report analytic` (paper Fig. 1 into
+    /// docs/reports/analytic/), `release` (docs/reports/release.md) or `foot` (the slide onto a flat
     /// run-out, docs/reports/foot.md).
     Report {
         /// what to report: results (default), analytic or release (the release study,
@@ -272,7 +272,7 @@ enum Task {
         #[arg(long)]
         fidelity: Option<String>,
     },
-    /// The metrics ledger docs/results/ledger/<fidelity>.csv (one row of every scalar the
+    /// The metrics ledger docs/reports/results/ledger/<fidelity>.csv (one row of every scalar the
     /// findings read per run; `cargo xtask report` also writes the rows of the run folders it
     /// reads): `cargo xtask ledger add RUN_DIR...` records runs made elsewhere (a cluster,
     /// the error-time ladder, another machine).
@@ -596,7 +596,7 @@ fn ledger_task(action: LedgerAction) -> Result<()> {
         solver,
     };
     report::ledger::add(
-        &root().join("docs"),
+        &root().join("docs/reports"),
         &root().join("cases"),
         &run_dirs,
         &opts,

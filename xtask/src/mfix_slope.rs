@@ -10,7 +10,7 @@
 //! threads) beside MFIX's 490, and where the wall time went. Unless `--skip-variants`, the
 //! other floors (revisited JJ, Jenkins, user partial slip) run too, and their
 //! wall-adjacent solids velocity, θ and front at t = 0.3 s are compared. Everything goes to
-//! docs/mfix-slope.md as well.
+//! docs/reports/mfix-slope.md as well.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -175,7 +175,7 @@ fn floor_row(dir: &Path, t: f64) -> Result<(f64, f64, f64, f64)> {
     Ok((time, su / w, st / w, umax))
 }
 
-/// Runs the check; writes `root/docs/mfix-slope.md`.
+/// Runs the check; writes `root/docs/reports/mfix-slope.md`.
 pub fn check(root: &Path, opts: &Options) -> Result<()> {
     let dir = root.join("cases/mfix-slope");
     let jj = load_one(&dir.join("jj.ron"))?;
@@ -223,7 +223,7 @@ pub fn check(root: &Path, opts: &Options) -> Result<()> {
         writeln!(md, "**Result: fail**: {}.", failures.join("; "))?;
     }
     print!("{md}");
-    let out = root.join("docs/mfix-slope.md");
+    let out = root.join("docs/reports/mfix-slope.md");
     std::fs::write(&out, &md).with_context(|| format!("writing {}", out.display()))?;
     eprintln!("wrote {}", out.display());
     if !failures.is_empty() {

@@ -1,6 +1,6 @@
 //! Which solver made a run: `git describe --always --dirty` of the checkout a sweep ran
 //! from, written into each run folder the sweep finished (file [`SOLVER_FILE`]), so the
-//! metrics ledger (docs/results/ledger/) can name the solver of every row.
+//! metrics ledger (docs/reports/results/ledger/) can name the solver of every row.
 
 use std::path::Path;
 use std::process::Command;

@@ -29,7 +29,7 @@ pub const GAS_DIR: &str = "gas";
 /// The paper's matrix (cases.md families S, F, M and A): every case under `cases_dir` but
 /// the stiff cases of `cargo xtask stability`, the column collapse of `cargo xtask verify
 /// collapse` (issue 7's check, verification-notes §2f), the slide onto a flat run-out
-/// (issue 43 item 5, docs/foot.md), the slides down real slopes ([`SLOPES_DIR`]), the cases of
+/// (issue 43 item 5, docs/studies/foot.md), the slides down real slopes ([`SLOPES_DIR`]), the cases of
 /// gas let in through walls ([`GAS_DIR`]) and the sweeps of a study.
 pub fn paper_matrix(cases_dir: &Path) -> Result<Matrix> {
     let mut m = matrix(cases_dir)?;

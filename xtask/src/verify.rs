@@ -2,17 +2,17 @@
 //! ([`runout_verification::registry`]), one by name or a group of them:
 //!
 //! - a check: `cavity`, `poiseuille`, `taylor-green`, `chute`, `incline`, `haff`, `cooling`,
-//!   `settling`, `fluidized-bed`, `s-jj-phi` (`chute` also writes docs/chute.md,
+//!   `settling`, `fluidized-bed`, `s-jj-phi` (`chute` also writes docs/reports/chute.md,
 //!   [`crate::chute`]);
 //! - a group: `single-phase` (cavity, poiseuille, taylor-green), `two-fluid` (haff,
 //!   cooling, settling, fluidized-bed, s-jj-phi) or `all` (every check);
-//! - `cavity-re1000`: the investigation of the Re = 1000 deviation (docs/verification.md):
+//! - `cavity-re1000`: the investigation of the Re = 1000 deviation (docs/studies/verification.md):
 //!   every sample against both references, centreline extrema, a tighter steady tolerance
 //!   and the 65 × 65 grid (a study without a limit, not a check).
 //!
 //! `--report` adds the error-against-run-time study over grid levels and both convection
 //! schemes (for `cavity` and `poiseuille`, also when a group holds them): CSV, SVG and a
-//! Markdown table per problem in docs/verification/.
+//! Markdown table per problem in docs/reports/verification/.
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -31,7 +31,7 @@ use runout_verification::{find, group, registry, Outcome, Size};
 use crate::figure::{legend, plot_error, LINE_COLOURS};
 
 /// Output directory of `--report`, relative to the workspace root.
-const OUTPUT_DIR: &str = "docs/verification";
+const OUTPUT_DIR: &str = "docs/reports/verification";
 /// SVG size [px].
 const FIGURE_SIZE: (u32, u32) = (1000, 700);
 
@@ -66,7 +66,7 @@ fn run_check(name: &str, root: &Path) -> Result<Outcome> {
 
 /// Runs verification `name` (a check, a group or `cavity-re1000`) at full size and prints
 /// its numbers; with `report`, also writes the error-against-run-time study into
-/// `root/docs/verification/`. Fails if a check misses its target.
+/// `root/docs/reports/verification/`. Fails if a check misses its target.
 pub fn verify(name: &str, report: bool, root: &Path) -> Result<()> {
     if name == "cavity-re1000" {
         return cavity_re1000();
@@ -193,7 +193,7 @@ fn print_comparison(
     );
 }
 
-/// The Re = 1000 investigation of docs/verification.md.
+/// The Re = 1000 investigation of docs/studies/verification.md.
 fn cavity_re1000() -> Result<()> {
     println!("lid-driven cavity, Re = 1000, Superbee: ours against Ghia (1982) and Botella & Peyret (1998)");
     let b = BOTELLA_PEYRET_RE1000_EXTREMA;

@@ -51,7 +51,7 @@ fn fmt_interval(lo: B, hi: B) -> String {
 }
 
 /// Where the bands' reasons are written.
-const BANDS_DOC: &str = "plausibility band, docs/input-validation.md";
+const BANDS_DOC: &str = "plausibility band, docs/reference/input-validation.md";
 
 /// Collects field errors.
 #[derive(Default)]

@@ -1,9 +1,9 @@
-//! A case's clock (docs/impact.md §4): the times of a case whose gravity tilts at a time
+//! A case's clock (docs/studies/impact.md §4): the times of a case whose gravity tilts at a time
 //! known in advance may count from the tilt; a run counts them from the start.
 //!
 //! The tilt time t_i of the time criteria: `FreeFall`, t_i = sqrt(2 h / g) with h the
 //! height of the lowest initial region holding solids above the floor (the free fall of the
-//! block's bottom, docs/impact.md §1); `At(time)`, t_i = time. A field criterion (`FloorCell`,
+//! block's bottom, docs/studies/impact.md §1); `At(time)`, t_i = time. A field criterion (`FloorCell`,
 //! `DenseContact`, `CentroidDrop`) is known only when it fires, so a clock from the impact
 //! is refused with it (validate.rs).
 

@@ -4,7 +4,7 @@
 //! The bands are generous: each admits every shipped case and every material or flow the
 //! solver's physics can describe, and refuses only what is a typo or a unit error (a
 //! 1.8e19 m domain, a gas viscosity of 1e-300 Pa s). The limits keep `check` and `run` from
-//! allocating without bound or spinning. docs/input-validation.md has the same table with
+//! allocating without bound or spinning. docs/reference/input-validation.md has the same table with
 //! the same reasons; a test keeps the two in step ([`bands_table`]).
 
 use runout_mesh::short;
@@ -13,7 +13,7 @@ use runout_mesh::short;
 /// the reason for its ends.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Band {
-    /// what the band is for, as in docs/input-validation.md
+    /// what the band is for, as in docs/reference/input-validation.md
     pub what: &'static str,
     /// smallest plausible value
     pub lo: f64,
@@ -272,7 +272,7 @@ pub const MU_I_SHEAR_RATE_FLOOR: Band = Band {
     reason: "a deposit creeps at about γ̇_min h: above 1 s⁻¹ it is no deposit, below 1e-8 the viscosity overflows the solves",
 };
 
-/// Every band, in the order of docs/input-validation.md.
+/// Every band, in the order of docs/reference/input-validation.md.
 pub const BANDS: [Band; 25] = [
     DIAMETER,
     PARTICLE_DENSITY,
@@ -405,7 +405,7 @@ pub const MAX_FILE_BYTES: u64 = 1 << 20;
 /// Longest case or sweep name: 100 bytes, the name of a folder under `runs/`.
 pub const MAX_NAME_BYTES: usize = 100;
 
-/// The bands as the markdown table of docs/input-validation.md.
+/// The bands as the markdown table of docs/reference/input-validation.md.
 pub fn bands_table() -> String {
     let mut s = String::from("| input | band | reason |\n|---|---|---|\n");
     for b in BANDS {

@@ -131,16 +131,16 @@ const CASE: &[Field] = &[
     f("gas_inlets[].rate.MassFlux", "number", "kg/(m² s)", REQ, "(0, inf)", "gas mass flux into the domain"),
     f("gas_inlets[].from", "number", "s", "0", "[0, inf)", "when it opens (a run lands a step on it)"),
     f("gas_inlets[].until", "number", "s", "never", "(from, inf)", "when it closes (a run lands a step on it)"),
-    f("gravity", "Constant(..) \\| TiltOnImpact(..)", "", REQ, "", "gravity g = (g sin α, −g cos α): tilted from the start, or vertical until the solids reach the floor (paper Fig. 3, docs/impact.md)"),
+    f("gravity", "Constant(..) \\| TiltOnImpact(..)", "", REQ, "", "gravity g = (g sin α, −g cos α): tilted from the start, or vertical until the solids reach the floor (paper Fig. 3, docs/studies/impact.md)"),
     f("gravity.Constant.magnitude", "number", "m/s²", "9.80665", "0 or the band", "|g|"),
     f("gravity.Constant.slope", "number", "deg", REQ, "[0, 90)", "slope α"),
     f("gravity.TiltOnImpact.magnitude", "number", "m/s²", "9.80665", "0 or the band", "|g|"),
     f("gravity.TiltOnImpact.slope", "number", "deg", REQ, "[0, 90)", "slope α after the impact"),
     f("gravity.TiltOnImpact.contact_eps_s", "number", "-", "0.01", "(0, 1)", "a floor cell with εs at or above this counts as contact (FloorCell criterion)"),
-    f("gravity.TiltOnImpact.criterion", "FloorCell \\| DenseContact(fraction) \\| CentroidDrop \\| FreeFall \\| At(time)", "", "FloorCell", "DenseContact, CentroidDrop and FreeFall need an initial region with solids", "what counts as the impact (docs/impact.md)"),
+    f("gravity.TiltOnImpact.criterion", "FloorCell \\| DenseContact(fraction) \\| CentroidDrop \\| FreeFall \\| At(time)", "", "FloorCell", "DenseContact, CentroidDrop and FreeFall need an initial region with solids", "what counts as the impact (docs/studies/impact.md)"),
     f("gravity.TiltOnImpact.criterion.DenseContact.fraction", "number", "-", REQ, "(0, 1]", "a floor cell with εs ≥ fraction × the release's largest εs"),
     f("gravity.TiltOnImpact.criterion.At.time", "number", "s", REQ, "[0, run.end_time]", "the tilt's time"),
-    f("gravity.TiltOnImpact.clock", "Start \\| Impact", "", "Start", "Impact only with FreeFall or At", "what the end time and profile times count from (docs/impact.md §4)"),
+    f("gravity.TiltOnImpact.clock", "Start \\| Impact", "", "Start", "Impact only with FreeFall or At", "what the end time and profile times count from (docs/studies/impact.md §4)"),
     f("bed", "Plane \\| Bend(..) \\| Path([..]) \\| Transect(..)", "", "Plane", "all but Plane need solids", "the floor's shape: one plane; a slope whose foot turns onto a run-out; a path of straight pieces joined by arcs; a transect of (x, z) points turned into such a path. All but Plane make x run along the floor and y normal to it (model.md §9)"),
     f("bed.Bend.at", "number", "m", REQ, "inside the domain", "where the arc starts, along the floor"),
     f("bed.Bend.radius", "number", "m", REQ, "(0, inf), the arc ending inside the domain", "arc radius R; the flow must be much thinner than R"),
@@ -181,7 +181,7 @@ const CASE: &[Field] = &[
     f("run.tolerances.momentum_residual", "ByClass \\| Pooled", "", "ByClass", "", "momentum residual normalised per class of node (gas, packed body, loose flow) or pooled over all nodes as MFIX (model.md §4.11)"),
     f("run.output_interval", "number", "s", REQ, "see Intervals", "interval between field outputs (`fields_*.vtr`)"),
     f("run.checkpoint_interval", "optional number", "s", "none", "see Intervals", "interval between checkpoints; none: only on a signal or `--checkpoint-every`"),
-    f("run.stop_at_rest", "optional struct", "", "none", "", "end the run once the solids are at rest (docs/deposit.md)"),
+    f("run.stop_at_rest", "optional struct", "", "none", "", "end the run once the solids are at rest (docs/reference/deposit.md)"),
     f("run.stop_at_rest.speed", "number", "m/s", REQ, "(0, inf)", "largest εs-weighted mean u_s at rest"),
     f("run.stop_at_rest.duration", "number", "s", REQ, "(0, end_time]", "how long the solids must stay at rest"),
     f("run.stop_at_rest.front_threshold", "number", "-", "0.01", "(0, 1)", "εs of the front that must not move"),
@@ -395,7 +395,7 @@ pub fn markdown() -> String {
         "\n## Bands\n\nEvery dimensional input lies in a plausibility band of its kind: wide \
          enough for any material or flow the model describes, narrow enough to catch a unit \
          error or a typo. Why each end is where it is: \
-         [docs/input-validation.md](../input-validation.md).\n\n\
+         [docs/reference/input-validation.md](../reference/input-validation.md).\n\n\
          | input | band | fields |\n|---|---|---|\n",
     );
     for band in BANDS {

@@ -20,7 +20,7 @@ pub struct RunControl {
     /// from the last one); none: only on a signal or `--checkpoint-every`
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub checkpoint_interval: Option<f64>,
-    /// end the run early once its solids are at rest (docs/deposit.md); none (the default):
+    /// end the run early once its solids are at rest (docs/reference/deposit.md); none (the default):
     /// run to the end time
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub stop_at_rest: Option<StopAtRest>,
@@ -288,7 +288,7 @@ pub struct FidelityPresets {
     pub smoke: Preset,
     /// minutes to run: the README's default sweep
     pub coarse: Preset,
-    /// the wall layer resolved: the paper's cells in y, coarsened in x (docs/impact.md);
+    /// the wall layer resolved: the paper's cells in y, coarsened in x (docs/studies/impact.md);
     /// default [`FidelityPresets::default_wall`]
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub wall: Option<Preset>,

@@ -354,7 +354,7 @@ pub enum Gravity {
         #[serde(default, skip_serializing_if = "ImpactCriterion::is_floor_cell")]
         criterion: ImpactCriterion,
         /// what the case's end time and profile times count from (default `Start`;
-        /// `Impact` needs a criterion whose time is known in advance, docs/impact.md §4)
+        /// `Impact` needs a criterion whose time is known in advance, docs/studies/impact.md §4)
         #[serde(default, skip_serializing_if = "Clock::is_start")]
         clock: Clock,
     },
@@ -362,7 +362,7 @@ pub enum Gravity {
 
 /// What the times of a case with a tilt-on-impact gravity count from. The paper reports
 /// its profiles "at a simulation time (t) of 1.25 s" of a run whose gravity was tilted at
-/// the impact, which may be the time since the start or since the tilt (docs/impact.md §4).
+/// the impact, which may be the time since the start or since the tilt (docs/studies/impact.md §4).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Clock {
     /// from the start of the run (t = 0 at the release)
@@ -380,7 +380,7 @@ impl Clock {
     }
 }
 
-/// When a [`Gravity::TiltOnImpact`] schedule tilts gravity (docs/impact.md). The paper tilts
+/// When a [`Gravity::TiltOnImpact`] schedule tilts gravity (docs/studies/impact.md). The paper tilts
 /// at "the instant of impacting" without defining it.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]

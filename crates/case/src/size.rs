@@ -10,11 +10,11 @@ use crate::schema::Case;
 /// on examples/cavity-re100.ron at 64², 256² and 512² cells: 9 960, 64 056 and 236 612 KiB,
 /// slopes of 902 and 899 B per cell; a run that writes a checkpoint (SIGINT, the sweep's
 /// every 10 min) peaks higher: 69 796 KiB at 256², 930 B per cell above 10 MiB
-/// (docs/input-validation.md, issue 44); with a margin.
+/// (docs/reference/input-validation.md, issue 44); with a margin.
 const GAS_BYTES_PER_CELL: u64 = 1050;
 
 /// Peak memory per cell added by each solids phase [bytes]. Measured likewise on every
-/// shipped two-fluid case (docs/input-validation.md, issue 44): a run that writes a
+/// shipped two-fluid case (docs/reference/input-validation.md, issue 44): a run that writes a
 /// checkpoint peaks at up to 2 300 B per cell above 10 MiB (S-JJ-phi at the paper grid,
 /// 90 000 cells: 212 448 KiB; the stiff cases at `wall` fidelity 2 293); with a margin,
 /// the one-phase estimate is 2 600 B per cell (C-a1 at `wall`, 4 000 cells: 2 476 B).

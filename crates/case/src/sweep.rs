@@ -94,7 +94,7 @@ pub enum Param {
     SolidsWalls(Vec<SolidsWall>),
     /// the release block (the case's one initial region; its solids state is kept)
     Release(Vec<ReleaseBlock>),
-    /// what the times of a tilt-on-impact case count from (docs/impact.md §4)
+    /// what the times of a tilt-on-impact case count from (docs/studies/impact.md §4)
     Clock(Vec<Clock>),
 }
 

@@ -467,7 +467,7 @@ fn check_presets(c: &mut Checker, case: &Case) {
 }
 
 /// The impact criterion of a tilt-on-impact schedule: its numbers in range, and a release
-/// to measure from where the criterion needs one (docs/impact.md).
+/// to measure from where the criterion needs one (docs/studies/impact.md).
 fn check_impact_criterion(c: &mut Checker, criterion: &ImpactCriterion, case: &Case) {
     let p = "gravity.criterion";
     let has_release = case
@@ -541,7 +541,7 @@ fn check_interval(
             short(v),
             format!(
                 "[{}, {}] s (at most {} {what} to the end time {} s, and >= {} s: \
-                 docs/input-validation.md)",
+                 docs/reference/input-validation.md)",
                 short(lo),
                 short(TIME.hi),
                 short(max_count),

@@ -136,7 +136,7 @@ fn check_fidelity_grid(
             format!("{nx} x {ny} = {cells}"),
             format!(
                 "at most {MAX_CELLS} cells (~{} of memory for the two-fluid solver: \
-                 docs/input-validation.md)",
+                 docs/reference/input-validation.md)",
                 format_bytes(bytes_for_cells(MAX_CELLS as u64, 1))
             ),
         );

@@ -675,7 +675,7 @@ fn sensitivity_base() -> String {
     shipped("sensitivity/base.ron")
 }
 
-/// The base's gravity with another impact criterion (docs/impact.md).
+/// The base's gravity with another impact criterion (docs/studies/impact.md).
 fn with_criterion(criterion: &str) -> String {
     replace_once(
         &sensitivity_base(),

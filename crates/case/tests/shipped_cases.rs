@@ -150,7 +150,7 @@ fn paper_grids_have_the_papers_cell_sizes() {
 #[test]
 fn fidelity_changes_only_grid_and_end_time() {
     // besides the clock: the base counts its times from the impact, which every fidelity
-    // resolves to times from the start (docs/impact.md §4)
+    // resolves to times from the start (docs/studies/impact.md §4)
     let case = load_cases("sensitivity/base.ron").remove(0).case;
     let tilt = case.scheduled_tilt_time().unwrap();
     let resolved = case.clone().with_start_clock();
@@ -175,13 +175,13 @@ fn fidelity_changes_only_grid_and_end_time() {
 #[test]
 fn the_bands_table_of_the_docs_is_the_code_s() {
     let doc = std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/input-validation.md"),
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/reference/input-validation.md"),
     )
     .unwrap();
     let table = runout_case::limits::bands_table();
     assert!(
         doc.contains(&table),
-        "docs/input-validation.md lacks the table of runout_case::limits; it is:\n{table}"
+        "docs/reference/input-validation.md lacks the table of runout_case::limits; it is:\n{table}"
     );
 }
 
@@ -228,7 +228,7 @@ fn the_wall_fidelity_keeps_the_papers_cells_in_y() {
 
 #[test]
 fn the_release_study_moves_only_the_block_one_factor_at_a_time() {
-    // docs/impact.md §4: nine blocks per floor, each differing from base.ron's in one of
+    // docs/studies/impact.md §4: nine blocks per floor, each differing from base.ron's in one of
     // length, height, front edge and bottom; everything else is the family's base
     let mut base = runout_case::load_case(&cases_dir().join("sensitivity/base.ron")).unwrap();
     if let runout_case::Gravity::TiltOnImpact { clock, .. } = &mut base.gravity {
@@ -271,7 +271,7 @@ fn the_release_study_moves_only_the_block_one_factor_at_a_time() {
             same.description = base.description.clone();
             same.boundaries = base.boundaries.clone();
             same.solids = base.solids.clone();
-            // the -t0 files count the times from the impact (docs/impact.md §4)
+            // the -t0 files count the times from the impact (docs/studies/impact.md §4)
             if let runout_case::Gravity::TiltOnImpact { clock, .. } = &mut same.gravity {
                 let want = if file.ends_with("-t0.ron") {
                     runout_case::Clock::Impact

@@ -66,7 +66,7 @@ pub fn sweep(args: &SweepArgs) -> Result<()> {
     runout_study::sweep::sweep(&args.out, &cases, &opts)
 }
 
-/// `runout calibrate` (docs/calibrate.md).
+/// `runout calibrate` (docs/reference/calibrate.md).
 #[derive(clap::Args, Debug, Clone)]
 pub struct CalibrateArgs {
     /// the case or sweep file

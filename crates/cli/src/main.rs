@@ -80,7 +80,7 @@ enum Command {
         #[arg(long)]
         quiet: bool,
         /// stop at this simulated time [s] instead of the fidelity's end time, in the case's
-        /// clock (from the tilt with `clock: Impact`, docs/impact.md §4)
+        /// clock (from the tilt with `clock: Impact`, docs/studies/impact.md §4)
         #[arg(long, value_parser = parse_end_time)]
         end_time: Option<f64>,
         /// run only the case of this name (of a sweep file's cases)
@@ -110,7 +110,7 @@ enum Command {
     /// front from then on), the distal edges at εs ≥ 0.01 and ≥ 0.3, L∞ from the release's
     /// east edge and H∞, the largest thickness at εs ≥ 0.3, with the cells across it; a
     /// warning on stderr where the dense deposit is nowhere `--min-cells` cells thick, a
-    /// note on its thin edge (docs/deposit.md).
+    /// note on its thin edge (docs/reference/deposit.md).
     Post {
         /// a run folder (runs/<case>/<fidelity>, or a `.partial` one of a run still going)
         run_dir: PathBuf,
@@ -151,7 +151,7 @@ enum Command {
     /// each twice as coarse as the one before, into `--out/<case>-x<factor>/` (completed
     /// levels are reused); for the deposit's runout L∞, maximum thickness H∞ and centre,
     /// the observed order, the Richardson value and Roache's GCI of the finest grid
-    /// (docs/deposit.md).
+    /// (docs/reference/deposit.md).
     GridError(cmd_grid_error::GridErrorArgs),
 }
 

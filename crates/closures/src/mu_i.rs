@@ -15,7 +15,7 @@
 //! when they join the kinetic and frictional regimes. Only P_c is added to the momentum
 //! equation as P_fric (P_kin is already in P_s, §2.3), and K_cp = dP_c/dεs as with
 //! Princeton. With P_c alone the Coulomb stress vanishes wherever a flowing layer dilates
-//! below εs,min, and the collapses of docs/collapse.md did not stop (runout 5.9 L0 at a = 1,
+//! below εs,min, and the collapses of docs/reports/collapse.md did not stop (runout 5.9 L0 at a = 1,
 //! against 2.3 L0 with the total pressure). Pressure from εs and θ with a rate-independent
 //! μ(I) is a compressible form in the sense of Heyman et al. (2017, JFM 830, R1), which
 //! removes the short-wave ill-posedness of incompressible μ(I) (Barker et al. 2015, JFM 779);

@@ -1,6 +1,6 @@
 //! What one rayon fork/join costs on this machine, right after another join and after a
 //! serial stretch long enough for the pool's other thread to fall asleep (the reason for
-//! `team.rs`; docs/performance.md, session 21).
+//! `team.rs`; docs/studies/performance.md, session 21).
 //!
 //! `cargo run --release -p runout-linsolve --example join_latency`
 //!

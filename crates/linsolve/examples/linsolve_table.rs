@@ -1,6 +1,6 @@
 //! Solve time and iterations of every backend on the pressure-like (SPD) and
 //! momentum-like (non-symmetric) model systems at about 10k, 100k and 1M unknowns, printed
-//! as a markdown table (the table in docs/performance.md).
+//! as a markdown table (the table in docs/studies/performance.md).
 //!
 //! Run: `cargo run --release -p runout-linsolve --example linsolve_table -- [--max-cells N] [--reps R] [--filter SUBSTRING]`
 //! Runtime: about 1 min up to 100k cells; the 1M row adds a few minutes (2 cores).

@@ -56,7 +56,7 @@
 //! Per-equation defaults: [`LinearSolverKind::pressure_default`],
 //! [`LinearSolverKind::volume_fraction_default`], [`LinearSolverKind::momentum_default`],
 //! [`LinearSolverKind::granular_energy_default`]; the measurements behind them are in
-//! `docs/performance.md` (`cargo run --release -p runout-linsolve --example linsolve_table`).
+//! `docs/studies/performance.md` (`cargo run --release -p runout-linsolve --example linsolve_table`).
 #![deny(missing_docs)]
 
 mod active_box;
@@ -214,7 +214,7 @@ pub enum LinearSolverKind {
     MultigridCg(MultigridParams),
 }
 
-/// Defaults per equation, measured in docs/performance.md (table of `linsolve_table`).
+/// Defaults per equation, measured in docs/studies/performance.md (table of `linsolve_table`).
 /// Tolerances and caps follow MFIX (docs/model.md §4.13: LEQ_TOL = 1e-4; LEQ_IT = 20 for P'
 /// and ε', 5 for U/V, 15 for θ); our rtol is ‖b − A x‖/‖b‖, MFIX's ‖r‖/‖r₀‖, the same
 /// for the zero initial guess of the correction equations.

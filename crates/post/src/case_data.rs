@@ -42,7 +42,7 @@ pub struct CaseData {
     /// x of the flume's channel inlet (the case's gate origin) [m]
     pub gate_origin: Option<f64>,
     /// the paper's t = 1.25 s in the run's clock: its last profile time (later by the tilt
-    /// time for a case whose times count from the impact, docs/impact.md §4) [s]
+    /// time for a case whose times count from the impact, docs/studies/impact.md §4) [s]
     pub station_time: f64,
 }
 

@@ -1,7 +1,7 @@
 //! Where a flow stops: whether and when the solids came to rest, the deposit's extent, its
 //! maximum thickness and its profile along x (issue 43 item 4; `runout post RUN_DIR`).
 //!
-//! Definitions (docs/deposit.md):
+//! Definitions (docs/reference/deposit.md):
 //! - **at rest** from time t_rest: the εs-weighted mean u_s of `bulk.csv` is at most
 //!   v_rest at every sample from t_rest on, and the front of `bulk.csv` does not move after
 //!   t_rest; v_rest = `rest_fraction` · √(g H∞) (default 1 %, the collapse check's
@@ -21,7 +21,7 @@
 //!   volume per unit floor area);
 //! - **cells across** a column's dense deposit: the cells from the floor to its highest cell
 //!   with εs ≥ 0.3. Where a deposit is nowhere [`DEFAULT_MIN_CELLS`] cells thick its shape
-//!   and its edge are the grid's more than the flow's (docs/collapse-floor.md, docs/foot.md):
+//!   and its edge are the grid's more than the flow's (docs/studies/collapse-floor.md, docs/studies/foot.md):
 //!   `runout post` warns; it notes the thin edge every deposit has ([`ThinDeposit`]).
 
 use std::path::Path;
@@ -86,7 +86,7 @@ pub struct Deposit {
     pub on_the_run_out: Option<RunOut>,
 }
 
-/// Where a deposit lies on a floor whose foot turns onto a run-out (docs/deposit.md): x runs
+/// Where a deposit lies on a floor whose foot turns onto a run-out (docs/reference/deposit.md): x runs
 /// along the floor, so the distances below are measured along it, and the drop and the
 /// horizontal distance come from the floor's shape (docs/model.md §9).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -142,7 +142,7 @@ impl ThinDeposit {
         );
         if max_cells < self.min_cells {
             format!(
-                "warning: the dense deposit is at most {max_cells} cells thick, fewer than {} ({columns}): its thickness and its edge are the grid's; refine the grid toward the floor (docs/deposit.md)",
+                "warning: the dense deposit is at most {max_cells} cells thick, fewer than {} ({columns}): its thickness and its edge are the grid's; refine the grid toward the floor (docs/reference/deposit.md)",
                 self.min_cells
             )
         } else {

@@ -1,5 +1,5 @@
 //! The front position of a run against time, with the definition it has. Two definitions
-//! exist (docs/calibrate.md, "Fronts"):
+//! exist (docs/reference/calibrate.md, "Fronts"):
 //! - **interpolated**: where the floor row's εs falls through the monitor's threshold beyond
 //!   its last cell at or above it, linear between the centres of that cell and the next
 //!   (the front tracker's `front.csv`, and `bulk.csv`'s `front_x_interpolated`): continuous

@@ -121,7 +121,7 @@ pub fn profile_metrics(profile: &[Vec<f64>]) -> FlowMetrics {
 
 /// The paper's t = 1.25 s in a run's clock: the last time of its case's first profile
 /// monitor (for a case whose times count from the impact, the tilt time later,
-/// docs/impact.md §4); [`PROFILE_TIME`] without one.
+/// docs/studies/impact.md §4); [`PROFILE_TIME`] without one.
 pub fn station_time(case: Option<&runout_case::Case>) -> f64 {
     case.and_then(|c| c.monitors.profiles.first())
         .and_then(|p| p.times.last().copied())

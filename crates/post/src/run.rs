@@ -21,7 +21,7 @@ pub const BULK_TIME_TOLERANCE: f64 = 0.01;
 pub struct RunMetrics {
     /// the run's summary.json (absent for a run still going or killed)
     pub summary: Option<RunSummary>,
-    /// the paper's t = 1.25 s in the run's clock [s] (docs/impact.md §4)
+    /// the paper's t = 1.25 s in the run's clock [s] (docs/studies/impact.md §4)
     pub station_time: f64,
     /// the time bulk.csv is read at [s]: the station time, or the nearest sample to it
     pub bulk_time: Option<f64>,

@@ -325,7 +325,7 @@ impl TwoFluidCase {
 
 impl TwoFluidCase {
     /// Whether the impact has happened by the start of the step from `time` (paper Fig. 3,
-    /// docs/impact.md).
+    /// docs/studies/impact.md).
     fn impacted(&self, trigger: ImpactTrigger, time: f64) -> bool {
         match trigger {
             ImpactTrigger::FloorEpsS(eps) => {

@@ -1,4 +1,4 @@
-//! The impact criteria of a tilt-on-impact gravity (docs/impact.md, issue 19 item 1) on the
+//! The impact criteria of a tilt-on-impact gravity (docs/studies/impact.md, issue 19 item 1) on the
 //! sensitivity slide at the smoke grid to 0.3 s: the free fall tilts at sqrt(2 h / g)
 //! exactly (the time loop lands a step on it), a given time at that time, and the dense
 //! contact later than the floor cell's εs ≥ 0.01, which the smeared lower edge of the block
@@ -78,7 +78,7 @@ fn free_fall_and_given_times_are_hit_exactly_and_dense_contact_comes_later() {
         &with(ImpactCriterion::DenseContact { fraction: 0.5 }),
         "dense",
     );
-    // measured (docs/impact.md): 0.152 and 0.237 s at smoke, against 0.2856 s
+    // measured (docs/studies/impact.md): 0.152 and 0.237 s at smoke, against 0.2856 s
     assert!(
         floor < 0.2 && dense > 0.2 && dense < free_fall,
         "{floor} {dense}"

@@ -2,7 +2,7 @@
 //! fidelity through the two-fluid solver: the run completes, conserves the solids mass,
 //! keeps εs ≤ εs,max + 0.02, and the front moves forward without retreating and stays
 //! inside the domain. Whether the deposit stops is a separate (ignored) test: it does not
-//! yet (docs/collapse-princeton.md). `cargo xtask verify collapse` compares the runout with the
+//! yet (docs/reports/collapse-princeton.md). `cargo xtask verify collapse` compares the runout with the
 //! laboratory laws.
 
 use std::path::{Path, PathBuf};
@@ -88,7 +88,7 @@ fn a1_smoke_runs_conserves_mass_and_the_front_advances_inside_the_domain() {
 }
 
 #[test]
-#[ignore = "known failure: the a = 1 deposit is still moving at the end (docs/collapse-princeton.md)"]
+#[ignore = "known failure: the a = 1 deposit is still moving at the end (docs/reports/collapse-princeton.md)"]
 fn a1_smoke_deposit_stops() {
     let (case, out, summary) = run_a1("stops");
     assert_eq!(summary.status, RunStatus::Completed);

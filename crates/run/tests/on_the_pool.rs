@@ -1,5 +1,5 @@
 //! A run executes on a thread of the current rayon pool, not on the calling thread
-//! (`runout_run::on_the_pool`, docs/performance.md sessions 15 and 17): the caller waits
+//! (`runout_run::on_the_pool`, docs/studies/performance.md sessions 15 and 17): the caller waits
 //! while the solver's serial stages run on a pool thread.
 
 use std::path::Path;

@@ -284,7 +284,7 @@ fn both_skipped(skip: Option<&[bool]>, k0: usize, k1: usize) -> bool {
 /// u and v are one equation, written twice as mirror images (`u_faces`/`u_sources` and
 /// `v_faces`/`v_sources`; the test `v_of_the_transposed_problem_is_u` holds them to it): one
 /// assembly over the staggered [`Component`] view gave the same results bit for bit but
-/// cost 6–7 % more CPU on family M (docs/performance.md, session 14), where the issue's
+/// cost 6–7 % more CPU on family M (docs/studies/performance.md, session 14), where the issue's
 /// constraint allows 3 %.
 #[allow(clippy::too_many_arguments)]
 pub fn assemble(

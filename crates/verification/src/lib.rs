@@ -6,7 +6,7 @@
 //!   the column collapse) and another code's numbers (MFIX for family M), each with its
 //!   citation;
 //! - [`chute1d`]: a 1-D steady inclined-chute boundary-value solver, the computed reference
-//!   of the chute check (docs/chute1d.md);
+//!   of the chute check (docs/studies/chute1d.md);
 //! - [`problems`]: the verification problems, set up and run on the solver;
 //! - [`check`]: the [`Check`] trait, a problem judged at a [`Size`] into an [`Outcome`];
 //! - [`checks`] and [`registry()`]: the checks, one per problem, that the tests of

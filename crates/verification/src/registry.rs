@@ -25,7 +25,7 @@
 //! Both are studies of the whole program rather than pass/fail checks of the solver: they
 //! run cases through the driver into run directories that they reuse between invocations,
 //! take fidelity presets, thread counts and reuse flags, time the runs (getrusage) and
-//! write their pages (docs/collapse.md, docs/mfix-slope.md) with figures from the VTK
+//! write their pages (docs/reports/collapse.md, docs/reports/mfix-slope.md) with figures from the VTK
 //! output. They stay in xtask with their options, and take their reference numbers from
 //! this crate. The Re = 1000 cavity investigation (`cargo xtask verify cavity-re1000`) is a
 //! study without a limit and stays in xtask too.

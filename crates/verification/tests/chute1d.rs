@@ -1,4 +1,4 @@
-//! Verification of the 1-D steady chute solver (`runout_verification::chute1d`, docs/chute1d.md):
+//! Verification of the 1-D steady chute solver (`runout_verification::chute1d`, docs/studies/chute1d.md):
 //! the discrete diffusion operator against closed forms, the integral momentum and energy
 //! balances of a converged profile, grid convergence of u_s and θ on uniform and stretched
 //! grids against a fine-grid solution, and the error paths.
@@ -12,7 +12,7 @@ use runout_verification::chute1d::{
 use runout_walls::{RobinFace, SolidsWallModel};
 
 /// Depth of the reference layer \[m\]: the bed fills the strip up to the lid
-/// (docs/chute1d.md §2).
+/// (docs/studies/chute1d.md §2).
 const HEIGHT: f64 = 0.0087;
 /// Holdup ∫εs dy of the reference case \[m\] (mean εs = 0.575, about 17 particle diameters
 /// of bed, so that θ stays far above MFIX's clip of 1e-12 m²/s² everywhere).

@@ -132,7 +132,7 @@ impl SolidsWall {
     }
 
     /// The numeric parameters as written, by their case-file names (for the case's
-    /// plausibility bands, docs/input-validation.md); an absent `phi0` is left out.
+    /// plausibility bands, docs/reference/input-validation.md); an absent `phi0` is left out.
     pub fn parameters(&self) -> Vec<(&'static str, f64)> {
         match *self {
             Self::NoSlip | Self::FreeSlip => vec![],

@@ -71,7 +71,7 @@ pub struct LiBenyahia {
 
 impl LiBenyahia {
     /// The law for particle–wall restitution e_w ∈ [0, 1], tan δ_w ≥ 0 and an optional φ₀
-    /// override (MFIX `PHIP0`) in (0, 1] (a specularity; docs/input-validation.md); a φ₀ from
+    /// override (MFIX `PHIP0`) in (0, 1] (a specularity; docs/reference/input-validation.md); a φ₀ from
     /// k outside [0, 1] is an input error (docs/model.md §3.7), and so is k = 0 with φ₀ > 0
     /// (the linear branch divides by k).
     pub fn new(

@@ -1,7 +1,7 @@
 //! `cargo xtask verify collapse [--friction princeton|mu-i|both] [--aspect LIST]
 //! [--fidelity smoke|coarse|paper] [--sidewalls W_L0,MU_W] [--reuse]`: the granular column
 //! collapse check (issues 7 and 43; cases/collapse/, verification-notes.md §2f,
-//! docs/collapse-laws.md).
+//! docs/studies/collapse-laws.md).
 //!
 //! Runs the columns one after the other into `runs/<case>/<fidelity>/` (checkpointed, so a
 //! killed check continues), reads the front of the bulk monitor and the last field file, and
@@ -10,9 +10,9 @@
 //! only if a run does not complete or loses solids mass. `mu-i`: glass-bead columns built
 //! from cases/collapse/CM-a1.ron for each a; they must also meet the thresholds of
 //! [`law_failures`]. `both`: each μ(I) column and beside it the same column with Princeton
-//! friction (only the μ(I) ones are judged). At `coarse` the page goes to docs/
+//! friction (only the μ(I) ones are judged). At `coarse` the page goes to docs/reports/
 //! (collapse.md for `both`, collapse-mu-i.md, collapse-princeton.md) with its figures in
-//! docs/collapse/; at other fidelities, and with `--sidewalls` (every column between Coulomb
+//! docs/reports/collapse/; at other fidelities, and with `--sidewalls` (every column between Coulomb
 //! side walls W apart, [`column::ChannelWalls`]) at any, to
 //! runs/collapse-report/<fidelity>[-<walls>]/. With `--reuse`,
 //! a finished run whose `resolved.ron` equals the case as it would run now is read instead
@@ -267,8 +267,8 @@ fn law_failures(outcomes: &[Outcome], walls: Option<ChannelWalls>) -> Vec<String
 }
 
 /// Writes the report and its figures (runout against a; the deposits): at coarse without
-/// side walls into docs/ (`collapse.md` with both closures, `collapse-mu-i.md`,
-/// `collapse-princeton.md` for the paper's material) and docs/collapse/, otherwise into
+/// side walls into docs/reports/ (`collapse.md` with both closures, `collapse-mu-i.md`,
+/// `collapse-princeton.md` for the paper's material) and docs/reports/collapse/, otherwise into
 /// runs/collapse-report/<fidelity>[-<walls>]/.
 fn write_report(
     root: &Path,
@@ -279,7 +279,7 @@ fn write_report(
 ) -> Result<()> {
     let to_docs = fidelity == Fidelity::Coarse && walls.is_none();
     let out_dir = match walls {
-        _ if to_docs => root.join("docs"),
+        _ if to_docs => root.join("docs/reports"),
         None => root.join("runs/collapse-report").join(fidelity.name()),
         Some(w) => {
             root.join("runs/collapse-report")

@@ -1,4 +1,4 @@
-//! The report of the check (docs/collapse*.md at coarse, runs/collapse-report/<fidelity>/
+//! The report of the check (docs/reports/collapse*.md at coarse, runs/collapse-report/<fidelity>/
 //! otherwise): the results tables, the set-up, the laboratory laws and what the runs show.
 
 use std::fmt::Write as _;
@@ -96,7 +96,7 @@ pub(super) fn markdown_table(outcomes: &[Outcome]) -> String {
     s
 }
 
-/// docs/collapse-princeton.md: the paper's material with Princeton friction: the set-up,
+/// docs/reports/collapse-princeton.md: the paper's material with Princeton friction: the set-up,
 /// the figures and the tables with what their columns mean, the laws, what the runs show.
 pub(super) fn document(
     outcomes: &[Outcome],
@@ -138,7 +138,7 @@ pub(super) fn document(
          3√(H0/g)*: the front when the laboratory fronts have stopped. *Lajeunesse*, \
          *Lube*: λ1 a below the crossover a0, λ2 a^{2/3} above it; a range where a lies in \
          the crossover range (both branches). *grain edge*: to the easternmost column whose \
-         solids height Σ εs Δy is at least one grain diameter (docs/deposit.md). *H∞/L0*: the \
+         solids height Σ εs Δy is at least one grain diameter (docs/reference/deposit.md). *H∞/L0*: the \
          largest thickness at εs ≥ 0.3 over L0. *front speed*: over the last 10 % of the run. \
          *stopped?*: front speed and εs-weighted mean u_s both below 1 % of √(g H0); the \
          front moves by whole cells, so its speed resolves only (cell width)/(window). \
@@ -159,7 +159,7 @@ pub(super) fn document(
 /// and the columns whose grid holds an aspect ratio off the nominal one.
 fn laws_section(s: &mut String, outcomes: &[Outcome], setup_note: &str) {
     s.push_str(
-        "**The laws** (docs/collapse-laws.md: none could be read in its original paper, and \
+        "**The laws** (docs/studies/collapse-laws.md: none could be read in its original paper, and \
          the second-hand sources disagree):\n\n\
          | law | material | λ1 | λ2 a^β: λ2 | β | a0 | read in |\n|---|---|---|---|---|---|---|\n",
     );
@@ -312,14 +312,14 @@ const THRESHOLDS: &str =
          laboratory laws are shown, not judged: the laboratory channels' side walls shorten \
          tall columns (Balmforth & Kerswell 2005: runout exponent 0.65 in narrow slots, 0.9 \
          in wide channels) and the laws' prefactors differ by 50 % between laboratories \
-         (docs/collapse-laws.md). A column between side walls (`--sidewalls`) is not the \
+         (docs/studies/collapse-laws.md). A column between side walls (`--sidewalls`) is not the \
          continuum's plane flow and is judged against the laboratory laws where a ≤ 3. \
          Every deposit must be at rest (εs-weighted mean u_s below 1 % of √(g H0) and a \
          still front from then on) by t = 10 √(H0/g), the runs' end. The laws are \
-         second-hand (below, docs/collapse-laws.md): the column *(Kumar's reading)* shows \
+         second-hand (below, docs/studies/collapse-laws.md): the column *(Kumar's reading)* shows \
          the same paper as another source gives it.\n\n";
 
-/// docs/collapse-mu-i.md (or, `both`, docs/collapse.md): the glass-bead columns with μ(I)
+/// docs/reports/collapse-mu-i.md (or, `both`, docs/reports/collapse.md): the glass-bead columns with μ(I)
 /// (and with Princeton beside them), the check's thresholds, the figures, the tables, the
 /// laws and what the runs show.
 pub(super) fn document_mu_i(
@@ -348,7 +348,7 @@ pub(super) fn document_mu_i(
          edit by hand. The columns are built from `cases/collapse/CM-a1.ron` (its header lists \
          every assumption); the paper's material with Princeton is in \
          [collapse-princeton.md](collapse-princeton.md), the floor conditions in \
-         [collapse-floor.md](collapse-floor.md).\n",
+         [collapse-floor.md](../studies/collapse-floor.md).\n",
         if both { "both" } else { "mu-i" },
         aspects.join(",")
     );
@@ -378,7 +378,7 @@ pub(super) fn document_mu_i(
          Σ εs Δy is at least one grain diameter (a layer about two grains deep), from the last \
          field file: the deposit's extent as a photograph of it shows, and an edge whose \
          definition does not change with the cell height (a cell with εs = 0.01 holds 0.1 d of \
-         grains at L0/10, half that at L0/20; docs/deposit.md); it is the runout the \
+         grains at L0/10, half that at L0/20; docs/reference/deposit.md); it is the runout the \
          thresholds judge. *εs ≥ 0.01*: the bulk monitor's front (`>`: it reached the end \
          wall, a lower bound); *εs ≥ 0.3*: the dense deposit's edge in the last field file. \
          *H∞/L0*: the largest thickness at εs ≥ 0.3, over L0 (whole cells: L0/20 at paper, \

@@ -1,4 +1,4 @@
-//! `docs/error-time/error_time.csv`: one row per case, scheme, level and quantity, with the
+//! `docs/reports/error-time/error_time.csv`: one row per case, scheme, level and quantity, with the
 //! run's grid, cost (wall and CPU time, threads) and status, the quantity's value (station
 //! numbers), its errors and observed order, and for station numbers the GCI of the ladder's
 //! finest level (repeated on every row of the quantity).

@@ -50,10 +50,10 @@
 //! as the sweep's runs do, so the paper level is the sweep's paper run. Each run's CPU time
 //! and threads are kept beside it ([`cost`]).
 //!
-//! Output: `docs/error-time.md` (date, command, the hand-kept notes of
-//! `docs/error-time/notes.md`, levels not run and why, tables),
-//! `docs/error-time/error_time.csv` and one log–log SVG of error against CPU time per case
-//! and quantity in `docs/error-time/`.
+//! Output: `docs/reports/error-time.md` (date, command, the hand-kept notes of
+//! `docs/reports/error-time/notes.md`, levels not run and why, tables),
+//! `docs/reports/error-time/error_time.csv` and one log–log SVG of error against CPU time per case
+//! and quantity in `docs/reports/error-time/`.
 //!
 //! The parts, one a file: [`ladder`] (the levels and schemes), [`quantity`] (what is
 //! compared), [`run`] (running or reusing one level), [`cost`] (its CPU time), [`read`] and
@@ -106,9 +106,9 @@ const NOT_RUN: &str = "not run (--no-run)";
 /// Run folders, relative to the workspace root.
 const RUNS_DIR: &str = "runs/error-time";
 /// The page, relative to the workspace root.
-const PAGE: &str = "docs/error-time.md";
+const PAGE: &str = "docs/reports/error-time.md";
 /// CSV and figures, relative to the workspace root.
-const OUTPUT_DIR: &str = "docs/error-time";
+const OUTPUT_DIR: &str = "docs/reports/error-time";
 /// The notes kept by hand (which commit ran which level, caveats), in [`OUTPUT_DIR`]: the
 /// page puts them under its header.
 const NOTES: &str = "notes.md";

@@ -1,5 +1,5 @@
-//! `docs/error-time.md`: the date and command, the notes kept by hand in
-//! `docs/error-time/notes.md` (which commit ran which level, caveats), the levels (run or
+//! `docs/reports/error-time.md`: the date and command, the notes kept by hand in
+//! `docs/reports/error-time/notes.md` (which commit ran which level, caveats), the levels (run or
 //! not, and why), the error measures, one section per case (the paper's station numbers with
 //! their GCI, [`super::station_page`]; the errors of every quantity with the references and
 //! observed orders), the figures and every run's folder and status.
@@ -24,7 +24,7 @@ fn pipeline_check(levels: &[Level]) -> bool {
 }
 
 /// The page. `notes`, if any, goes under the header as it is (the hand-kept notes of
-/// `docs/error-time/notes.md`, so regenerating the page keeps them).
+/// `docs/reports/error-time/notes.md`, so regenerating the page keeps them).
 pub(super) fn markdown(
     command: &str,
     date: &str,
@@ -85,7 +85,7 @@ pub(super) fn markdown(
     let _ = writeln!(
         md,
         "\nThe numbers are in [error_time.csv]({}/error_time.csv).",
-        OUTPUT_DIR.trim_start_matches("docs/")
+        OUTPUT_DIR.trim_start_matches("docs/reports/")
     );
     Ok(md)
 }
@@ -351,7 +351,7 @@ fn case_figures(
             "![{} {}: error against CPU time]({}/{file})\n",
             case.name,
             q.name(),
-            OUTPUT_DIR.trim_start_matches("docs/")
+            OUTPUT_DIR.trim_start_matches("docs/reports/")
         );
     }
     for q in qs {

@@ -217,7 +217,7 @@ pub(super) fn definitions(md: &mut String) {
          cushion; flow thickness; εs and θ of the floor cell; the largest u_s, at the station \
          at the profile time; h_w^u at the floor probe then): read from each run by the \
          report's own functions (`cargo xtask report`, crate::metrics), so the ladder judges \
-         exactly the numbers docs/results.md shows. Their error is |q − q_ref| in the \
+         exactly the numbers docs/reports/results.md shows. Their error is |q − q_ref| in the \
          quantity's unit.\n\
          - **GCI** (Roache's grid convergence index, the ASME V&V 20 practice as Celik et al. \
          2008 state it): with the three finest levels, ε₂₁ = q₂ − q₁, ε₃₂ = q₃ − q₂ (1 the \

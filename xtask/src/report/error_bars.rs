@@ -1,5 +1,5 @@
 //! Each station number's discretisation error at the paper grid (issue 45, item 3), from the
-//! uniform error ladder of `cargo xtask error-time` (docs/error-time/error_time.csv).
+//! uniform error ladder of `cargo xtask error-time` (docs/reports/error-time/error_time.csv).
 //!
 //! The error bar of a value f_p at the paper level is Roache's grid convergence index with
 //! the ladder's Richardson value f_R and safety factor Fs (error_time/gci.rs):
@@ -24,7 +24,7 @@ use super::findings::{matches, Expected};
 use super::paper::Quantity;
 use super::reading::Reading;
 
-/// The ladder file, relative to the docs directory.
+/// The ladder file, relative to the reports directory (docs/reports/).
 pub const LADDER_FILE: &str = "error-time/error_time.csv";
 
 /// One station number of one ladder.
@@ -107,9 +107,9 @@ fn floor_of(case: &str) -> Option<&str> {
 }
 
 impl Ladders {
-    /// Reads `docs/error-time/error_time.csv` below `docs`; no file is no ladder.
-    pub fn read(docs: &Path) -> Result<Ladders> {
-        let path = docs.join(LADDER_FILE);
+    /// Reads `docs/reports/error-time/error_time.csv` below `reports`; no file is no ladder.
+    pub fn read(reports: &Path) -> Result<Ladders> {
+        let path = reports.join(LADDER_FILE);
         if !path.exists() {
             return Ok(Ladders::default());
         }

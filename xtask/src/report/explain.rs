@@ -1,6 +1,6 @@
 //! The findings not reproduced, explained (issue 45, item 4): for each, one line with the
 //! grid effect (the error ladder, [`super::error_bars`]), the release effect (the release
-//! study, docs/impact.md §4) and what is left, so a reader sees whether the gap is runout,
+//! study, docs/studies/impact.md §4) and what is left, so a reader sees whether the gap is runout,
 //! the grid or the set-up the paper did not report.
 //!
 //! For a number v read from a run at fidelity F:
@@ -26,8 +26,9 @@ use super::paper::Quantity;
 use super::records::Records;
 use super::release::CSV_COLUMNS;
 
-/// The release study's CSV the report reads (coarse: the fidelity with every block).
-pub const RELEASE_CSV: &str = "reports/release/release_coarse.csv";
+/// The release study's CSV the report reads (coarse: the fidelity with every block),
+/// relative to the reports directory (docs/reports/).
+pub const RELEASE_CSV: &str = "release/release_coarse.csv";
 /// The base block's label in the release cases' names.
 const BASE_BLOCK: &str = "release=L0.5-H0.2-F5.5-B0.4";
 
@@ -68,9 +69,9 @@ fn sweep_for(case: &str) -> &'static str {
 }
 
 impl Releases {
-    /// Reads docs/reports/release/release_coarse.csv; no file is no study.
-    pub fn read(docs: &Path) -> Result<Releases> {
-        let path = docs.join(RELEASE_CSV);
+    /// Reads docs/reports/release/release_coarse.csv below `reports`; no file is no study.
+    pub fn read(reports: &Path) -> Result<Releases> {
+        let path = reports.join(RELEASE_CSV);
         if !path.exists() {
             return Ok(Releases::default());
         }

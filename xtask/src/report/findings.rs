@@ -269,7 +269,7 @@ pub fn section(
          paper's value or range (the table says which rule; a bar of half the value or more \
          comes from a ladder that does not converge, and the table says the grid does not \
          decide). The error bar is the grid \
-         convergence index of the uniform ladder of docs/error-time.md, Fs |f − f_Richardson| \
+         convergence index of the uniform ladder of docs/reports/error-time.md, Fs |f − f_Richardson| \
          at the paper level: the case's own ladder where it has one, else the relative bar of \
          its floor condition's ladder, else of S-JJ-phi φ = 0.1's (named in each value). A \
          cushion yes/no at the paper grid shows its thickness with that bar: where the bar is \
@@ -285,9 +285,9 @@ pub fn section(
         md.push_str(
             "**Not reproduced**, with what runout's runs show instead and, after the arrow, \
              what moves it (issue 45, item 4; xtask/src/report/explain.rs): the grid (the \
-             error ladder of docs/error-time.md: at coarse its coarse-to-paper change, at \
+             error ladder of docs/reports/error-time.md: at coarse its coarse-to-paper change, at \
              the paper grid its GCI), the release (the nine blocks of the release study of \
-             the case's floor, docs/impact.md §4, at coarse), and what is left beyond both. \
+             the case's floor, docs/studies/impact.md §4, at coarse), and what is left beyond both. \
              One ladder and one coarse study stand for the family, so both effects are \
              estimates:\n\n",
         );

@@ -1,4 +1,4 @@
-//! The metrics ledger: docs/results/ledger/<fidelity>.csv, committed, one row per case of
+//! The metrics ledger: docs/reports/results/ledger/<fidelity>.csv, committed, one row per case of
 //! every finished run the report has read ([`RunRecord`], columns of [`super::row`]),
 //! sorted by case. Run folders do not survive a change of machine; the ledger does, so the
 //! findings of a fidelity can be judged from runs made in earlier sessions, on a cluster or
@@ -20,7 +20,7 @@ use runout_post::chosen::Run;
 use super::record::{is_finished, RunRecord, Source};
 use super::row::{columns, from_row, to_row, Cells};
 
-/// The ledger's folder, relative to the docs directory.
+/// The ledger's folder, relative to the reports directory (docs/reports/).
 pub const LEDGER_DIR: &str = "results/ledger";
 /// The fidelities the ledger records, coarsest first.
 pub const LEDGER_FIDELITIES: [Fidelity; 3] = [Fidelity::Coarse, Fidelity::Wall, Fidelity::Paper];
@@ -61,9 +61,9 @@ fn csv_text(rows: &BTreeMap<String, RunRecord>) -> Result<String> {
 }
 
 impl Ledger {
-    /// Reads the ledger under the docs directory `docs`.
-    pub fn read(docs: &Path) -> Result<Ledger> {
-        let dir = docs.join(LEDGER_DIR);
+    /// Reads the ledger under the reports directory `reports`.
+    pub fn read(reports: &Path) -> Result<Ledger> {
+        let dir = reports.join(LEDGER_DIR);
         let mut rows = BTreeMap::new();
         for f in LEDGER_FIDELITIES {
             rows.insert(f.name(), read_file(&dir.join(format!("{f}.csv")))?);
@@ -195,12 +195,13 @@ fn check_grid(cases: &Path, r: &RunRecord) -> Result<()> {
 }
 
 /// `cargo xtask ledger add RUN_DIR...`: records each run folder in the ledger under the
-/// docs directory `docs`, checked against the matrix of the case directory `cases`.
-pub fn add(docs: &Path, cases: &Path, dirs: &[PathBuf], opts: &AddOptions) -> Result<()> {
+/// reports directory `reports` (docs/reports/), checked against the matrix of the case
+/// directory `cases`.
+pub fn add(reports: &Path, cases: &Path, dirs: &[PathBuf], opts: &AddOptions) -> Result<()> {
     if opts.case.is_some() && dirs.len() > 1 {
         bail!("--case names the case of one folder; give one RUN_DIR");
     }
-    let mut ledger = Ledger::read(docs)?;
+    let mut ledger = Ledger::read(reports)?;
     for dir in dirs {
         let r = record_of(dir, opts)?;
         check_grid(cases, &r).with_context(|| dir.display().to_string())?;

@@ -34,7 +34,7 @@ pub const GATES: usize = 7;
 pub enum Source {
     /// a run folder `runs/<case>/<fidelity>/` on this machine
     Store,
-    /// a row of docs/results/ledger/<fidelity>.csv
+    /// a row of docs/reports/results/ledger/<fidelity>.csv
     Ledger,
 }
 

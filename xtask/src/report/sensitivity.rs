@@ -168,7 +168,7 @@ fn bulk_at(r: &RunRecord, t: f64) -> Result<(f64, f64), String> {
 }
 
 /// The station time of a family's runs: the paper's t = 1.25 s in their clock (1.25 s after
-/// the impact for family S, docs/impact.md §4), the same for every run of a family.
+/// the impact for family S, docs/studies/impact.md §4), the same for every run of a family.
 fn family_station_time(family: &Family, records: &Records) -> f64 {
     family
         .points
@@ -349,7 +349,7 @@ fn method(md: &mut String) {
          where the domain starts. Mean u_s: the εs-weighted mean over the domain (bulk.csv). \
          Front travel, mean u_s and h_w^u at the floor probe are read at the station time (the \
          paper's t = {PROFILE_TIME} s: for family S 1.25 s after the impact, the run's \
-         t = 1.536 s, docs/impact.md §4), or, where the family's runs all end before it, at \
+         t = 1.536 s, docs/studies/impact.md §4), or, where the family's runs all end before it, at \
          their end (column \"read at\"); the profile exists only at the station time.\n\n\
          **Limits.** One-at-a-time: each family moves one parameter with the others at that \
          sweep's base, so interactions are not seen, and the base differs between families \
@@ -357,7 +357,7 @@ fn method(md: &mut String) {
          the swept points only: secants between points that are far apart (φ and d by factors \
          of 2–10), so a threshold response such as a cushion appearing is summarised by one \
          number that hides it, and nothing is said between or beyond the points. The numbers \
-         carry the runs' discretisation error (docs/error-time.md), which at coarse fidelity \
+         carry the runs' discretisation error (docs/reports/error-time.md), which at coarse fidelity \
          is of the size of some differences here; the bulk front moves in whole cells (0.2 m \
          at smoke, 0.08 m at coarse fidelity), so front travel changes in steps and a 0 can \
          mean a change below one cell. At smoke and coarse fidelity the station \
@@ -487,8 +487,9 @@ fn heat_map(c: &Computed, heat_cells: Vec<Vec<HeatCell>>, svg: &Path) -> Result<
         rows: c.families.iter().map(Family::label).collect(),
         columns: OUTPUTS.iter().map(|o| o.short().to_string()).collect(),
         cells: heat_cells,
-        note: "* arc elasticity (the family has p = 0); grey: no value (see docs/results.md)"
-            .into(),
+        note:
+            "* arc elasticity (the family has p = 0); grey: no value (see docs/reports/results.md)"
+                .into(),
     };
     plots::draw_heatmap(svg, &map)
 }

@@ -149,7 +149,7 @@ pub fn section(
     md.push_str(
         "Each fidelity judged from its own runs only: the run folder on this machine where \
          there is one, else the case's row of the committed ledger \
-         (docs/results/ledger/<fidelity>.csv, written by `cargo xtask report` and \
+         (docs/reports/results/ledger/<fidelity>.csv, written by `cargo xtask report` and \
          `cargo xtask ledger add`). A fidelity without a run of every case the findings read \
          gets no count. Smoke runs are a CI check and are not judged here.\n\n",
     );

@@ -207,15 +207,15 @@ pub(super) fn mfix_section(md: &mut String, records: &Records) {
 }
 
 /// The floor-variant comparison of family M (issue 9, item 4) as `cargo xtask verify
-/// mfix-slope` wrote it into docs/mfix-slope.md, with a sentence ranking the floors by slip;
+/// mfix-slope` wrote it into docs/reports/mfix-slope.md, with a sentence ranking the floors by slip;
 /// a note if that file or section does not exist yet.
-pub(super) fn floors_section(md: &mut String, docs: &Path) {
+pub(super) fn floors_section(md: &mut String, reports: &Path) {
     const HEADING: &str = "## The four floors at t = 0.3 s";
     md.push_str("### Family M: the four floors at t = 0.3 s (issue 9)\n\n");
-    let text = std::fs::read_to_string(docs.join("mfix-slope.md")).unwrap_or_default();
+    let text = std::fs::read_to_string(reports.join("mfix-slope.md")).unwrap_or_default();
     let Some(start) = text.find(HEADING) else {
         md.push_str(
-            "**Missing**: docs/mfix-slope.md has no floor comparison yet; run `cargo xtask \
+            "**Missing**: docs/reports/mfix-slope.md has no floor comparison yet; run `cargo xtask \
              verify mfix-slope`.\n\n",
         );
         return;
@@ -229,7 +229,7 @@ pub(super) fn floors_section(md: &mut String, docs: &Path) {
     let section = body[..end].trim_start_matches(|c: char| c != '\n').trim();
     md.push_str(section);
     md.push_str(
-        "\n\nFrom docs/mfix-slope.md (written by `cargo xtask verify mfix-slope`, MFIX's grid).",
+        "\n\nFrom docs/reports/mfix-slope.md (written by `cargo xtask verify mfix-slope`, MFIX's grid).",
     );
     // rank by the wall-row mean solids velocity (table column 3) and give θ (column 5)
     let mut rows: Vec<(String, f64, f64)> = section

@@ -1,7 +1,7 @@
 //! Measurements to calibrate against, and their misfit to a finished run.
 //!
 //! A CSV file with a header line; lines starting with `#` are comments. The header says
-//! what is measured (docs/calibrate.md):
+//! what is measured (docs/reference/calibrate.md):
 //! - `gate`, `speed_m_s`: front speed at each gate (cases/flume/gates.csv; gate `L3` or `3`;
 //!   an empty speed is a gate without a measurement) against the run's front speed at the
 //!   gates of its `gates.csv`, interpolated in time from its front series so that it is

@@ -1,6 +1,6 @@
 //! `runout calibrate` (and `cargo xtask calibrate`): fits one or two numeric fields of a case to measurements by
 //! minimising χ² = Σ (simulated − measured)²/σ², and states the range Δχ² ≤ 1 of the
-//! parameters consistent with them (docs/calibrate.md).
+//! parameters consistent with them (docs/reference/calibrate.md).
 //!
 //! Everything is checked before the first run: the case file, each `--param` (its path in
 //! the case, its bounds and start, the case valid at every corner of the bounds) and the

@@ -3,7 +3,7 @@
 //! A case is serialised to a `serde_json::Value` (enums externally tagged: a variant is an
 //! object with one key, its name), walked, changed and deserialised and validated again.
 //!
-//! Path syntax (docs/calibrate.md):
+//! Path syntax (docs/reference/calibrate.md):
 //! - dotted field names with indices, `solids[0].diameter`, `initial.regions[0].x[1]`
 //!   (an index may also be written as a segment: `solids.0.diameter`);
 //! - enum variants are optional segments: `boundaries.south.solids.specularity` and

@@ -8,7 +8,7 @@
 //! profile station) is given them by [`TruthStudy::monitors`], for the truth and every
 //! calibration run alike.
 //!
-//! The CI tests run family M at smoke fidelity; the tables of docs/calibrate.md are the
+//! The CI tests run family M at smoke fidelity; the tables of docs/reference/calibrate.md are the
 //! ignored tests `recovery_table` and `recovery_table_*` (their commands there), at coarse
 //! fidelity.
 
@@ -363,7 +363,7 @@ mod tests {
     /// 1 mm, a 3 × 3 scan of φ ∈ [0.1, 0.5] (log) × e_w ∈ [0.5, 0.95] and Nelder–Mead from the
     /// best scan cell: the region Δχ² ≤ 2.30 contains the truth. (The wall friction angle is
     /// the floor's third field, but the front hardly moves with it: 0.4 mm at 0.3 s from 11°
-    /// to 20°, docs/calibrate.md.) The region follows the valley of χ² (5 stations of its
+    /// to 20°, docs/reference/calibrate.md.) The region follows the valley of χ² (5 stations of its
     /// profile). About 20 smoke runs and up to 35 along the valley.
     #[test]
     fn smoke_truth_of_two_wall_parameters_is_recovered_within_its_region() {
@@ -437,7 +437,7 @@ mod tests {
         let _ = std::fs::remove_dir_all(&dir);
     }
 
-    /// The table of docs/calibrate.md: family M at coarse fidelity, several truths, one and
+    /// The table of docs/reference/calibrate.md: family M at coarse fidelity, several truths, one and
     /// two parameters, with and without noise. About 15 coarse runs (~20 s each on a quiet
     /// core) per row; `cargo test --release -p runout-study recovery_table -- --ignored --nocapture`.
     #[test]
@@ -547,11 +547,11 @@ mod tests {
         }
     }
 
-    /// The gate-speed and profile rows of docs/calibrate.md: family M at coarse fidelity
+    /// The gate-speed and profile rows of docs/reference/calibrate.md: family M at coarse fidelity
     /// with gates at x = 1.0, 1.5, 2.0, 2.5 m and the u_s profile at x = 0.3 m, t = 0.3 s
     /// (εs ≥ 0.001), truth φ = 0.3, each with two σ (the runs shared in one folder). It
     /// prints the rows and asserts nothing: the gate-speed rows miss the truth (the gate
-    /// speeds scatter by more than σ near it; docs/calibrate.md);
+    /// speeds scatter by more than σ near it; docs/reference/calibrate.md);
     /// `cargo test --release -p runout-study recovery_table_stations -- --ignored --nocapture`.
     #[test]
     #[ignore]
@@ -564,7 +564,7 @@ mod tests {
         station_rows(&[(profile.clone(), 0.02), (profile, 0.01)]);
     }
 
-    /// The gate-speed rows of docs/calibrate.md (the speed at each gate interpolated from
+    /// The gate-speed rows of docs/reference/calibrate.md (the speed at each gate interpolated from
     /// the front series, `runout_post::gates::speed_at_gate`): family M at coarse fidelity
     /// with gates at x = 0.5–2.0 m, the truth φ = 0.3, σ = 0.3 and 0.1 m/s; `cargo test
     /// --release -p runout-study recovery_table_gate_speeds -- --ignored --nocapture`.
@@ -591,11 +591,11 @@ mod tests {
         }
     }
 
-    /// The two-parameter row of docs/calibrate.md: family M at coarse fidelity, truth
+    /// The two-parameter row of docs/reference/calibrate.md: family M at coarse fidelity, truth
     /// (φ, e_w) = (0.3, 0.7), its fronts at 0.2–1.0 s with σ = 5 mm, a 3 × 3 scan,
     /// Nelder–Mead and 7 stations of the profile along the valley (φ and e_w trade off along
     /// a valley of the fronts' χ²: without the profile the region missed the truth,
-    /// docs/calibrate.md); `cargo test --release -p runout-study recovery_table_two_parameters --
+    /// docs/reference/calibrate.md); `cargo test --release -p runout-study recovery_table_two_parameters --
     /// --ignored --nocapture`.
     #[test]
     #[ignore]

@@ -2,7 +2,7 @@
 //! χ² can be trusted at the stated σ.
 //!
 //! A run's outputs are not a smooth function of its parameters: a front on a grid moves with
-//! a cell-scale wiggle, and a gate speed carries it (docs/calibrate.md: coarse gate speeds
+//! a cell-scale wiggle, and a gate speed carries it (docs/reference/calibrate.md: coarse gate speeds
 //! of runs 1 % apart in φ differ by 0.01–0.05 m/s). If that scatter is not small against σ,
 //! χ²'s minimum sits on a favourable wiggle and the range Δχ² ≤ 1 around it is as random
 //! as the wiggle. With r_i(u) = (s_i(u) − m_i)/σ_i the normalised residuals of an
@@ -16,7 +16,7 @@
 //! their points, that change is small). A wiggle that decorrelates only over distances
 //! longer than the pairs' is not seen: the coarse gate speeds of family M differ by
 //! ~0.02 m/s between runs 1 % apart in φ but by ~0.1 m/s between runs 5 % apart
-//! (docs/calibrate.md), so a small σ_model/σ is necessary for a trustworthy range, not
+//! (docs/reference/calibrate.md), so a small σ_model/σ is necessary for a trustworthy range, not
 //! sufficient. When σ_model/σ exceeds [`RELIABLE_RATIO`] the summary says so and names the σ
 //! the scatter would not dominate (3 σ_model).
 

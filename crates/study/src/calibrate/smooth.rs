@@ -5,7 +5,7 @@
 //! cells, a gate speed carries it). χ² computed from the runs themselves then has a minimum
 //! on a favourable wiggle, and the range Δχ² ≤ 1 around it is as random as the wiggle: the
 //! coarse gate speeds of family M fitted at σ = 0.1 m/s gave φ 0.1975–0.2163 for a truth of
-//! 0.3 (docs/calibrate.md). Here the wiggle is treated as the model's scatter, a noise of
+//! 0.3 (docs/reference/calibrate.md). Here the wiggle is treated as the model's scatter, a noise of
 //! its own added to the measurement's:
 //!
 //! 1. the normalised residuals r_i(u) = (s_i(u) − m_i)/σ_i of the evaluations are smoothed
@@ -42,7 +42,7 @@
 //! Where the trend curves strongly within W the local quadratic is biased and its "scatter"
 //! is mostly lack of fit: for the coarse fronts of family M (46 mm between φ = 0.1 and 0.3)
 //! the smooth range alone misses the truth by 1–2 % of φ, the runs' own range does not,
-//! hence the hull (docs/calibrate.md, the recovery table).
+//! hence the hull (docs/reference/calibrate.md, the recovery table).
 
 use nalgebra::{Matrix3, Vector3};
 use serde::Serialize;

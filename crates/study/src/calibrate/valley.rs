@@ -3,7 +3,7 @@
 //! Two parameters the measurements trade off (a lower specularity with a higher wall
 //! restitution slides the same way) give a χ² with a long, curved valley. Nelder–Mead ends
 //! somewhere on its floor, and neither the bounding box of its evaluations nor a quadratic
-//! fitted to them reaches the valley's ends (docs/calibrate.md, the (φ, e_w) row). The
+//! fitted to them reaches the valley's ends (docs/reference/calibrate.md, the (φ, e_w) row). The
 //! profile of χ² follows the floor instead (Press et al., *Numerical Recipes*, §15.6;
 //! Venzon & Moolgavkar 1988, *Appl. Stat.* 37, "profile likelihood"):
 //!

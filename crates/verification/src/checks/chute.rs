@@ -1,7 +1,7 @@
 //! The `chute` check (issue 7, inclined plane): steady, fully developed flow down a slope
 //! with a Johnson–Jackson floor; the 2-D two-fluid solver on a periodic column against the
 //! 1-D steady solve of the same equations ([`crate::problems::chute_column`],
-//! [`crate::chute1d`], docs/chute.md). εs, u_s and θ must agree within
+//! [`crate::chute1d`], docs/reports/chute.md). εs, u_s and θ must agree within
 //! [`CHUTE_TOLERANCE`] of their largest value once the column is steady.
 //!
 //! - fast: 40 cells at 25°, plane (also: solids mass conserved to 1e-10, drag below 1e-4 of
@@ -9,7 +9,7 @@
 //!   change the 1-D u_s by more than 0.2 of its largest value, and the two solvers agree
 //!   on the changed profile);
 //! - full: 80 cells at 15°, 25° and 35°, and at 25° with side walls
-//!   ([`Chute::run_full`], which `cargo xtask verify chute` also turns into docs/chute.md).
+//!   ([`Chute::run_full`], which `cargo xtask verify chute` also turns into docs/reports/chute.md).
 
 use crate::check::{Check, Limit, Outcome, Size};
 use crate::problems::chute_column::{reference, run, ChuteCheck, ChuteCheckSetup, SIDEWALL_WIDTH};
@@ -73,7 +73,7 @@ fn agreement(outcome: &mut Outcome, label: &str, c: &ChuteCheck) {
 
 impl Chute {
     /// The full size's runs with their outcome (`cargo xtask verify chute` writes the runs
-    /// into docs/chute.md).
+    /// into docs/reports/chute.md).
     pub fn run_full(&self) -> anyhow::Result<(Outcome, Vec<ChuteRun>)> {
         let mut outcome = Outcome::new(self.name(), Size::Full);
         let mut runs = Vec::new();

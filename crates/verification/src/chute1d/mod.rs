@@ -1,6 +1,6 @@
 //! Steady, fully developed granular flow down an inclined plane: a 1-D boundary-value solve
 //! of the two-fluid model's solids equations with the closures and wall conditions the 2-D
-//! solver uses (issue 7, third check; `docs/chute1d.md`).
+//! solver uses (issue 7, third check; `docs/studies/chute1d.md`).
 //!
 //! Coordinates: x along the slope (downhill), y normal to the floor (floor at y = 0, a lid at
 //! y = H); gravity g = (g sin α, −g cos α). Fully developed: ∂/∂x = 0, v_s = 0. Dry: ρ_g = 0
@@ -45,7 +45,7 @@
 //! to εs = 1. The banded Jacobian plus the dense holdup row is solved by faer's sparse LU with
 //! partial pivoting and a Sherman–Morrison correction.
 //!
-//! Limits (`docs/chute1d.md` §3): a free surface with a dilute layer above the bed is not
+//! Limits (`docs/studies/chute1d.md` §3): a free surface with a dilute layer above the bed is not
 //! resolved (the discrete hydrostatic balance has no positive solution once g cos α Δy/2
 //! exceeds θ there); gas is not implemented ([`Chute1dError::GasNotSupported`]).
 
@@ -356,7 +356,7 @@ pub fn diffusive_fluxes(
 
 /// Solves d/dy(Γ dφ/dy) + S = 0 on `grid` with the Robin `floor` at y = 0 and zero gradient at
 /// the top, Γ and S given per cell: the same discrete operator as [`diffusive_fluxes`]
-/// (for the discretisation check against closed forms, `docs/chute1d.md` §4).
+/// (for the discretisation check against closed forms, `docs/studies/chute1d.md` §4).
 pub fn solve_linear_diffusion(
     grid: &Axis,
     gamma: &[f64],

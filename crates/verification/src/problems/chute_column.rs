@@ -4,15 +4,15 @@
 //! against the 1-D steady boundary-value solve of the same equations and closures ([`crate::chute1d`]),
 //! on the same y grid. Run by the `chute` check ([`crate::checks::chute`]): fast in
 //! `crates/verification/tests/chute_column.rs`, full by `cargo xtask verify chute`
-//! (docs/chute.md).
+//! (docs/reports/chute.md).
 //!
-//! The reference is dry (ρ_g = 0, docs/chute1d.md §1) and the two-fluid solver always carries
+//! The reference is dry (ρ_g = 0, docs/studies/chute1d.md §1) and the two-fluid solver always carries
 //! a gas, so the column's gas is made negligible rather than absent: ρ_g and μ_g are tiny
 //! (defaults 1e-3 kg m⁻³ and 1e-8 Pa s). The check measures what that leaves: the largest
 //! drag force on the solids relative to their weight along the slope, and the buoyancy
 //! ρ_g/ρ_s, both reported in [`ChuteCheck`].
 //!
-//! The setup is the confined strip of docs/chute1d.md §3: H = 8.7 mm, holdup 5 mm (mean
+//! The setup is the confined strip of docs/studies/chute1d.md §3: H = 8.7 mm, holdup 5 mm (mean
 //! εs 0.575), 25°, the paper's material (d = 0.5 mm, ρs = 2000 kg m⁻³, e = 0.9, Princeton
 //! friction φ = 35°, εs,max = 0.65, εs,min = 0.5), JJ floor φ' = 0.1, e_w = 0.7, δ_w = 11°,
 //! free-slip lid with zero θ flux.
@@ -81,7 +81,7 @@ pub struct ChuteCheckSetup {
 }
 
 impl Default for ChuteCheckSetup {
-    /// The reference case of docs/chute1d.md §3 on 80 cells.
+    /// The reference case of docs/studies/chute1d.md §3 on 80 cells.
     fn default() -> Self {
         Self {
             cells: 80,

@@ -1,7 +1,7 @@
 //! The paper's slide with a Johnson–Jackson floor, S-JJ-phi with φ = 0.1 (issue 7, last
 //! check), run through the driver ([`runout_run::run_case`]): the block falls, gravity
 //! tilts on impact, and the flow slides to the paper's t = 1.25 s (1.25 s after the tilt,
-//! docs/impact.md §4). The check wants no NaN, εs ≤ εs,max + 0.02 everywhere at every step,
+//! docs/studies/impact.md §4). The check wants no NaN, εs ≤ εs,max + 0.02 everywhere at every step,
 //! and the solids mass conserved within 1e-8 relative. The smoke grid (10× coarser than the
 //! paper's) is run to 1.25 s instead of the preset's 0.4 s.
 

@@ -1,7 +1,7 @@
 //! Botella & Peyret (1998), "Benchmark spectral results on the lid-driven cavity flow",
 //! Computers & Fluids 27(4), 421–433: the spectral (Chebyshev collocation, N = 160)
 //! centreline velocities of the lid-driven cavity at Re = 1000 at Ghia's sample points, and
-//! the centreline extrema, for judging Ghia's own accuracy at Re = 1000 (docs/verification.md).
+//! the centreline extrema, for judging Ghia's own accuracy at Re = 1000 (docs/studies/verification.md).
 
 use super::ghia::{CentrelineReference, GHIA_X, GHIA_Y};
 

@@ -1,8 +1,8 @@
 //! The laboratory runout laws of the granular column collapse (`cargo xtask verify collapse`,
-//! docs/collapse.md): (L∞ − L0)/L0 = λ1 a below the crossover aspect ratio, λ2 a^{2/3}
+//! docs/reports/collapse.md): (L∞ − L0)/L0 = λ1 a below the crossover aspect ratio, λ2 a^{2/3}
 //! above it, and the deposit's height H∞/L0 = a below a break, a^β above it.
 //!
-//! **Provenance (docs/collapse-laws.md).** None of the coefficients could be read in the
+//! **Provenance (docs/studies/collapse-laws.md).** None of the coefficients could be read in the
 //! original papers (Lajeunesse, Monnier & Homsy 2005; Lube, Huppert, Sparks & Freundt 2005;
 //! Lagrée, Staron & Popinet 2011): their full texts are not available here. The runout laws
 //! are those a third-party validation page compiled from Lagrée et al.'s Eqs. 3.1–3.2, and
