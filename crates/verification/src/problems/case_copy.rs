@@ -3,8 +3,8 @@
 
 use std::path::Path;
 
-use anyhow::{Context, Result};
-use runout_case::{load_case, Case, Gravity};
+use anyhow::{bail, Context, Result};
+use runout_case::{load, load_case, Case, Gravity, Loaded};
 use runout_mesh::Segment;
 
 /// The shipped case `template` (relative to the workspace root) renamed `name`, on a uniform
@@ -31,6 +31,23 @@ pub(crate) fn template_on_grid(
     }];
     case.gravity = gravity;
     Ok(case)
+}
+
+/// The member `name` of the shipped sweep `file` (relative to the workspace root).
+pub(crate) fn sweep_member(file: &str, name: &str) -> Result<Case> {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../..")
+        .join(file);
+    let Loaded::Cases(cases) =
+        load(&path).with_context(|| format!("loading {}", path.display()))?
+    else {
+        bail!("{} is not a sweep", path.display())
+    };
+    Ok(cases
+        .into_iter()
+        .find(|c| c.case.name == name)
+        .with_context(|| format!("no case {name} in {}", path.display()))?
+        .case)
 }
 
 /// `case` with its gas's viscosity scaled by `fraction` (a thin pore gas whose drag, in the

@@ -13,14 +13,14 @@
 //! the flow thickness at the station (one cell each), and max u_s, mean u_s and the floor
 //! cell's εs at the station (relative).
 
-use std::path::Path;
-
-use anyhow::{bail, Context, Result};
-use runout_case::{load, Case, Fidelity, Loaded};
+use anyhow::{bail, Result};
+use runout_case::{Case, Fidelity};
 use runout_post::front::front_series;
 use runout_post::interpolate::interpolate;
 use runout_post::metrics::PROFILE_TIME;
 use runout_post::run::{run_metrics, RunMetrics};
+
+use super::case_copy::sweep_member;
 
 /// The sweep file, relative to the workspace root.
 pub const CASE_FILE: &str = "cases/sensitivity/S-JEN-d.ron";
@@ -65,19 +65,7 @@ pub struct RelaxationRun {
 
 /// The shipped case (every fidelity).
 pub fn shipped_case() -> Result<Case> {
-    let file = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../..")
-        .join(CASE_FILE);
-    let Loaded::Cases(cases) =
-        load(&file).with_context(|| format!("loading {}", file.display()))?
-    else {
-        bail!("{} is not a sweep", file.display())
-    };
-    Ok(cases
-        .into_iter()
-        .find(|c| c.case.name == CASE_NAME)
-        .with_context(|| format!("no case {CASE_NAME} in {}", file.display()))?
-        .case)
+    sweep_member(CASE_FILE, CASE_NAME)
 }
 
 /// The shipped case's own factors.

@@ -5,11 +5,11 @@
 //! and the solids mass conserved within 1e-8 relative. The smoke grid (10× coarser than the
 //! paper's) is run to 1.25 s instead of the preset's 0.4 s.
 
-use std::path::Path;
-
-use anyhow::{bail, Context, Result};
-use runout_case::{load, Fidelity, Loaded};
+use anyhow::Result;
+use runout_case::Fidelity;
 use runout_output::RunSummary;
+
+use super::case_copy::sweep_member;
 
 /// The case file of the sensitivity family S-JJ-phi, relative to the workspace root.
 pub const CASE_FILE: &str = "cases/sensitivity/S-JJ-phi.ron";
@@ -32,19 +32,7 @@ pub struct SlideRun {
 
 /// Runs S-JJ-phi φ = 0.1 at `fidelity` to 1.25 s in a temporary directory.
 pub fn run(fidelity: Fidelity) -> Result<SlideRun> {
-    let file = Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../..")
-        .join(CASE_FILE);
-    let Loaded::Cases(cases) =
-        load(&file).with_context(|| format!("loading {}", file.display()))?
-    else {
-        bail!("{} is not a sweep", file.display())
-    };
-    let mut case = cases
-        .into_iter()
-        .find(|c| c.case.name == CASE_NAME)
-        .with_context(|| format!("no case {CASE_NAME} in {}", file.display()))?
-        .case;
+    let mut case = sweep_member(CASE_FILE, CASE_NAME)?;
     case.fidelity.smoke.end_time = END_TIME;
     let end_time = case.at_fidelity(fidelity).run.end_time;
     let out = std::env::temp_dir().join(format!(
