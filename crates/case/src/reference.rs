@@ -193,6 +193,7 @@ const CASE: &[Field] = &[
     f("numerics.relaxation.wall_closures", "number", "-", "1", "", "the state-dependent solids wall closures between outer iterations (1 = MFIX)"),
     f("numerics.relaxation.wall_closures_at", "Everywhere \\| Oscillating", "", "Everywhere", "", "where `wall_closures` applies: every wall node, or the nodes whose closure changed direction"),
     f("numerics.relaxation.solids_velocity_base", "Centre \\| OwnPart", "", "the friction model's", "", "what the solids momentum relaxation is proportional to: the whole centre coefficient (MFIX, Patankar) or the row's own part (model.md §4.10); default OwnPart with μ(I), Centre otherwise"),
+    f("numerics.momentum_form", "ContinuitySubtracted \\| Conservative", "", "ContinuitySubtracted", "", "the momentum equations' transient and convection: MFIX's continuity-subtracted form, or the conservative form that adds each momentum cell's continuity remainder (not MFIX; model.md §4.3)"),
     f("numerics.exact_solids_mass", "bool", "", "false", "", "end every converged step with exact discrete solids continuity (not MFIX)"),
     f("numerics.dilute_cells", "EveryIteration \\| FrozenWhenCycling", "", "EveryIteration", "", "how θ rows are classed dilute or dense (model.md §4.8)"),
     f("fidelity.smoke", "Preset", "", REQ, "", "the seconds-long fidelity (CI); see Preset"),

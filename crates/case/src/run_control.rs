@@ -168,6 +168,11 @@ pub struct Numerics {
     /// false: MFIX lets the step tolerance's remainder accumulate where solids compact)
     #[serde(default)]
     pub exact_solids_mass: bool,
+    /// the momentum equations' transient and convection: MFIX's continuity-subtracted form
+    /// (default) or the conservative form, which adds the momentum cell's continuity
+    /// remainder (docs/model.md §4.3, departure M26)
+    #[serde(default)]
+    pub momentum_form: MomentumForm,
     /// how the θ row of a cell is classified dilute (εs ≤ DIL_EP_S: the mean of its dense
     /// neighbours) or dense (docs/model.md §4.8): at every outer iteration by the current εs
     /// (default, MFIX), or so, but dilute for the rest of a step once a cell's class has
@@ -175,6 +180,20 @@ pub struct Numerics {
     /// otherwise stalls)
     #[serde(default)]
     pub dilute_cells: DiluteCellClass,
+}
+
+/// The form of the momentum equations' transient and convection ([`Numerics::momentum_form`],
+/// docs/model.md §4.3).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum MomentumForm {
+    /// a_P = Σ a_nb + a_P⁰ with the old bulk density, the momentum cell's continuity taken
+    /// as satisfied (MFIX, [NUM] §3.2)
+    #[default]
+    ContinuitySubtracted,
+    /// the continuity-subtracted form plus the momentum cell's continuity remainder r φ_P,
+    /// so that the phase's momentum changes by its forces alone whatever the outer
+    /// iterations leave of continuity (not MFIX)
+    Conservative,
 }
 
 /// The classification of the θ rows into dilute and dense cells ([`Numerics::dilute_cells`]).

@@ -11,6 +11,7 @@ use runout_walls::{RobinFace, SolidsWallModel};
 
 use crate::RunError;
 use runout_solver::bent_floor::BentFloor;
+use runout_solver::momentum::MomentumForm;
 
 use crate::polygon;
 use runout_solver::single_phase::{Fluid, Settings, SideBc, SinglePhase};
@@ -329,6 +330,10 @@ fn two_fluid_settings(case: &Case) -> TwoFluidSettings {
         detect_stall: case.run.tolerances.detect_stall,
         pooled_momentum_residual: case.run.tolerances.momentum_residual
             == runout_case::MomentumResidual::Pooled,
+        momentum_form: match case.numerics.momentum_form {
+            runout_case::MomentumForm::ContinuitySubtracted => MomentumForm::ContinuitySubtracted,
+            runout_case::MomentumForm::Conservative => MomentumForm::Conservative,
+        },
     }
 }
 

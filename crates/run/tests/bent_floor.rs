@@ -74,6 +74,7 @@ fn largest_gas_imbalance(tf: &TwoFluid, p: &[f64], floor: Option<&BentFloor>) ->
         scheme: Scheme::Upwind,
         gas_pressure: p,
         wall_faces: None,
+        form: runout_solver::momentum::MomentumForm::ContinuitySubtracted,
     };
     let (u, v) = (vec![0.0; (nx + 1) * ny], vec![0.0; nx * (ny + 1)]);
     let phase = PhaseFields {

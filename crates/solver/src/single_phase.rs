@@ -15,7 +15,7 @@ use runout_closures::FaceMean;
 use runout_linsolve::{build, LinSolveError, LinearSolver, LinearSolverKind, Pattern, Stencil5};
 use runout_mesh::{Grid, Sides};
 
-use crate::momentum::{assemble, fixed_row, neighbour_sum, Context, PhaseFields};
+use crate::momentum::{assemble, fixed_row, neighbour_sum, Context, MomentumForm, PhaseFields};
 pub use crate::side::SideBc;
 use crate::staggered::Component;
 use crate::transport::{FaceData, Scheme};
@@ -383,6 +383,7 @@ impl SinglePhase {
             scheme: self.settings.scheme,
             gas_pressure: &self.p,
             wall_faces: None,
+            form: MomentumForm::ContinuitySubtracted,
         };
         let phase = PhaseFields {
             bulk_density: &self.density_cells,
@@ -442,6 +443,7 @@ impl SinglePhase {
             scheme: self.settings.scheme,
             gas_pressure: &self.p,
             wall_faces: None,
+            form: MomentumForm::ContinuitySubtracted,
         };
         let phase = PhaseFields {
             bulk_density: &self.density_cells,

@@ -62,6 +62,7 @@ fn two_layer_couette_is_exact() {
         scheme: Scheme::Superbee,
         gas_pressure: &pressure,
         wall_faces: None,
+        form: runout_solver::momentum::MomentumForm::ContinuitySubtracted,
     };
     let phase = PhaseFields {
         bulk_density: &ones,
@@ -196,8 +197,8 @@ impl Problem {
         }
     }
 
-    /// The system of component `c`, the low end of its lines fixed (a wall end).
-    fn assemble(&self, c: Component) -> Stencil5 {
+    /// The system of component `c` in `form`, the low end of its lines fixed (a wall end).
+    fn assemble(&self, c: Component, form: runout_solver::momentum::MomentumForm) -> Stencil5 {
         let [rho, rho_old, eps, mu, p_g, p_s, p_star] = &self.cells;
         let ctx = Context {
             grid: &self.grid,
@@ -208,6 +209,7 @@ impl Problem {
             scheme: Scheme::Superbee,
             gas_pressure: p_g,
             wall_faces: None,
+            form,
         };
         let phase = PhaseFields {
             bulk_density: rho,
@@ -242,14 +244,24 @@ impl Problem {
 /// neighbours renamed (east ↔ north, west ↔ south), up to the order of the products of
 /// widths (relative 1e-14). Stretched cells, Superbee, variable ρε, ε, μ, P_s, P*, an
 /// explicit source, a wall end, an outlet end with hydrostatic pressure, a no-slip floor and
-/// a partial-slip lid exercise every term of `assemble`.
+/// a partial-slip lid exercise every term of `assemble`, in both forms of docs/model.md §4.3.
 #[test]
 fn v_of_the_transposed_problem_is_u() {
+    use runout_solver::momentum::MomentumForm;
+    for form in [
+        MomentumForm::ContinuitySubtracted,
+        MomentumForm::Conservative,
+    ] {
+        v_of_the_transposed_problem_is_u_in(form);
+    }
+}
+
+fn v_of_the_transposed_problem_is_u_in(form: runout_solver::momentum::MomentumForm) {
     let (nx, ny) = (5, 4);
     let problem = Problem::new(nx, ny);
     let transposed = problem.transposed();
-    let a_u = problem.assemble(Component::of_grid(&problem.grid)[0]);
-    let a_v = transposed.assemble(Component::of_grid(&transposed.grid)[1]);
+    let a_u = problem.assemble(Component::of_grid(&problem.grid)[0], form);
+    let a_v = transposed.assemble(Component::of_grid(&transposed.grid)[1], form);
     let close = |x: f64, y: f64| (x - y).abs() <= 1e-14 * x.abs().max(y.abs()).max(1e-300);
     let mut nonzero = [0; 6];
     for k in 0..(nx + 1) * ny {
@@ -302,6 +314,7 @@ fn bent_floor_sources_are_its_gravity_and_the_centrifugal_force() {
             scheme: Scheme::Upwind,
             gas_pressure: &zeros,
             wall_faces: None,
+            form: runout_solver::momentum::MomentumForm::ContinuitySubtracted,
         };
         let phase = PhaseFields {
             bulk_density: &bulk,
@@ -359,4 +372,153 @@ fn bent_floor_sources_are_its_gravity_and_the_centrifugal_force() {
             );
         }
     }
+}
+
+/// The conservative form (docs/model.md §4.3, `MomentumForm::Conservative`) against the
+/// conservative balance written out independently: for every free u node, with upwind face
+/// values and no stress or source,
+///
+///   a_P u_P − Σ a_nb u_nb − b = (m u_P − m⁰ u_P⁰)/Δt + Σ_f F_f u_upwind(f),
+///
+/// m the control volume's mass (half of each cell beside it), F_f its face mass fluxes
+/// (out positive; the mean of the scalar faces' ρε_upwind u A at its x-faces, half of each
+/// cell's ρε_upwind v A at its y-faces). The bulk densities of the two time levels do not
+/// satisfy continuity with the velocities, so the remainder takes both signs; the
+/// continuity-subtracted row misses the balance by r u_P.
+#[test]
+fn the_conservative_form_is_the_conservative_balance() {
+    use runout_solver::momentum::MomentumForm;
+    let (nx, ny) = (6, 5);
+    let problem = Problem::new(nx, ny);
+    let grid = &problem.grid;
+    let [rho, rho_old, eps, ..] = &problem.cells;
+    let zeros = vec![0.0; nx * ny];
+    let bcs = Sides::all(SideBc::Wall(RobinFace::partial_slip(0.0, 0.0)));
+    // no flow through the walls
+    let mut u = problem.u.clone();
+    for j in 0..ny {
+        u[(nx + 1) * j] = 0.0;
+        u[nx + (nx + 1) * j] = 0.0;
+    }
+    let mut v = problem.v.clone();
+    for i in 0..nx {
+        v[i] = 0.0;
+        v[i + nx * ny] = 0.0;
+    }
+    let dt = 1e-3;
+    let rows = |form| {
+        let ctx = Context {
+            grid,
+            bcs: &bcs,
+            gravity: (0.0, 0.0),
+            bent_floor: None,
+            dt,
+            scheme: Scheme::Upwind,
+            gas_pressure: &zeros,
+            wall_faces: None,
+            form,
+        };
+        let phase = PhaseFields {
+            bulk_density: rho,
+            bulk_density_old: rho_old,
+            volume_fraction: eps,
+            viscosity: &zeros,
+            viscosity_mean: FaceMean::Harmonic,
+            solids_pressure: None,
+            plastic_pressure: None,
+            explicit_source: None,
+            skip: None,
+            velocity_along: None,
+        };
+        let mut pattern = Pattern::new(nx + 1, ny).unwrap();
+        for j in 0..ny {
+            pattern.fix(0, j).unwrap();
+            pattern.fix(nx, j).unwrap();
+        }
+        let mut a = Stencil5::new(pattern);
+        let mut faces = FaceData::zeros(nx + 1, ny);
+        let [cu, _] = Component::of_grid(grid);
+        assemble(&ctx, &phase, cu, &u, &v, &problem.old, &mut faces, &mut a);
+        a
+    };
+    let residual = |a: &Stencil5, k: usize| {
+        let mx = nx + 1;
+        let at = |kk: Option<usize>| kk.map_or(0.0, |kk| u[kk]);
+        let (i, j) = (k % mx, k / mx);
+        a.a_p[k] * u[k]
+            - a.a_e[k] * at((i + 1 < mx).then(|| k + 1))
+            - a.a_w[k] * at(i.checked_sub(1).map(|_| k - 1))
+            - a.a_n[k] * at((j + 1 < ny).then(|| k + mx))
+            - a.a_s[k] * at(j.checked_sub(1).map(|_| k - mx))
+            - a.b[k]
+    };
+    // the balance, written from the scalar cells
+    let (dx, dy) = (grid.x.widths(), grid.y.widths());
+    let cell = |i: usize, j: usize| i + nx * j;
+    let upwind = |flow: f64, lo: f64, hi: f64| if flow >= 0.0 { lo } else { hi };
+    // ρε u A through the x-face west of cell i (0 at the walls), ρε v A through the y-face
+    // south of cell (i, j)
+    let x_flux = |i: usize, j: usize| {
+        if i == 0 || i == nx {
+            return 0.0;
+        }
+        let vel = u[i + (nx + 1) * j];
+        upwind(vel, rho[cell(i - 1, j)], rho[cell(i, j)]) * vel * dy[j]
+    };
+    let y_flux = |i: usize, j: usize| {
+        if j == 0 || j == ny {
+            return 0.0;
+        }
+        let vel = v[i + nx * j];
+        upwind(vel, rho[cell(i, j - 1)], rho[cell(i, j)]) * vel * dx[i]
+    };
+    let (conservative, subtracted) = (
+        rows(MomentumForm::Conservative),
+        rows(MomentumForm::ContinuitySubtracted),
+    );
+    let (mut positive, mut negative, mut worst, mut subtracted_worst) = (0, 0, 0.0_f64, 0.0_f64);
+    for j in 0..ny {
+        for i in 1..nx {
+            let k = i + (nx + 1) * j;
+            let (w, e) = (i - 1, i);
+            let half = |c: usize, f: &[f64]| 0.5 * dx[c] * dy[j] * f[cell(c, j)];
+            let (m, m_old) = (
+                half(w, rho) + half(e, rho),
+                half(w, rho_old) + half(e, rho_old),
+            );
+            // the control volume's faces: x-faces at the cell centres w and e, y-faces the
+            // halves of cells w and e
+            let f_west = 0.5 * (x_flux(w, j) + x_flux(w + 1, j));
+            let f_east = 0.5 * (x_flux(e, j) + x_flux(e + 1, j));
+            let f_south = 0.5 * (y_flux(w, j) + y_flux(e, j));
+            let f_north = 0.5 * (y_flux(w, j + 1) + y_flux(e, j + 1));
+            let node = |ii: usize, jj: usize| u[ii + (nx + 1) * jj];
+            let south = if j > 0 { node(i, j - 1) } else { 0.0 };
+            let north = if j + 1 < ny { node(i, j + 1) } else { 0.0 };
+            let convection = f_east * upwind(f_east, u[k], node(i + 1, j))
+                - f_west * upwind(f_west, node(i - 1, j), u[k])
+                + f_north * upwind(f_north, u[k], north)
+                - f_south * upwind(f_south, south, u[k]);
+            let balance = (m * u[k] - m_old * problem.old[k]) / dt + convection;
+            let remainder = (m - m_old) / dt + f_east - f_west + f_north - f_south;
+            if remainder > 0.0 {
+                positive += 1;
+            } else {
+                negative += 1;
+            }
+            let scale = (m * u[k] / dt).abs().max(m_old * problem.old[k].abs() / dt);
+            worst = worst.max((residual(&conservative, k) - balance).abs() / scale);
+            subtracted_worst =
+                subtracted_worst.max((residual(&subtracted, k) - balance).abs() / scale);
+        }
+    }
+    assert!(positive > 0 && negative > 0, "{positive} {negative}");
+    assert!(
+        worst < 1e-12,
+        "conservative row against the balance: {worst}"
+    );
+    assert!(
+        subtracted_worst > 1e-3,
+        "the subtracted row misses it: {subtracted_worst}"
+    );
 }

@@ -1,5 +1,6 @@
 //! The Coulomb wall against the sliding-block law, fast size (`checks::CoulombFloor`): the
-//! block at μ_w = 0.2 on two grids, the layer between side walls on 25 cells. The full size
+//! block at μ_w = 0.2 on two grids, its momentum budget at μ_w = 0.1 on 120 × 16, the layer
+//! between side walls on 25 cells. The full size
 //! (four μ_w, three grids each): `cargo xtask verify coulomb-floor`.
 
 use runout_verification::{find, Size};
@@ -36,9 +37,9 @@ fn the_floor_load_is_the_weight() {
 #[test]
 #[ignore = "ten minutes: the finest grid"]
 fn the_frictionless_block_slides_at_g_sin_theta() {
-    use runout_verification::problems::coulomb_floor::{run_block, PoreGas};
+    use runout_verification::problems::coulomb_floor::{run_block, PoreGas, JUDGED_FORM};
     for (nx, ny) in [(120, 16), (240, 32)] {
-        let run = run_block(nx, ny, 0.0, PoreGas::Thin).expect("the block ran");
+        let run = run_block(nx, ny, 0.0, PoreGas::Thin, JUDGED_FORM).expect("the block ran");
         println!(
             "{nx} × {ny}: a = {:.4} m/s² against g sin θ = {:.4}: effective μ_w {:+.5} ({:.0} s)",
             run.acceleration, run.expected, run.effective_mu_w, run.wall_time

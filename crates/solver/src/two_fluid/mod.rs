@@ -239,6 +239,9 @@ pub struct TwoFluidSettings {
     /// The momentum residual normalised per class of node (default) or pooled over every
     /// node as MFIX ([`residuals::ClassedResidual`], docs/model.md §4.11).
     pub pooled_momentum_residual: bool,
+    /// The momentum equations' form: MFIX's continuity-subtracted (default) or conservative
+    /// ([`crate::momentum::MomentumForm`], docs/model.md §4.3).
+    pub momentum_form: crate::momentum::MomentumForm,
 }
 
 impl Default for TwoFluidSettings {
@@ -256,6 +259,7 @@ impl Default for TwoFluidSettings {
             exact_solids_continuity: false,
             detect_stall: true,
             pooled_momentum_residual: false,
+            momentum_form: crate::momentum::MomentumForm::ContinuitySubtracted,
         }
     }
 }

@@ -113,6 +113,7 @@ fn assemble_momentum(
         scheme: model.settings.scheme,
         gas_pressure: &g.p,
         wall_faces: None,
+        form: model.settings.momentum_form,
     };
     let gas_fields = PhaseFields {
         bulk_density: g.bulk_density(),

@@ -13,20 +13,32 @@
 //! - a block released at rest on a 30° slope that turns onto a flat floor, μ_w = 0.3, comes
 //!   to rest on the flat with its centre's drop over its horizontal travel at least μ_w.
 //!
-//! - fast: the block at μ_w = 0.2 on 60 × 8 and 120 × 16 cells, the layer on 25 cells, the
-//!   energy line on 60 × 8;
+//! - the block's momentum against its forces (gravity, the friction μ_w N_w the floor read,
+//!   the drag, the buoyancy): equal within 0.5 % of μ_w in the conservative form of the
+//!   momentum equations (docs/model.md §4.3), which the block is run in; MFIX's
+//!   continuity-subtracted form is printed beside it.
+//!
+//! - fast: the block at μ_w = 0.2 on 60 × 8 and 120 × 16 cells, its budget at μ_w = 0.1 on
+//!   120 × 16, the layer on 25 cells, the energy line on 60 × 8;
 //! - full: the block at μ_w = 0.1, 0.2, 0.3 and 0.5 (above tan θ: it slows) on 60 × 8,
-//!   120 × 16 and 240 × 32 cells, the layer on 12, 25 and 50 cells, the energy line on 60 × 8
+//!   120 × 16 and 240 × 32 cells, its budget at μ_w = 0.1 on 120 × 16 and 240 × 32 in both
+//!   forms, the layer on 12, 25 and 50 cells, the energy line on 60 × 8
 //!   and 120 × 16, and the block in air at μ_w = 0.2 on 120 × 16 (printed).
 
 use crate::check::{Check, Limit, Outcome, Size};
 use crate::problems::coulomb_floor::{
-    layer_at_rest, run_block, run_energy_line, run_layer, PoreGas, ENERGY_LINE_BED, LAYER_WALLS,
-    REST_SPEEDS, SLOPE_DEG,
+    block_momentum_budget, layer_at_rest, run_block, run_energy_line, run_layer, PoreGas,
+    ENERGY_LINE_BED, JUDGED_FORM, LAYER_WALLS, REST_SPEEDS, SLOPE_DEG,
 };
+use runout_case::MomentumForm;
 
 /// The largest relative error of the implied friction [-] (issue 61).
 pub const FRICTION_TOLERANCE: f64 = 0.02;
+
+/// The largest gap between the μ_w the block's momentum implies and the μ_w its forces
+/// imply, relative to μ_w [-]: the discretisation's momentum conservation (docs/model.md
+/// §4.3).
+pub const BUDGET_TOLERANCE: f64 = 0.005;
 
 /// The block and the layer against the sliding-block law.
 pub struct CoulombFloor;
@@ -57,7 +69,7 @@ impl Check for CoulombFloor {
         println!("block in a thin pore gas on a {SLOPE_DEG}° Coulomb floor, released at 1 m/s:");
         for &mu_w in frictions {
             for &(nx, ny) in grids {
-                let r = run_block(nx, ny, mu_w, PoreGas::Thin)?;
+                let r = run_block(nx, ny, mu_w, PoreGas::Thin, JUDGED_FORM)?;
                 println!(
                     "  μ_w {mu_w:.2}, {nx:>3} × {ny:<2}: a = {:.4} m/s² (law {:.4}), implied μ_w {:.4} \
                      ({:+.2} %), {:.1} s wall",
@@ -72,6 +84,41 @@ impl Check for CoulombFloor {
                     (r.effective_mu_w / mu_w - 1.0).abs(),
                     Limit::AtMost(FRICTION_TOLERANCE),
                 );
+            }
+        }
+        let mu_w = 0.1;
+        println!("the block's momentum against its forces, μ_w {mu_w}:");
+        let budget_grids: &[(usize, usize)] = match size {
+            Size::Fast => &[(120, 16)],
+            Size::Full => &[(120, 16), (240, 32)],
+        };
+        for &cells in budget_grids {
+            let forms: &[MomentumForm] = match size {
+                Size::Fast => &[JUDGED_FORM],
+                Size::Full => &[JUDGED_FORM, MomentumForm::ContinuitySubtracted],
+            };
+            for &form in forms {
+                let b = block_momentum_budget(cells, mu_w, form)?;
+                let gap = (b.effective_mu_w.0 - b.effective_mu_w.1).abs() / mu_w;
+                println!(
+                    "  {:>3} × {:<2}, {form:?}: the momentum implies μ_w {:.4}, the forces {:.4} \
+                     (gap {:.2} % of μ_w)",
+                    cells.0,
+                    cells.1,
+                    b.effective_mu_w.0,
+                    b.effective_mu_w.1,
+                    100.0 * gap
+                );
+                if form == JUDGED_FORM {
+                    outcome.measure(
+                        format!(
+                            "block μ_w {mu_w} on {} × {}: |momentum's μ_w − forces' μ_w|/μ_w",
+                            cells.0, cells.1
+                        ),
+                        gap,
+                        Limit::AtMost(BUDGET_TOLERANCE),
+                    );
+                }
             }
         }
         let (at_rest, sliding) = REST_SPEEDS;
@@ -93,7 +140,7 @@ impl Check for CoulombFloor {
         }
         if size == Size::Full {
             let (mu_w, nx, ny) = (0.2, 120, 16);
-            let r = run_block(nx, ny, mu_w, PoreGas::Air)?;
+            let r = run_block(nx, ny, mu_w, PoreGas::Air, JUDGED_FORM)?;
             println!(
                 "the same block in air, μ_w {mu_w:.2}, {nx} × {ny}: a = {:.4} m/s², implied μ_w {:.4} \
                  ({:+.2} %): the pore gas's share of the weight (not judged)",

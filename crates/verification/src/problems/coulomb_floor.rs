@@ -48,7 +48,7 @@
 //! horizontal travel is at least μ_w.
 
 use anyhow::{bail, Context, Result};
-use runout_case::{Boundary, Case, Fidelity, Gravity, SolidsWall};
+use runout_case::{Boundary, Case, Fidelity, Gravity, MomentumForm, SolidsWall};
 use runout_mesh::Segment;
 use runout_solver::two_fluid::{RelaxationBase, TwoFluid};
 use runout_walls::SolidsWallModel;
@@ -67,6 +67,11 @@ pub enum PoreGas {
     /// air's density with [`THIN_GAS_VISCOSITY_FRACTION`] of its viscosity
     Thin,
 }
+
+/// The form of the momentum equations the check judges the law in (docs/model.md §4.3): in
+/// MFIX's continuity-subtracted form the outer iterations' continuity remainder creates
+/// momentum where the block is sheared (module doc).
+pub const JUDGED_FORM: MomentumForm = MomentumForm::Conservative;
 
 /// The thin gas's viscosity over air's [-]: the drag of the Stokes regime scales with it.
 pub const THIN_GAS_VISCOSITY_FRACTION: f64 = 0.01;
@@ -121,9 +126,15 @@ pub fn fitted_slope(times: &[f64], values: &[f64], window: (f64, f64)) -> Option
     Some(num / den)
 }
 
-/// The block case on `cells_x` × `cells_y` cells with floor friction `mu_w` and `pore_gas`
-/// (module doc).
-pub fn block_case(cells_x: usize, cells_y: usize, mu_w: f64, pore_gas: PoreGas) -> Result<Case> {
+/// The block case on `cells_x` × `cells_y` cells with floor friction `mu_w`, `pore_gas` and
+/// the momentum equations in `form` (module doc).
+pub fn block_case(
+    cells_x: usize,
+    cells_y: usize,
+    mu_w: f64,
+    pore_gas: PoreGas,
+    form: MomentumForm,
+) -> Result<Case> {
     let mut case = template_on_grid(
         TEMPLATE,
         format!("coulomb-block-mu{mu_w}-{cells_x}x{cells_y}-{pore_gas:?}"),
@@ -144,6 +155,7 @@ pub fn block_case(cells_x: usize, cells_y: usize, mu_w: f64, pore_gas: PoreGas) 
         friction: mu_w,
         slip_floor: None,
     };
+    case.numerics.momentum_form = form;
     let block = &mut case.initial.regions[0];
     block.x = (0.05, 0.15);
     block.y = (0.0, 0.02);
@@ -170,8 +182,14 @@ pub struct BlockRun {
 }
 
 /// Runs the block (module doc) through the driver in a temporary directory.
-pub fn run_block(cells_x: usize, cells_y: usize, mu_w: f64, pore_gas: PoreGas) -> Result<BlockRun> {
-    let case = block_case(cells_x, cells_y, mu_w, pore_gas)?;
+pub fn run_block(
+    cells_x: usize,
+    cells_y: usize,
+    mu_w: f64,
+    pore_gas: PoreGas,
+    form: MomentumForm,
+) -> Result<BlockRun> {
+    let case = block_case(cells_x, cells_y, mu_w, pore_gas, form)?;
     let out = std::env::temp_dir().join(format!("runout-{}-{}", case.name, std::process::id()));
     let summary = runout_run::run_case(&case, Fidelity::Paper, &out, |_| {})?;
     let bulk = runout_post::table::Table::read(&out.join("bulk.csv"))
@@ -433,7 +451,7 @@ pub struct EnergyLineRun {
 /// Runs the energy-line block (module doc of [`EnergyLineRun`]) through the driver.
 pub fn run_energy_line(cells_x: usize, cells_y: usize, mu_w: f64) -> Result<EnergyLineRun> {
     let (slope, at, radius, end) = ENERGY_LINE_BED;
-    let mut case = block_case(cells_x, cells_y, mu_w, PoreGas::Thin)?;
+    let mut case = block_case(cells_x, cells_y, mu_w, PoreGas::Thin, JUDGED_FORM)?;
     case.name = format!("coulomb-energy-line-mu{mu_w}-{cells_x}x{cells_y}");
     case.domain.x.segments = vec![Segment::Uniform {
         length: 0.8,
@@ -484,7 +502,8 @@ pub fn floor_load_ratios(
     mu_w: f64,
     times: &[f64],
 ) -> Result<Vec<f64>> {
-    let case = block_case(cells_x, cells_y, mu_w, PoreGas::Thin)?.at_fidelity(Fidelity::Paper);
+    let case = block_case(cells_x, cells_y, mu_w, PoreGas::Thin, JUDGED_FORM)?
+        .at_fidelity(Fidelity::Paper);
     let mut tf = runout_run::two_fluid_solver(&case)?;
     let stepping = Stepping::of(&case);
     let (mut time, mut dt) = (0.0, stepping.dt.0);
@@ -500,4 +519,92 @@ pub fn floor_load_ratios(
         ratios.push(load / weight);
     }
     Ok(ratios)
+}
+
+/// The block's momentum budget along the slope over [`FIT_WINDOW`], per unit mass
+/// [m s⁻²]: what its momentum did against what its forces add up to.
+#[derive(Clone, Debug)]
+pub struct MomentumBudget {
+    /// the least-squares slope of the εs-weighted mean u_s, sampled every step
+    pub acceleration: f64,
+    /// the time mean of gravity, the floor's friction Σ μ_w N_w w (the load the wall read),
+    /// the drag and the buoyancy −εs ∂P_g/∂x, over the solids' mass
+    pub forces: f64,
+    /// μ_w implied by each through Eq. (1)
+    pub effective_mu_w: (f64, f64),
+}
+
+/// The block of [`block_case`] stepped as the driver would, its momentum against its
+/// forces (docs/model.md §4.3): in a discretisation that conserves momentum the two agree
+/// whatever the outer iterations leave of continuity.
+pub fn block_momentum_budget(
+    cells: (usize, usize),
+    mu_w: f64,
+    form: MomentumForm,
+) -> Result<MomentumBudget> {
+    let case =
+        block_case(cells.0, cells.1, mu_w, PoreGas::Thin, form)?.at_fidelity(Fidelity::Paper);
+    let mut tf = runout_run::two_fluid_solver(&case)?;
+    let stepping = Stepping::of(&case);
+    let (mut time, mut dt) = (0.0, stepping.dt.0);
+    let (mut times, mut speeds, mut forces) = (Vec::new(), Vec::new(), Vec::new());
+    let gravity = GRAVITY * SLOPE_DEG.to_radians().sin();
+    stepping.march(&mut tf, (&mut time, &mut dt), FIT_WINDOW.1, |t, tf| {
+        let (speed, force) = speed_and_force(tf, mu_w);
+        times.push(t);
+        speeds.push(speed);
+        forces.push(gravity + force);
+    })?;
+    let acceleration = fitted_slope(&times, &speeds, FIT_WINDOW).context("too few steps")?;
+    // the trapezoid mean of the force over the window
+    let (mut impulse, mut span) = (0.0, 0.0);
+    for k in 1..times.len() {
+        if times[k - 1] >= FIT_WINDOW.0 {
+            let h = times[k] - times[k - 1];
+            impulse += 0.5 * h * (forces[k] + forces[k - 1]);
+            span += h;
+        }
+    }
+    let forces = impulse / span;
+    Ok(MomentumBudget {
+        acceleration,
+        forces,
+        effective_mu_w: (
+            effective_friction(SLOPE_DEG, acceleration),
+            effective_friction(SLOPE_DEG, forces),
+        ),
+    })
+}
+
+/// The εs-weighted mean u_s [m s⁻¹] (bulk.csv's `mean_u_s`) and the force along the slope
+/// other than gravity per unit solids mass [m s⁻²]: the floor's friction −μ_w N_w w
+/// summed over its u nodes, the drag F_gs (u_g − u_s) V and the buoyancy −εs ∂P_g/∂x V
+/// summed over the cells (centred differences; the block is clear of the end walls).
+fn speed_and_force(tf: &TwoFluid, mu_w: f64) -> (f64, f64) {
+    let grid = tf.grid();
+    let (nx, ny) = (grid.nx(), grid.ny());
+    let (dx, s) = (grid.x.widths(), tf.solids(0));
+    let (u_g, p_g, drag) = (tf.u_g(), tf.p_g(), tf.drag(0));
+    let centre =
+        |u: &[f64], i: usize, j: usize| 0.5 * (u[i + (nx + 1) * j] + u[i + 1 + (nx + 1) * j]);
+    let (mut momentum, mut volume, mut force) = (0.0, 0.0, 0.0);
+    for j in 0..ny {
+        for i in 0..nx {
+            let k = i + nx * j;
+            let (cell, eps) = (grid.cell_volume(i, j), s.eps()[k]);
+            let u_s = centre(&s.u, i, j);
+            momentum += eps * cell * u_s;
+            volume += eps * cell;
+            force += drag[k] * (centre(u_g, i, j) - u_s) * cell;
+            if i > 0 && i + 1 < nx {
+                let spacing = 0.5 * (dx[i - 1] + dx[i + 1]) + dx[i];
+                force -= eps * (p_g[k + 1] - p_g[k - 1]) / spacing * cell;
+            }
+        }
+    }
+    let spacing = grid.x.face_spacing();
+    let friction: f64 = (1..nx)
+        .map(|k| mu_w * tf.floor_normal_load(0)[k] * s.u[k].signum() * spacing[k])
+        .sum();
+    (momentum / volume, (force - friction) / tf.solids_mass(0))
 }
