@@ -28,6 +28,7 @@ conservative='s/dilute_cells: FrozenWhenCycling,/dilute_cells: FrozenWhenCycling
 edit conservative "$conservative"
 edit conservative-mfix-relaxation "$conservative;s/relaxation: (velocity: 0.7, theta: 1.0, pressure: 1.0,/relaxation: (velocity: 0.5, theta: 0.5, pressure: 0.8,/"
 edit conservative-tolerance-1e-4 "$conservative;s/tolerances: (residual: 1e-3,/tolerances: (residual: 1e-4,/"
+edit conservative-mfix-relaxation-1e-4 "$conservative;s/tolerances: (residual: 1e-3,/tolerances: (residual: 1e-4,/;s/relaxation: (velocity: 0.7, theta: 1.0, pressure: 1.0,/relaxation: (velocity: 0.5, theta: 0.5, pressure: 0.8,/"
 variants=${VARIANTS:-shipped mfix-relaxation pooled pooled-mfix-relaxation tolerance-1e-4 conservative conservative-mfix-relaxation}
 for v in $variants; do
   RAYON_NUM_THREADS=${RAYON_NUM_THREADS:-1} "$runout" sweep "$out/$v/$sweep.ron" --only "$only" \

@@ -11,7 +11,8 @@
 //!   g sin θ − μ_f g cos θ − (2 μ_sw/W) g cos θ y_c: the friction it feels within 2 % of that.
 //!
 //! - a block released at rest on a 30° slope that turns onto a flat floor, μ_w = 0.3, comes
-//!   to rest on the flat with its centre's drop over its horizontal travel at least μ_w.
+//!   to rest on the flat (its mean speed over the last 0.5 s below `runout post`'s rest
+//!   speed) with its centre's drop over its horizontal travel at least μ_w.
 //!
 //! - the block's momentum against its forces (gravity, the friction μ_w N_w the floor read,
 //!   the drag, the buoyancy): equal within 0.5 % of μ_w in the conservative form of the
@@ -28,7 +29,7 @@
 use crate::check::{Check, Limit, Outcome, Size};
 use crate::problems::coulomb_floor::{
     block_momentum_budget, layer_at_rest, run_block, run_energy_line, run_layer, PoreGas,
-    ENERGY_LINE_BED, JUDGED_FORM, LAYER_WALLS, REST_SPEEDS, SLOPE_DEG,
+    ENERGY_LINE_BED, JUDGED_FORM, LATE_WINDOW, LAYER_WALLS, REST_SPEEDS, SLOPE_DEG,
 };
 use runout_case::MomentumForm;
 
@@ -170,10 +171,13 @@ impl Check for CoulombFloor {
             let r = run_energy_line(nx, ny, mu_w)?;
             println!(
                 "  {nx:>3} × {ny:<2}: centre's drop/travel {:.4}, Heim's ratio {:.4}, grain edge \
-                 {:.3} m past the foot, at rest from {}",
+                 {:.3} m past the foot, mean speed over the last {LATE_WINDOW} s at most {:.1e} m/s \
+                 (rest speed {:.1e}), at rest from {} by `runout post`",
                 r.centre_ratio,
                 r.heim_ratio,
                 r.past_foot,
+                r.late_speed,
+                r.rest_speed,
                 r.rest_time
                     .map_or(String::from("never"), |t| format!("{t:.3} s"))
             );
@@ -182,9 +186,13 @@ impl Check for CoulombFloor {
                 r.centre_ratio,
                 Limit::AtLeast(mu_w),
             );
-            outcome.holds(
-                format!("energy line on {nx} × {ny}: at rest by {end} s"),
-                r.rest_time.is_some(),
+            outcome.measure(
+                format!(
+                    "energy line on {nx} × {ny}: largest |mean u_s| over the last {LATE_WINDOW} \
+                     s before {end} s [m/s]"
+                ),
+                r.late_speed,
+                Limit::AtMost(r.rest_speed),
             );
         }
         Ok(outcome)
