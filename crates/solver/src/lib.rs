@@ -3,6 +3,8 @@
 //! - [`transport`]: upwind/Superbee convection and diffusion on a structured block;
 //! - [`momentum`]: one phase's momentum equations with variable ρε, ε, μ (docs/model.md §4.4),
 //!   u and v assembled once through the [`staggered`] component view;
+//! - [`momentum_form`]: the momentum equations' continuity-subtracted (MFIX) or conservative
+//!   form (docs/model.md §4.3);
 //! - [`single_phase`]: the incompressible SIMPLE core on a stretched staggered grid;
 //! - [`two_fluid`]: the first two-fluid model (gas + M solids, docs/model.md §4.9) built from
 //!   [`energy`] (granular energy, §4.8),
@@ -23,6 +25,7 @@ pub use runout_mesh::bent_floor;
 pub mod energy;
 pub mod kinematics;
 pub mod momentum;
+pub mod momentum_form;
 pub mod pea;
 pub mod side;
 pub mod single_phase;

@@ -28,6 +28,8 @@ use runout_mesh::{Grid, Sides};
 use runout_walls::RobinFace;
 
 use crate::bent_floor::BentFloor;
+use crate::momentum_form::add_continuity_remainder;
+pub use crate::momentum_form::MomentumForm;
 use crate::side::{outlet_pressure, OutletPoint, SideBc};
 use crate::staggered::{mean_u_at_v_node, Component};
 use crate::transport::{assemble_masked, face_value, FaceData, Scheme};
@@ -330,85 +332,6 @@ pub fn assemble_with_fluxes(
     if ctx.form == MomentumForm::Conservative && ctx.dt.is_finite() {
         let phi = if c.dir == 0 { u } else { v };
         add_continuity_remainder(ctx.grid, phase, c, phi, faces, ctx.dt, a);
-    }
-}
-
-/// The form of the transient and convection terms of the momentum equations (docs/model.md
-/// §4.3).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum MomentumForm {
-    /// MFIX's continuity-subtracted form ([NUM] §3.2): a_P = Σ a_nb + a_P⁰, the momentum
-    /// cell's continuity taken as satisfied
-    #[default]
-    ContinuitySubtracted,
-    /// the conservative form: the continuity-subtracted one plus r φ_P
-    /// ([`add_continuity_remainder`])
-    Conservative,
-}
-
-/// Turns a continuity-subtracted row into the conservative one (docs/model.md §4.3).
-///
-/// The conservative discrete momentum balance of a control volume with mass m (½ V ρε of
-/// each cell it spans) and face mass fluxes F (upwind face values φ_f) is
-///
-///   (m φ_P − m⁰ φ_P⁰)/Δt + Σ_f F_f φ_f = S.
-///
-/// Subtracting φ_P times the control volume's continuity remainder
-/// r = (m − m⁰)/Δt + Σ_f F_f gives the continuity-subtracted form that MFIX assembles,
-/// m⁰ (φ_P − φ_P⁰)/Δt + Σ_f F_f (φ_f − φ_P) = S, whose a_P = Σ a_nb + m⁰/Δt. The two agree
-/// only where continuity holds; where the outer iterations leave r ≠ 0, Σ_P r φ_P is a
-/// momentum the subtracted form creates (its sum over a sheared block does not vanish,
-/// docs/model.md §3.11). This adds r φ_P back: implicitly (a_P += r) where r > 0, with
-/// the current φ_P on the right-hand side where r < 0, so that a_P never drops below
-/// Σ a_nb + a_P⁰ and the converged row is the conservative balance.
-fn add_continuity_remainder(
-    grid: &Grid,
-    phase: &PhaseFields<'_>,
-    c: Component,
-    phi: &[f64],
-    faces: &FaceData,
-    dt: f64,
-    a: &mut Stencil5,
-) {
-    let (nx, ny) = (grid.nx(), grid.ny());
-    let periodic = c.dir == 0 && grid.periodic_x();
-    let (mx, my) = (faces.mx, faces.my);
-    let fixed = a.pattern().fixed_mask().to_vec();
-    for j in 0..my {
-        for i in 0..mx {
-            let k = i + mx * j;
-            if fixed[k] || phase.skip.is_some_and(|s| s[k]) {
-                continue;
-            }
-            // the cells whose halves make up the control volume
-            let cells: [Option<(usize, usize)>; 2] = if c.dir == 0 {
-                let west = if periodic && i == 0 {
-                    Some(nx - 1)
-                } else {
-                    i.checked_sub(1)
-                };
-                [west.map(|w| (w, j)), (i < nx).then_some((i, j))]
-            } else {
-                [j.checked_sub(1).map(|s| (i, s)), (j < ny).then_some((i, j))]
-            };
-            let mass = |rho_eps: &[f64]| -> f64 {
-                cells
-                    .iter()
-                    .flatten()
-                    .map(|&(ci, cj)| 0.5 * grid.cell_volume(ci, cj) * rho_eps[ci + nx * cj])
-                    .sum()
-            };
-            let storage = (mass(phase.bulk_density) - mass(phase.bulk_density_old)) / dt;
-            let (w, e) = (faces.xf(i, j), faces.xf(i + 1, j));
-            let (s, n) = (faces.yf(i, j), faces.yf(i, j + 1));
-            let net_outflow = faces.flux_x[e] - faces.flux_x[w] + faces.flux_y[n] - faces.flux_y[s];
-            let remainder = storage + net_outflow;
-            if remainder > 0.0 {
-                a.a_p[k] += remainder;
-            } else {
-                a.b[k] -= remainder * phi[k];
-            }
-        }
     }
 }
 

@@ -452,7 +452,48 @@ fn the_conservative_form_is_the_conservative_balance() {
             - a.a_s[k] * at(j.checked_sub(1).map(|_| k - mx))
             - a.b[k]
     };
-    // the balance, written from the scalar cells
+    let (conservative, subtracted) = (
+        rows(MomentumForm::Conservative),
+        rows(MomentumForm::ContinuitySubtracted),
+    );
+    let (mut positive, mut negative, mut worst, mut subtracted_worst) = (0, 0, 0.0_f64, 0.0_f64);
+    for j in 0..ny {
+        for i in 1..nx {
+            let k = i + (nx + 1) * j;
+            let (balance, remainder, scale) =
+                conservative_balance(grid, [rho, rho_old], (&u, &v, &problem.old), dt, (i, j));
+            if remainder > 0.0 {
+                positive += 1;
+            } else {
+                negative += 1;
+            }
+            worst = worst.max((residual(&conservative, k) - balance).abs() / scale);
+            subtracted_worst =
+                subtracted_worst.max((residual(&subtracted, k) - balance).abs() / scale);
+        }
+    }
+    assert!(positive > 0 && negative > 0, "{positive} {negative}");
+    assert!(
+        worst < 1e-12,
+        "conservative row against the balance: {worst}"
+    );
+    assert!(
+        subtracted_worst > 1e-3,
+        "the subtracted row misses it: {subtracted_worst}"
+    );
+}
+
+/// The conservative balance of u node (i, j), 0 < i < nx, written from the scalar cells
+/// (`the_conservative_form_is_the_conservative_balance`): the balance, the control volume's
+/// continuity remainder and the row's scale m |u|/Δt.
+fn conservative_balance(
+    grid: &Grid,
+    [rho, rho_old]: [&[f64]; 2],
+    (u, v, old): (&[f64], &[f64], &[f64]),
+    dt: f64,
+    (i, j): (usize, usize),
+) -> (f64, f64, f64) {
+    let (nx, ny) = (grid.nx(), grid.ny());
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
     let cell = |i: usize, j: usize| i + nx * j;
     let upwind = |flow: f64, lo: f64, hi: f64| if flow >= 0.0 { lo } else { hi };
@@ -472,53 +513,28 @@ fn the_conservative_form_is_the_conservative_balance() {
         let vel = v[i + nx * j];
         upwind(vel, rho[cell(i, j - 1)], rho[cell(i, j)]) * vel * dx[i]
     };
-    let (conservative, subtracted) = (
-        rows(MomentumForm::Conservative),
-        rows(MomentumForm::ContinuitySubtracted),
+    let k = i + (nx + 1) * j;
+    let (w, e) = (i - 1, i);
+    let half = |c: usize, f: &[f64]| 0.5 * dx[c] * dy[j] * f[cell(c, j)];
+    let (m, m_old) = (
+        half(w, rho) + half(e, rho),
+        half(w, rho_old) + half(e, rho_old),
     );
-    let (mut positive, mut negative, mut worst, mut subtracted_worst) = (0, 0, 0.0_f64, 0.0_f64);
-    for j in 0..ny {
-        for i in 1..nx {
-            let k = i + (nx + 1) * j;
-            let (w, e) = (i - 1, i);
-            let half = |c: usize, f: &[f64]| 0.5 * dx[c] * dy[j] * f[cell(c, j)];
-            let (m, m_old) = (
-                half(w, rho) + half(e, rho),
-                half(w, rho_old) + half(e, rho_old),
-            );
-            // the control volume's faces: x-faces at the cell centres w and e, y-faces the
-            // halves of cells w and e
-            let f_west = 0.5 * (x_flux(w, j) + x_flux(w + 1, j));
-            let f_east = 0.5 * (x_flux(e, j) + x_flux(e + 1, j));
-            let f_south = 0.5 * (y_flux(w, j) + y_flux(e, j));
-            let f_north = 0.5 * (y_flux(w, j + 1) + y_flux(e, j + 1));
-            let node = |ii: usize, jj: usize| u[ii + (nx + 1) * jj];
-            let south = if j > 0 { node(i, j - 1) } else { 0.0 };
-            let north = if j + 1 < ny { node(i, j + 1) } else { 0.0 };
-            let convection = f_east * upwind(f_east, u[k], node(i + 1, j))
-                - f_west * upwind(f_west, node(i - 1, j), u[k])
-                + f_north * upwind(f_north, u[k], north)
-                - f_south * upwind(f_south, south, u[k]);
-            let balance = (m * u[k] - m_old * problem.old[k]) / dt + convection;
-            let remainder = (m - m_old) / dt + f_east - f_west + f_north - f_south;
-            if remainder > 0.0 {
-                positive += 1;
-            } else {
-                negative += 1;
-            }
-            let scale = (m * u[k] / dt).abs().max(m_old * problem.old[k].abs() / dt);
-            worst = worst.max((residual(&conservative, k) - balance).abs() / scale);
-            subtracted_worst =
-                subtracted_worst.max((residual(&subtracted, k) - balance).abs() / scale);
-        }
-    }
-    assert!(positive > 0 && negative > 0, "{positive} {negative}");
-    assert!(
-        worst < 1e-12,
-        "conservative row against the balance: {worst}"
-    );
-    assert!(
-        subtracted_worst > 1e-3,
-        "the subtracted row misses it: {subtracted_worst}"
-    );
+    // the control volume's faces: x-faces at the cell centres w and e, y-faces the halves of
+    // cells w and e
+    let f_west = 0.5 * (x_flux(w, j) + x_flux(w + 1, j));
+    let f_east = 0.5 * (x_flux(e, j) + x_flux(e + 1, j));
+    let f_south = 0.5 * (y_flux(w, j) + y_flux(e, j));
+    let f_north = 0.5 * (y_flux(w, j + 1) + y_flux(e, j + 1));
+    let node = |ii: usize, jj: usize| u[ii + (nx + 1) * jj];
+    let south = if j > 0 { node(i, j - 1) } else { 0.0 };
+    let north = if j + 1 < ny { node(i, j + 1) } else { 0.0 };
+    let convection = f_east * upwind(f_east, u[k], node(i + 1, j))
+        - f_west * upwind(f_west, node(i - 1, j), u[k])
+        + f_north * upwind(f_north, u[k], north)
+        - f_south * upwind(f_south, south, u[k]);
+    let balance = (m * u[k] - m_old * old[k]) / dt + convection;
+    let remainder = (m - m_old) / dt + f_east - f_west + f_north - f_south;
+    let scale = (m * u[k] / dt).abs().max(m_old * old[k].abs() / dt);
+    (balance, remainder, scale)
 }

@@ -87,41 +87,7 @@ impl Check for CoulombFloor {
                 );
             }
         }
-        let mu_w = 0.1;
-        println!("the block's momentum against its forces, μ_w {mu_w}:");
-        let budget_grids: &[(usize, usize)] = match size {
-            Size::Fast => &[(120, 16)],
-            Size::Full => &[(120, 16), (240, 32)],
-        };
-        for &cells in budget_grids {
-            let forms: &[MomentumForm] = match size {
-                Size::Fast => &[JUDGED_FORM],
-                Size::Full => &[JUDGED_FORM, MomentumForm::ContinuitySubtracted],
-            };
-            for &form in forms {
-                let b = block_momentum_budget(cells, mu_w, form)?;
-                let gap = (b.effective_mu_w.0 - b.effective_mu_w.1).abs() / mu_w;
-                println!(
-                    "  {:>3} × {:<2}, {form:?}: the momentum implies μ_w {:.4}, the forces {:.4} \
-                     (gap {:.2} % of μ_w)",
-                    cells.0,
-                    cells.1,
-                    b.effective_mu_w.0,
-                    b.effective_mu_w.1,
-                    100.0 * gap
-                );
-                if form == JUDGED_FORM {
-                    outcome.measure(
-                        format!(
-                            "block μ_w {mu_w} on {} × {}: |momentum's μ_w − forces' μ_w|/μ_w",
-                            cells.0, cells.1
-                        ),
-                        gap,
-                        Limit::AtMost(BUDGET_TOLERANCE),
-                    );
-                }
-            }
-        }
+        block_budgets(size, &mut outcome)?;
         let (at_rest, sliding) = REST_SPEEDS;
         for (mu_f, limit) in [
             (0.5, Limit::AtMost(at_rest)),
@@ -197,4 +163,45 @@ impl Check for CoulombFloor {
         }
         Ok(outcome)
     }
+}
+
+/// The block's momentum against its forces in the judged form (and, in the full size,
+/// MFIX's form printed beside it), μ_w = 0.1 (module doc).
+fn block_budgets(size: Size, outcome: &mut Outcome) -> anyhow::Result<()> {
+    let mu_w = 0.1;
+    println!("the block's momentum against its forces, μ_w {mu_w}:");
+    let budget_grids: &[(usize, usize)] = match size {
+        Size::Fast => &[(120, 16)],
+        Size::Full => &[(120, 16), (240, 32)],
+    };
+    for &cells in budget_grids {
+        let forms: &[MomentumForm] = match size {
+            Size::Fast => &[JUDGED_FORM],
+            Size::Full => &[JUDGED_FORM, MomentumForm::ContinuitySubtracted],
+        };
+        for &form in forms {
+            let b = block_momentum_budget(cells, mu_w, form)?;
+            let gap = (b.effective_mu_w.0 - b.effective_mu_w.1).abs() / mu_w;
+            println!(
+                "  {:>3} × {:<2}, {form:?}: the momentum implies μ_w {:.4}, the forces {:.4} \
+                 (gap {:.2} % of μ_w)",
+                cells.0,
+                cells.1,
+                b.effective_mu_w.0,
+                b.effective_mu_w.1,
+                100.0 * gap
+            );
+            if form == JUDGED_FORM {
+                outcome.measure(
+                    format!(
+                        "block μ_w {mu_w} on {} × {}: |momentum's μ_w − forces' μ_w|/μ_w",
+                        cells.0, cells.1
+                    ),
+                    gap,
+                    Limit::AtMost(BUDGET_TOLERANCE),
+                );
+            }
+        }
+    }
+    Ok(())
 }
