@@ -11,6 +11,8 @@
 //! landscape.svg, summary.md and summary.json.
 
 pub mod brent;
+#[cfg(test)]
+pub mod coverage;
 pub mod ellipse;
 pub mod landscape;
 pub mod measurements;

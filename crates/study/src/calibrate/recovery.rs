@@ -118,6 +118,13 @@ fn base_case(root: &Path, study: &TruthStudy) -> Result<Case> {
 /// Runs the truth, writes its measurements and calibrates against them, all in `dir`
 /// (finished runs there are reused).
 pub fn recover(root: &Path, study: &TruthStudy, dir: &Path) -> Result<Recovered> {
+    recover_in(root, study, dir, dir)
+}
+
+/// [`recover`] with the runs (the truth's and the calibration's) in `runs`, where studies
+/// of other truths and measurements with the same monitors reuse them, and the
+/// measurements, evaluations and summary in `out`.
+pub fn recover_in(root: &Path, study: &TruthStudy, runs: &Path, out: &Path) -> Result<Recovered> {
     let case = base_case(root, study)?;
     let (paths, params): (Vec<CasePath>, Vec<_>) = study
         .params
@@ -129,8 +136,8 @@ pub fn recover(root: &Path, study: &TruthStudy, dir: &Path) -> Result<Recovered>
     let truth: Vec<f64> = study.params.iter().map(|p| p.truth).collect();
     let values: Vec<(&CasePath, f64)> = paths.iter().zip(truth.iter().copied()).collect();
     let mut truth_case = set_all(&case, &values)?;
-    truth_case.name = format!("{}_truth", case.name);
-    let truth_dir = dir.join(&truth_case.name).join(study.fidelity.name());
+    truth_case.name = truth_name(&case.name, &paths, &truth);
+    let truth_dir = runs.join(&truth_case.name).join(study.fidelity.name());
     let stop = Arc::new(AtomicBool::new(false));
     match run_into(
         &truth_case,
@@ -147,7 +154,7 @@ pub fn recover(root: &Path, study: &TruthStudy, dir: &Path) -> Result<Recovered>
             bail!("the truth run failed: {why}")
         }
     }
-    let file = dir.join("measurements.csv");
+    let file = out.join("measurements.csv");
     std::fs::write(
         &file,
         measurements_from_run(&truth_dir, &study.measured, study.sigma, study.noise)?,
@@ -162,7 +169,7 @@ pub fn recover(root: &Path, study: &TruthStudy, dir: &Path) -> Result<Recovered>
         paths: &paths,
         keys,
         fidelity: study.fidelity,
-        study: dir.to_path_buf(),
+        study: runs.to_path_buf(),
         root,
         measurements: &measurements,
         stop,
@@ -179,13 +186,24 @@ pub fn recover(root: &Path, study: &TruthStudy, dir: &Path) -> Result<Recovered>
         command: "synthetic-truth recovery".into(),
         fields: paths.iter().map(CasePath::fields).collect(),
     };
-    landscape::write_csv(&dir.join("evaluations.csv"), &calibration)?;
-    landscape::write_summary(dir, &calibration, &range, &info)?;
+    landscape::write_csv(&out.join("evaluations.csv"), &calibration)?;
+    landscape::write_summary(out, &calibration, &range, &info)?;
     Ok(Recovered {
         truth,
         calibration,
         range,
     })
+}
+
+/// The truth run's name: the case's with `_truth` and each parameter's key and true value
+/// (runs of several truths share a folder).
+fn truth_name(case: &str, paths: &[CasePath], truth: &[f64]) -> String {
+    let values: Vec<String> = paths
+        .iter()
+        .zip(truth)
+        .map(|(p, t)| format!("{}={t}", p.key()))
+        .collect();
+    format!("{case}_truth_{}", values.join("_"))
 }
 
 #[cfg(test)]
