@@ -15,7 +15,7 @@ use runout_verification::checks::{relative_change, Chute, ChuteRun, CHUTE_TOLERA
 use runout_verification::problems::chute_column::ChuteCheck;
 use runout_verification::Outcome;
 
-use crate::figure::plot_error;
+use crate::figure::{plot_error, LINE_COLOURS};
 
 /// Acceptance: largest difference relative to the largest value (issue 7).
 const TOLERANCE: f64 = CHUTE_TOLERANCE;
@@ -133,8 +133,7 @@ fn draw(c: &ChuteCheck, path: &Path) -> Result<()> {
     let panels = root.split_evenly((1, 3));
     let height_mm: Vec<f64> = c.reference.y.iter().map(|y| y * 1e3).collect();
     let y_top = c.reference.y.last().copied().unwrap_or(0.0) * 1e3 + 0.2;
-    let blue = RGBColor(31, 119, 180);
-    let red = RGBColor(214, 39, 40);
+    let (blue, red) = (LINE_COLOURS[0], LINE_COLOURS[1]);
     let series: [(&str, &[f64], &[f64], bool); 3] = [
         ("εs", &c.reference.eps_s, &c.column.eps_s, false),
         ("u_s [m/s]", &c.reference.u_s, &c.column.u_s, false),

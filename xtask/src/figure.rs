@@ -3,6 +3,7 @@
 
 use plotters::coord::CoordTranslate;
 use plotters::prelude::*;
+use runout_study::plots::{BLACK_INDEX, COLOURS};
 
 /// Draws the legend of `chart`'s labelled series at `position`, on a white box (80 %
 /// opaque) with a black border.
@@ -18,15 +19,15 @@ pub fn legend<'a, DB: DrawingBackend + 'a, CT: CoordTranslate>(
         .draw()
 }
 
-/// Line colours, cycled per curve: blue, red, green, purple, orange (matplotlib's tab10),
-/// then black.
+/// Line colours, cycled per curve: blue, red, green, purple, orange of the study engine's
+/// palette (matplotlib's tab10), then black.
 pub const LINE_COLOURS: [RGBColor; 6] = [
-    RGBColor(31, 119, 180),
-    RGBColor(214, 39, 40),
-    RGBColor(44, 160, 44),
-    RGBColor(148, 103, 189),
-    RGBColor(255, 127, 14),
-    RGBColor(0, 0, 0),
+    COLOURS[0],
+    COLOURS[3],
+    COLOURS[2],
+    COLOURS[4],
+    COLOURS[1],
+    COLOURS[BLACK_INDEX],
 ];
 
 /// The error of a failed drawing (defined with the study engine's plots).

@@ -167,48 +167,17 @@ impl Param {
 
     /// Applies value `k` to `case`; `Err` says why it does not apply.
     pub fn apply(&self, k: usize, case: &mut Case) -> Result<(), String> {
-        let on_walls = for_each_solids_wall;
         match self {
             Param::Diameter(v) => {
                 case.solids.iter_mut().for_each(|s| s.diameter = v[k]);
                 Ok(())
             }
             Param::Specularity(v) => {
-                on_walls(case, "a JohnsonJackson solids condition", &mut |w| {
-                    if let SolidsWall::JohnsonJackson { specularity, .. } = w {
-                        *specularity = v[k];
-                        true
-                    } else {
-                        false
-                    }
-                })
+                self.set_wall_number(case, v[k], "a JohnsonJackson solids condition")
             }
-            Param::PartialSlipHu(v) => on_walls(case, "a PartialSlip solids condition", &mut |w| {
-                if let SolidsWall::PartialSlip { h_u, .. } = w {
-                    *h_u = v[k];
-                    true
-                } else {
-                    false
-                }
-            }),
-            Param::PartialSlipHTheta(v) => {
-                on_walls(case, "a PartialSlip solids condition", &mut |w| {
-                    if let SolidsWall::PartialSlip { h_theta, .. } = w {
-                        *h_theta = v[k];
-                        true
-                    } else {
-                        false
-                    }
-                })
+            Param::PartialSlipHu(v) | Param::PartialSlipHTheta(v) | Param::PartialSlipC(v) => {
+                self.set_wall_number(case, v[k], "a PartialSlip solids condition")
             }
-            Param::PartialSlipC(v) => on_walls(case, "a PartialSlip solids condition", &mut |w| {
-                if let SolidsWall::PartialSlip { c, .. } = w {
-                    *c = v[k];
-                    true
-                } else {
-                    false
-                }
-            }),
             Param::Slope(v) => {
                 match &mut case.gravity {
                     Gravity::Constant { slope, .. } | Gravity::TiltOnImpact { slope, .. } => {
@@ -220,7 +189,7 @@ impl Param {
             Param::SolidsWalls(v) => {
                 // the four sides only: the side walls keep their own condition
                 let sidewalls = case.sidewalls.take();
-                let applied = on_walls(case, "any wall side", &mut |w| {
+                let applied = for_each_solids_wall(case, "any wall side", &mut |w| {
                     *w = v[k].clone();
                     true
                 });
@@ -248,6 +217,27 @@ impl Param {
                     Err("the base case's gravity does not tilt on impact".into())
                 }
             },
+        }
+    }
+
+    /// Sets `value` as this parameter's number of the solids condition of every wall; an
+    /// error naming the condition it `needs` if no wall has that number.
+    fn set_wall_number(&self, case: &mut Case, value: f64, needs: &str) -> Result<(), String> {
+        for_each_solids_wall(case, needs, &mut |w| {
+            self.wall_number(w).map(|number| *number = value).is_some()
+        })
+    }
+
+    /// The number of `wall` this parameter sets, `None` if the condition has no such number.
+    fn wall_number<'w>(&self, wall: &'w mut SolidsWall) -> Option<&'w mut f64> {
+        match (self, wall) {
+            (Param::Specularity(_), SolidsWall::JohnsonJackson { specularity, .. }) => {
+                Some(specularity)
+            }
+            (Param::PartialSlipHu(_), SolidsWall::PartialSlip { h_u, .. }) => Some(h_u),
+            (Param::PartialSlipHTheta(_), SolidsWall::PartialSlip { h_theta, .. }) => Some(h_theta),
+            (Param::PartialSlipC(_), SolidsWall::PartialSlip { c, .. }) => Some(c),
+            _ => None,
         }
     }
 }

@@ -2,18 +2,17 @@
 //! Saad 2003 §7.4.2), on the reduced 5-point operator. Work vectors are allocated by
 //! `set_pattern`; the iteration loop does not allocate.
 
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 use crate::kernels::{axpy, dot, for_each_indexed, norm2};
 use crate::precond::PrecondImpl;
-use crate::stencil::{apply5, check_len, reduced_rhs, residual5, Op5};
+use crate::reduced::ReducedSystem;
+use crate::stencil::{apply5, residual5};
 use crate::{check_rtol, LinSolveError, LinearSolver, Pattern, Precond, SolveStats, Stencil5};
 
 struct Work {
-    pattern: Pattern,
-    op: Op5,
+    system: ReducedSystem,
     precond: PrecondImpl,
-    b: Vec<f64>,
     r: Vec<f64>,
     r_hat: Vec<f64>,
     p: Vec<f64>,
@@ -31,8 +30,6 @@ pub struct BiCgStab {
     max_iter: usize,
     kind: Precond,
     work: Option<Work>,
-    ready: bool,
-    t_setup: Duration,
 }
 
 impl BiCgStab {
@@ -43,8 +40,6 @@ impl BiCgStab {
             max_iter,
             kind: precond,
             work: None,
-            ready: false,
-            t_setup: Duration::ZERO,
         }
     }
 }
@@ -59,10 +54,8 @@ impl LinearSolver for BiCgStab {
         let (nx, ny, n) = (pattern.nx(), pattern.ny(), pattern.len());
         let z = || vec![0.0; n];
         self.work = Some(Work {
-            pattern: pattern.clone(),
-            op: Op5::zeros(nx, ny),
+            system: ReducedSystem::new(pattern),
             precond: PrecondImpl::allocate(self.kind, nx, ny),
-            b: z(),
             r: z(),
             r_hat: z(),
             p: z(),
@@ -71,45 +64,27 @@ impl LinearSolver for BiCgStab {
             s_hat: z(),
             t: z(),
         });
-        self.ready = false;
         Ok(())
     }
 
     fn setup(&mut self, a: &Stencil5) -> Result<(), LinSolveError> {
-        let t0 = Instant::now();
         let w = self
             .work
             .as_mut()
             .ok_or(LinSolveError::NotReady("set_pattern"))?;
-        if a.pattern() != &w.pattern {
-            return Err(LinSolveError::PatternMismatch);
-        }
-        self.ready = false;
-        a.validate_coefficients()?;
-        w.op.reduce_from(a);
-        w.precond.setup(&w.op, a.pattern().fixed_mask())?;
-        self.ready = true;
-        self.t_setup = t0.elapsed();
-        Ok(())
+        let precond = &mut w.precond;
+        w.system.setup(a, |op, fixed| precond.setup(op, fixed))
     }
 
     /// With a multigrid preconditioner, keeps its hierarchy from the last `setup` and takes
     /// the new coefficients as the operator; the other preconditioners are rebuilt (they
     /// cost one pass over the matrix).
     fn refresh(&mut self, a: &Stencil5) -> Result<(), LinSolveError> {
-        if !self.ready || !matches!(self.kind, Precond::MultigridV | Precond::MultigridK) {
-            return self.setup(a);
+        let keeps_hierarchy = matches!(self.kind, Precond::MultigridV | Precond::MultigridK);
+        match self.work.as_mut() {
+            Some(w) if keeps_hierarchy && w.system.is_ready() => w.system.refresh(a),
+            _ => self.setup(a),
         }
-        let w = self
-            .work
-            .as_mut()
-            .ok_or(LinSolveError::NotReady("set_pattern"))?;
-        if a.pattern() != &w.pattern {
-            return Err(LinSolveError::PatternMismatch);
-        }
-        a.validate_coefficients()?;
-        w.op.reduce_from(a);
-        Ok(())
     }
 
     fn solve(&mut self, a: &Stencil5, x: &mut [f64]) -> Result<SolveStats, LinSolveError> {
@@ -118,31 +93,9 @@ impl LinearSolver for BiCgStab {
             .work
             .as_mut()
             .ok_or(LinSolveError::NotReady("set_pattern"))?;
-        if !self.ready {
-            return Err(LinSolveError::NotReady("setup"));
-        }
-        if a.pattern() != &w.pattern {
-            return Err(LinSolveError::PatternMismatch);
-        }
-        check_len("x", a.len(), x.len())?;
-        a.validate_rhs()?;
-        if let Some(cell) = crate::kernels::first_non_finite(x) {
-            return Err(LinSolveError::NonFinite {
-                what: "initial guess x",
-                cell,
-            });
-        }
-        reduced_rhs(a, &mut w.b);
-        let iterations = bicgstab(crate::kernels::norm2(&a.b), w, x, self.rtol, self.max_iter)?;
-        crate::stencil::set_fixed_values(a, x);
-        let rel_residual = a.rel_residual(x, &mut w.t)?;
-        Ok(SolveStats {
-            iterations,
-            rel_residual,
-            converged: rel_residual <= self.rtol,
-            t_setup: self.t_setup,
-            t_solve: t0.elapsed(),
-        })
+        let b_norm = w.system.load_rhs(a, x)?;
+        let iterations = bicgstab(b_norm, w, x, self.rtol, self.max_iter)?;
+        w.system.stats(a, x, iterations, self.rtol, t0, &mut w.t)
     }
 }
 
@@ -155,14 +108,14 @@ fn bicgstab(
     max_iter: usize,
 ) -> Result<usize, LinSolveError> {
     const METHOD: &str = "BiCGSTAB";
-    let c = w.op.coeffs();
+    let c = w.system.op.coeffs();
     // the tolerance refers to the caller's b, as the reported residual does
     if b_norm == 0.0 {
         x.fill(0.0);
         return Ok(0);
     }
     let target = rtol * b_norm;
-    residual5(&c, &w.b, x, &mut w.r);
+    residual5(&c, &w.system.b, x, &mut w.r);
     let mut r_norm = norm2(&w.r);
     let mut it = 0;
     // restart loop: (re)start from the true residual
@@ -183,7 +136,7 @@ fn bicgstab(
                 let (r, v) = (&w.r, &w.v);
                 for_each_indexed(&mut w.p, |k, pk| *pk = r[k] + beta * (*pk - omega * v[k]));
             }
-            w.precond.apply(&w.op, &w.p, &mut w.p_hat);
+            w.precond.apply(&w.system.op, &w.p, &mut w.p_hat);
             apply5(&c, None, &w.p_hat, &mut w.v);
             let rv = dot(&w.r_hat, &w.v);
             if rv == 0.0 || !rv.is_finite() {
@@ -198,11 +151,11 @@ fn bicgstab(
             let s_norm = norm2(&w.r);
             if s_norm <= target {
                 // confirm with the true residual
-                residual5(&c, &w.b, x, &mut w.r);
+                residual5(&c, &w.system.b, x, &mut w.r);
                 r_norm = norm2(&w.r);
                 continue 'restart;
             }
-            w.precond.apply(&w.op, &w.r, &mut w.s_hat);
+            w.precond.apply(&w.system.op, &w.r, &mut w.s_hat);
             apply5(&c, None, &w.s_hat, &mut w.t);
             let tt = dot(&w.t, &w.t);
             if tt == 0.0 || !tt.is_finite() {
@@ -219,7 +172,7 @@ fn bicgstab(
                 });
             }
             if r_norm <= target {
-                residual5(&c, &w.b, x, &mut w.r);
+                residual5(&c, &w.system.b, x, &mut w.r);
                 r_norm = norm2(&w.r);
                 continue 'restart;
             }
@@ -234,7 +187,7 @@ fn bicgstab(
                 iterations: it,
             });
         }
-        residual5(&c, &w.b, x, &mut w.r);
+        residual5(&c, &w.system.b, x, &mut w.r);
         r_norm = norm2(&w.r);
         if !r_norm.is_finite() {
             return Err(LinSolveError::Breakdown {

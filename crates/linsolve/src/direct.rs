@@ -10,7 +10,10 @@ use std::time::{Duration, Instant};
 
 use faer::linalg::solvers::SolveCore;
 use faer::sparse::linalg::solvers::{Llt, Lu, SymbolicLlt, SymbolicLu};
-use faer::sparse::{Argsort, Pair, SparseColMat, SymbolicSparseColMat};
+use faer::sparse::{
+    Argsort, FaerError, Pair, SparseColMat, SparseColMatRef, SymbolicSparseColMat,
+    SymbolicSparseColMatRef,
+};
 use faer::{Conj, MatMut, Side};
 use rayon::prelude::*;
 
@@ -175,14 +178,77 @@ impl CscAssembler {
     }
 }
 
-/// faer sparse LU with the symbolic factorisation reused across refills.
-#[derive(Default)]
-pub struct SparseLuSolver {
+/// The state both direct solvers keep: the CSC assembler and the symbolic factorisation of
+/// the pattern of `set_pattern`, the numeric factorisation of the last `setup`.
+struct Factored<S, N> {
     csc: Option<CscAssembler>,
-    symbolic: Option<SymbolicLu<usize>>,
-    lu: Option<Lu<usize, f64>>,
+    symbolic: Option<S>,
+    numeric: Option<N>,
     t_setup: Duration,
 }
+
+impl<S, N> Default for Factored<S, N> {
+    fn default() -> Self {
+        Self {
+            csc: None,
+            symbolic: None,
+            numeric: None,
+            t_setup: Duration::ZERO,
+        }
+    }
+}
+
+impl<S, N> Factored<S, N> {
+    /// `set_pattern`: the CSC pattern and its symbolic factorisation by `analyse`.
+    fn set_pattern(
+        &mut self,
+        pattern: &Pattern,
+        analyse: impl FnOnce(SymbolicSparseColMatRef<'_, usize>) -> Result<S, FaerError>,
+    ) -> Result<(), LinSolveError> {
+        let csc = CscAssembler::new(pattern)?;
+        let symbolic =
+            analyse(csc.symbolic.as_ref()).map_err(|e| LinSolveError::Faer(format!("{e:?}")))?;
+        self.csc = Some(csc);
+        self.symbolic = Some(symbolic);
+        self.numeric = None;
+        Ok(())
+    }
+
+    /// `setup`: refills the matrix from `a` and factors it by `factor` (symbolic
+    /// factorisation, reduced operator, matrix).
+    fn setup(
+        &mut self,
+        a: &Stencil5,
+        factor: impl FnOnce(&S, &Op5, SparseColMatRef<'_, usize, f64>) -> Result<N, LinSolveError>,
+    ) -> Result<(), LinSolveError> {
+        let t0 = Instant::now();
+        let (Some(csc), Some(symbolic)) = (self.csc.as_mut(), self.symbolic.as_ref()) else {
+            return Err(LinSolveError::NotReady("set_pattern"));
+        };
+        let mat = csc.matrix(a)?;
+        self.numeric = None; // a failed factorisation leaves none for `solve`
+        self.numeric = Some(factor(symbolic, &csc.op, mat.as_ref())?);
+        self.t_setup = t0.elapsed();
+        Ok(())
+    }
+
+    /// `solve`: `solve_in_place` by the numeric factorisation on the reduced right-hand side.
+    fn solve(
+        &mut self,
+        a: &Stencil5,
+        x: &mut [f64],
+        solve_in_place: impl FnOnce(&N, MatMut<'_, f64>),
+    ) -> Result<SolveStats, LinSolveError> {
+        let (Some(csc), Some(numeric)) = (self.csc.as_mut(), self.numeric.as_ref()) else {
+            return Err(LinSolveError::NotReady("setup"));
+        };
+        csc.solve_with(a, x, self.t_setup, |rhs| solve_in_place(numeric, rhs))
+    }
+}
+
+/// faer sparse LU with the symbolic factorisation reused across refills.
+#[derive(Default)]
+pub struct SparseLuSolver(Factored<SymbolicLu<usize>, Lu<usize, f64>>);
 
 impl SparseLuSolver {
     /// An unconfigured solver; call [`LinearSolver::set_pattern`] next.
@@ -197,55 +263,32 @@ impl LinearSolver for SparseLuSolver {
     }
 
     fn set_pattern(&mut self, pattern: &Pattern) -> Result<(), LinSolveError> {
-        let csc = CscAssembler::new(pattern)?;
-        let symbolic = SymbolicLu::try_new(csc.symbolic.as_ref())
-            .map_err(|e| LinSolveError::Faer(format!("{e:?}")))?;
-        self.csc = Some(csc);
-        self.symbolic = Some(symbolic);
-        self.lu = None;
-        Ok(())
+        self.0.set_pattern(pattern, SymbolicLu::try_new)
     }
 
     fn setup(&mut self, a: &Stencil5) -> Result<(), LinSolveError> {
-        let t0 = Instant::now();
-        let (Some(csc), Some(symbolic)) = (self.csc.as_mut(), self.symbolic.as_ref()) else {
-            return Err(LinSolveError::NotReady("set_pattern"));
-        };
-        let mat = csc.matrix(a)?;
-        self.lu = None;
-        let lu =
-            Lu::try_new_with_symbolic(symbolic.clone(), mat.as_ref()).map_err(|e| match e {
+        self.0.setup(a, |symbolic, _, mat| {
+            Lu::try_new_with_symbolic(symbolic.clone(), mat).map_err(|e| match e {
                 faer::sparse::linalg::LuError::SymbolicSingular { index } => {
                     LinSolveError::Singular {
                         detail: format!("structurally singular at pivot {index}"),
                     }
                 }
                 other => LinSolveError::Faer(format!("{other:?}")),
-            })?;
-        self.lu = Some(lu);
-        self.t_setup = t0.elapsed();
-        Ok(())
+            })
+        })
     }
 
     fn solve(&mut self, a: &Stencil5, x: &mut [f64]) -> Result<SolveStats, LinSolveError> {
-        let (Some(csc), Some(lu)) = (self.csc.as_mut(), self.lu.as_ref()) else {
-            return Err(LinSolveError::NotReady("setup"));
-        };
-        csc.solve_with(a, x, self.t_setup, |rhs| {
-            lu.solve_in_place_with_conj(Conj::No, rhs)
-        })
+        self.0
+            .solve(a, x, |lu, rhs| lu.solve_in_place_with_conj(Conj::No, rhs))
     }
 }
 
 /// faer sparse Cholesky LLᵀ (lower triangle) with the symbolic factorisation reused.
 /// `setup` rejects a matrix whose reduced operator is not symmetric.
 #[derive(Default)]
-pub struct CholeskySolver {
-    csc: Option<CscAssembler>,
-    symbolic: Option<SymbolicLlt<usize>>,
-    llt: Option<Llt<usize, f64>>,
-    t_setup: Duration,
-}
+pub struct CholeskySolver(Factored<SymbolicLlt<usize>, Llt<usize, f64>>);
 
 impl CholeskySolver {
     /// An unconfigured solver; call [`LinearSolver::set_pattern`] next.
@@ -295,39 +338,23 @@ impl LinearSolver for CholeskySolver {
     }
 
     fn set_pattern(&mut self, pattern: &Pattern) -> Result<(), LinSolveError> {
-        let csc = CscAssembler::new(pattern)?;
-        let symbolic = SymbolicLlt::try_new(csc.symbolic.as_ref(), Side::Lower)
-            .map_err(|e| LinSolveError::Faer(format!("{e:?}")))?;
-        self.csc = Some(csc);
-        self.symbolic = Some(symbolic);
-        self.llt = None;
-        Ok(())
+        self.0
+            .set_pattern(pattern, |csc| SymbolicLlt::try_new(csc, Side::Lower))
     }
 
     fn setup(&mut self, a: &Stencil5) -> Result<(), LinSolveError> {
-        let t0 = Instant::now();
-        let (Some(csc), Some(symbolic)) = (self.csc.as_mut(), self.symbolic.as_ref()) else {
-            return Err(LinSolveError::NotReady("set_pattern"));
-        };
-        let mat = csc.matrix(a)?;
-        self.llt = None;
-        check_symmetric(&csc.op)?;
-        let llt = Llt::try_new_with_symbolic(symbolic.clone(), mat.as_ref(), Side::Lower).map_err(
-            |e| LinSolveError::NotSpd {
-                detail: format!("{e:?}"),
-            },
-        )?;
-        self.llt = Some(llt);
-        self.t_setup = t0.elapsed();
-        Ok(())
+        self.0.setup(a, |symbolic, op, mat| {
+            check_symmetric(op)?;
+            Llt::try_new_with_symbolic(symbolic.clone(), mat, Side::Lower).map_err(|e| {
+                LinSolveError::NotSpd {
+                    detail: format!("{e:?}"),
+                }
+            })
+        })
     }
 
     fn solve(&mut self, a: &Stencil5, x: &mut [f64]) -> Result<SolveStats, LinSolveError> {
-        let (Some(csc), Some(llt)) = (self.csc.as_mut(), self.llt.as_ref()) else {
-            return Err(LinSolveError::NotReady("setup"));
-        };
-        csc.solve_with(a, x, self.t_setup, |rhs| {
-            llt.solve_in_place_with_conj(Conj::No, rhs)
-        })
+        self.0
+            .solve(a, x, |llt, rhs| llt.solve_in_place_with_conj(Conj::No, rhs))
     }
 }

@@ -67,6 +67,7 @@ mod kernels;
 mod multigrid;
 mod precond;
 pub mod problems;
+mod reduced;
 mod stencil;
 mod team;
 

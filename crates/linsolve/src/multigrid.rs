@@ -37,13 +37,14 @@
 //!   short sweeps; every loop's chunks are fixed by the level's size, so the result is the
 //!   same on any number of threads.
 
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 mod smoother;
 
 use crate::band::BandLu;
 use crate::kernels::{axpy_on, dot_on, for_each_indexed_on, norm2_on};
-use crate::stencil::{apply5_on, check_len, for_each_row_on, reduced_rhs, residual5_on, Op5};
+use crate::reduced::ReducedSystem;
+use crate::stencil::{apply5_on, for_each_row_on, residual5_on, Op5};
 use crate::team::Team;
 use crate::{check_rtol, LinSolveError, LinearSolver, Pattern, SolveStats, Stencil5};
 
@@ -350,10 +351,8 @@ fn coarse_correction(levels: &mut [Level], coarsest: &mut BandLu, kind: Cycle, t
 }
 
 struct CgWork {
-    pattern: Pattern,
-    op: Op5,
+    system: ReducedSystem,
     hierarchy: Hierarchy,
-    b: Vec<f64>,
     r: Vec<f64>,
     z: Vec<f64>,
     p: Vec<f64>,
@@ -366,19 +365,12 @@ struct CgWork {
 pub struct MultigridCg {
     params: MultigridParams,
     work: Option<CgWork>,
-    ready: bool,
-    t_setup: Duration,
 }
 
 impl MultigridCg {
     /// A solver with the given parameters; call [`LinearSolver::set_pattern`] next.
     pub fn new(params: MultigridParams) -> Self {
-        Self {
-            params,
-            work: None,
-            ready: false,
-            t_setup: Duration::ZERO,
-        }
+        Self { params, work: None }
     }
 
     /// Number of grid levels (after `set_pattern`).
@@ -397,53 +389,32 @@ impl LinearSolver for MultigridCg {
         let (nx, ny, n) = (pattern.nx(), pattern.ny(), pattern.len());
         let z = || vec![0.0; n];
         self.work = Some(CgWork {
-            pattern: pattern.clone(),
-            op: Op5::zeros(nx, ny),
+            system: ReducedSystem::new(pattern),
             hierarchy: Hierarchy::allocate(nx, ny, &self.params),
-            b: z(),
             r: z(),
             z: z(),
             p: z(),
             q: z(),
         });
-        self.ready = false;
         Ok(())
     }
 
     fn setup(&mut self, a: &Stencil5) -> Result<(), LinSolveError> {
-        let t0 = Instant::now();
         let w = self
             .work
             .as_mut()
             .ok_or(LinSolveError::NotReady("set_pattern"))?;
-        if a.pattern() != &w.pattern {
-            return Err(LinSolveError::PatternMismatch);
-        }
-        self.ready = false;
-        a.validate_coefficients()?;
-        w.op.reduce_from(a);
-        w.hierarchy.setup(&w.op, a.pattern().fixed_mask())?;
-        self.ready = true;
-        self.t_setup = t0.elapsed();
-        Ok(())
+        let hierarchy = &mut w.hierarchy;
+        w.system.setup(a, |op, fixed| hierarchy.setup(op, fixed))
     }
 
     /// Keeps the hierarchy of the last `setup` as the preconditioner and takes the new
     /// coefficients as the operator of the flexible CG.
     fn refresh(&mut self, a: &Stencil5) -> Result<(), LinSolveError> {
-        if !self.ready {
-            return self.setup(a);
+        match self.work.as_mut() {
+            Some(w) if w.system.is_ready() => w.system.refresh(a),
+            _ => self.setup(a),
         }
-        let w = self
-            .work
-            .as_mut()
-            .ok_or(LinSolveError::NotReady("set_pattern"))?;
-        if a.pattern() != &w.pattern {
-            return Err(LinSolveError::PatternMismatch);
-        }
-        a.validate_coefficients()?;
-        w.op.reduce_from(a);
-        Ok(())
     }
 
     fn solve(&mut self, a: &Stencil5, x: &mut [f64]) -> Result<SolveStats, LinSolveError> {
@@ -452,37 +423,10 @@ impl LinearSolver for MultigridCg {
             .work
             .as_mut()
             .ok_or(LinSolveError::NotReady("set_pattern"))?;
-        if !self.ready {
-            return Err(LinSolveError::NotReady("setup"));
-        }
-        if a.pattern() != &w.pattern {
-            return Err(LinSolveError::PatternMismatch);
-        }
-        check_len("x", a.len(), x.len())?;
-        a.validate_rhs()?;
-        if let Some(cell) = crate::kernels::first_non_finite(x) {
-            return Err(LinSolveError::NonFinite {
-                what: "initial guess x",
-                cell,
-            });
-        }
-        reduced_rhs(a, &mut w.b);
-        let iterations = fcg(
-            crate::kernels::norm2(&a.b),
-            w,
-            x,
-            self.params.rtol,
-            self.params.max_iter,
-        )?;
-        crate::stencil::set_fixed_values(a, x);
-        let rel_residual = a.rel_residual(x, &mut w.q)?;
-        Ok(SolveStats {
-            iterations,
-            rel_residual,
-            converged: rel_residual <= self.params.rtol,
-            t_setup: self.t_setup,
-            t_solve: t0.elapsed(),
-        })
+        let b_norm = w.system.load_rhs(a, x)?;
+        let (rtol, max_iter) = (self.params.rtol, self.params.max_iter);
+        let iterations = fcg(b_norm, w, x, rtol, max_iter)?;
+        w.system.stats(a, x, iterations, rtol, t0, &mut w.q)
     }
 }
 
@@ -512,8 +456,8 @@ fn fcg_on(
     x: &mut [f64],
     max_iter: usize,
 ) -> Result<usize, LinSolveError> {
-    let c = w.op.coeffs();
-    residual5_on(team, &c, &w.b, x, &mut w.r);
+    let c = w.system.op.coeffs();
+    residual5_on(team, &c, &w.system.b, x, &mut w.r);
     let mut r_norm = norm2_on(team, &w.r);
     let mut it = 0;
     let mut pq_prev = 0.0;
@@ -543,7 +487,7 @@ fn fcg_on(
         r_norm = norm2_on(team, &w.r);
         if r_norm <= target {
             // confirm with the true residual; restart the recurrence if they disagree
-            residual5_on(team, &c, &w.b, x, &mut w.r);
+            residual5_on(team, &c, &w.system.b, x, &mut w.r);
             r_norm = norm2_on(team, &w.r);
             fresh = true;
         }

@@ -16,8 +16,9 @@ const PANEL_WIDTH: u32 = 460;
 /// Height of one panel [px].
 const PANEL_HEIGHT: u32 = 420;
 
-/// Line colours, by series index (the tab10 palette), then black.
-const COLOURS: [RGBColor; 11] = [
+/// Line colours, by series index (the tab10 palette), then black; the one palette of the
+/// workspace's figures (xtask's `figure::LINE_COLOURS` picks from it).
+pub const COLOURS: [RGBColor; 11] = [
     RGBColor(31, 119, 180),
     RGBColor(255, 127, 14),
     RGBColor(44, 160, 44),
