@@ -49,11 +49,10 @@ pub(crate) fn add_continuity_remainder(
     let (nx, ny) = (grid.nx(), grid.ny());
     let periodic = c.dir == 0 && grid.periodic_x();
     let (mx, my) = (faces.mx, faces.my);
-    let fixed = a.pattern().fixed_mask().to_vec();
     for j in 0..my {
         for i in 0..mx {
             let k = i + mx * j;
-            if fixed[k] || phase.skip.is_some_and(|s| s[k]) {
+            if a.pattern().fixed_mask()[k] || phase.skip.is_some_and(|s| s[k]) {
                 continue;
             }
             // the cells whose halves make up the control volume
