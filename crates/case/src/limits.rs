@@ -69,6 +69,24 @@ pub const GAS_DENSITY: Band = Band {
     reason: "air at ~1 mbar to gas at ~100 bar (air at 1 bar: 1.2)",
 };
 
+/// An ideal gas's molar mass `gas.law.IdealGas.molar_mass`.
+pub const GAS_MOLAR_MASS: Band = Band {
+    what: "gas molar mass",
+    lo: 1e-3,
+    hi: 1.0,
+    unit: "kg/mol",
+    reason: "hydrogen 0.002 to the heaviest gases (UF6 0.35); air 0.028965",
+};
+
+/// An ideal gas's temperature `gas.law.IdealGas.temperature`.
+pub const GAS_TEMPERATURE: Band = Band {
+    what: "gas temperature",
+    lo: 10.0,
+    hi: 5000.0,
+    unit: "K",
+    reason: "cryogenic gas to a pyroclastic current's hottest gas (~1300 K), with margin",
+};
+
 /// Gas dynamic viscosity `gas.viscosity`.
 pub const GAS_VISCOSITY: Band = Band {
     what: "gas dynamic viscosity",
@@ -273,10 +291,12 @@ pub const MU_I_SHEAR_RATE_FLOOR: Band = Band {
 };
 
 /// Every band, in the order of docs/reference/input-validation.md.
-pub const BANDS: [Band; 25] = [
+pub const BANDS: [Band; 27] = [
     DIAMETER,
     PARTICLE_DENSITY,
     GAS_DENSITY,
+    GAS_MOLAR_MASS,
+    GAS_TEMPERATURE,
     GAS_VISCOSITY,
     PRESSURE,
     DOMAIN_LENGTH,
@@ -309,6 +329,8 @@ pub const BAND_FIELDS: &[(&str, Band)] = &[
     ("solids[].diameter", DIAMETER),
     ("solids[].density", PARTICLE_DENSITY),
     ("gas.density", GAS_DENSITY),
+    ("gas.law.IdealGas.molar_mass", GAS_MOLAR_MASS),
+    ("gas.law.IdealGas.temperature", GAS_TEMPERATURE),
     ("gas.viscosity", GAS_VISCOSITY),
     ("gas.reference_pressure", PRESSURE),
     ("initial.gas_pressure", PRESSURE),

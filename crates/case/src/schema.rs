@@ -81,17 +81,63 @@ pub struct Domain {
     pub y: AxisSpec,
 }
 
-/// Gas properties (constant density and viscosity, MFIX `RO_G0`, `MU_G0`).
+/// Gas properties (a constant density by default, MFIX `RO_G0`; or an ideal gas, MFIX's
+/// default; a constant viscosity, MFIX `MU_G0`).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Gas {
-    /// density ρ_g [kg m⁻³]
+    /// density ρ_g [kg m⁻³]; an ideal gas's at `reference_pressure` (its law gives it, and
+    /// the value is checked against it)
     pub density: f64,
     /// dynamic viscosity μ_g [Pa s]
     pub viscosity: f64,
     /// reference (ambient) pressure [Pa]
     #[serde(default = "default_reference_pressure")]
     pub reference_pressure: f64,
+    /// how ρ_g follows the pressure (docs/model.md §1.4)
+    #[serde(default, skip_serializing_if = "GasLaw::is_constant")]
+    pub law: GasLaw,
+}
+
+/// The gas's equation of state (docs/model.md §1.4).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub enum GasLaw {
+    /// ρ_g = `density` everywhere (MFIX with `RO_G0` set)
+    #[default]
+    Constant,
+    /// ρ_g = P M/(R T) at a fixed temperature (MFIX's default, `RO_G0` unset, with its
+    /// energy equations off): molar mass M [kg mol⁻¹] (air 0.028965, MFIX `MW_AVG`),
+    /// temperature T [K] (MFIX `T_G0`)
+    IdealGas {
+        /// M [kg mol⁻¹]
+        molar_mass: f64,
+        /// T [K]
+        temperature: f64,
+    },
+}
+
+impl GasLaw {
+    /// Whether it is the constant density (the default, left out when written).
+    pub fn is_constant(&self) -> bool {
+        matches!(self, GasLaw::Constant)
+    }
+}
+
+impl Gas {
+    /// The equation of state the solver uses (runout-closures' law).
+    pub fn equation_of_state(&self) -> runout_closures::GasLaw {
+        match self.law {
+            GasLaw::Constant => runout_closures::GasLaw::Constant(self.density),
+            GasLaw::IdealGas {
+                molar_mass,
+                temperature,
+            } => runout_closures::GasLaw::IdealGas {
+                molar_mass,
+                temperature,
+            },
+        }
+    }
 }
 
 fn default_reference_pressure() -> f64 {

@@ -39,6 +39,38 @@ fn bounded_end_time(case: &Case) -> f64 {
     }
 }
 
+/// An ideal gas's molar mass and temperature, and its `density` within 1 % of its law's at
+/// `reference_pressure` (the density the residual scales and mass-flux inlets read).
+fn check_gas_law(c: &mut Checker, gas: &Gas) {
+    if let GasLaw::IdealGas {
+        molar_mass,
+        temperature,
+    } = gas.law
+    {
+        c.band("gas.law.IdealGas.molar_mass", molar_mass, &GAS_MOLAR_MASS);
+        c.band(
+            "gas.law.IdealGas.temperature",
+            temperature,
+            &GAS_TEMPERATURE,
+        );
+        let ideal = gas.equation_of_state().density(gas.reference_pressure);
+        if ideal.is_finite() && (gas.density / ideal - 1.0).abs() > IDEAL_DENSITY_TOLERANCE {
+            c.fail(
+                "gas.density",
+                gas.density,
+                format!(
+                    "within 1 % of the ideal gas's P M/(R T) = {ideal:.4} kg/m³ at \
+                     reference_pressure {} Pa (gas.law)",
+                    gas.reference_pressure
+                ),
+            );
+        }
+    }
+}
+
+/// How far an ideal gas's `gas.density` may lie from its law's at the reference pressure.
+const IDEAL_DENSITY_TOLERANCE: f64 = 0.01;
+
 /// The name, the grids, the gas, the solids phases, the closure models, the boundaries and the side walls.
 fn check_materials(c: &mut Checker, case: &Case) {
     if let Some(e) = name_error("name", &case.name) {
@@ -52,8 +84,17 @@ fn check_materials(c: &mut Checker, case: &Case) {
         c.band("gas.density", gas.density, &GAS_DENSITY);
         c.band("gas.viscosity", gas.viscosity, &GAS_VISCOSITY);
         c.band("gas.reference_pressure", gas.reference_pressure, &PRESSURE);
+        check_gas_law(c, gas);
     }
 
+    if case.solids.is_empty() && case.gas.as_ref().is_some_and(|g| !g.law.is_constant()) {
+        c.fail(
+            "gas.law",
+            "IdealGas",
+            "Constant in a case without solids (the single-phase solver's gas has a constant \
+             density; an ideal gas needs the two-fluid solver)",
+        );
+    }
     if case.solids.is_empty() && case.gas.is_none() {
         c.fail(
             "solids",

@@ -137,17 +137,24 @@ pub struct ClosureSet {
 /// J_vis and no J_slip, and μ* = μ₀, κ* = κ₀ (docs/model.md §6, last row).
 #[inline]
 pub fn evaluate(state: &CellState, params: &ClosureParams) -> ClosureSet {
+    evaluate_in_gas(state, params, &params.gas)
+}
+
+/// [`evaluate`] in the gas `fluid` instead of `params.gas`: a compressible gas's density of
+/// the cell (docs/model.md §1.4).
+#[inline]
+pub fn evaluate_in_gas(state: &CellState, params: &ClosureParams, fluid: &Gas) -> ClosureSet {
     let particles = &params.particles;
     let eps_s = state.eps_s;
     let eps_g = 1.0 - eps_s;
     let solids = SolidsState::new(eps_s, state.theta, particles, params.radial);
     let g0 = solids.g0;
 
-    let has_gas = params.gas.density != 0.0;
+    let has_gas = fluid.density != 0.0;
     let drag_inputs = DragInputs {
         eps_g,
-        rho_g: params.gas.density,
-        mu_g: params.gas.viscosity,
+        rho_g: fluid.density,
+        mu_g: fluid.viscosity,
         slip: state.slip,
         d_p: particles.diameter,
     };
@@ -197,7 +204,7 @@ pub fn evaluate(state: &CellState, params: &ClosureParams) -> ClosureSet {
                 g0,
                 particles.diameter,
                 particles.density,
-                params.gas.viscosity,
+                fluid.viscosity,
                 state.slip,
             ),
         )

@@ -38,18 +38,20 @@ pub mod cell;
 pub mod drag;
 pub mod energy;
 pub mod friction;
+pub mod gas_law;
 pub mod guards;
 pub mod kinetic;
 pub mod mu_i;
 pub mod radial;
 pub mod stress;
 
-pub use cell::{evaluate, CellState, ClosureParams, ClosureSet, Gas, Particles};
+pub use cell::{evaluate, evaluate_in_gas, CellState, ClosureParams, ClosureSet, Gas, Particles};
 pub use drag::{Drag, DragInputs};
 pub use friction::{
     FrictionModel, FrictionName, FrictionParams, FrictionalStress, PrincetonConstants,
     SchaefferConstants,
 };
+pub use gas_law::GasLaw;
 pub use kinetic::{GasCoupling, KineticStress, SolidsState};
 pub use mu_i::MuIConstants;
 pub use radial::RadialDistribution;

@@ -67,15 +67,24 @@ fn initial_gas_pressure(
     (x, y): (f64, f64),
 ) -> f64 {
     let top_left = (grid.x.start(), grid.y.end());
-    match (&case.initial.gas_pressure, bent) {
-        (InitialPressure::Hydrostatic, None) => {
+    match (&case.initial.gas_pressure, bent, gas.law.is_constant()) {
+        (InitialPressure::Hydrostatic, None, true) => {
             gas.reference_pressure
                 + gas.density * (gravity.0 * (x - top_left.0) + gravity.1 * (y - top_left.1))
         }
-        (InitialPressure::Hydrostatic, Some(b)) => {
+        (InitialPressure::Hydrostatic, Some(b), true) => {
             gas.reference_pressure + gas.density * b.work(top_left, (x, y))
         }
-        (InitialPressure::Uniform(p), _) => *p,
+        // an ideal gas's isothermal column (docs/model.md §1.4)
+        (InitialPressure::Hydrostatic, _, false) => {
+            let work = match bent {
+                Some(b) => b.work(top_left, (x, y)),
+                None => gravity.0 * (x - top_left.0) + gravity.1 * (y - top_left.1),
+            };
+            gas.equation_of_state()
+                .hydrostatic(gas.reference_pressure, work)
+        }
+        (InitialPressure::Uniform(p), _, _) => *p,
     }
 }
 
@@ -116,6 +125,12 @@ pub fn single_phase_solver(case: &Case) -> Result<SinglePhase, RunError> {
     if case.sidewalls.is_some() {
         return Err(unsupported(
             "has sidewalls, which act on solids (docs/model.md §8): two-fluid cases only",
+        ));
+    }
+    if !gas.law.is_constant() {
+        return Err(unsupported(
+            "has an ideal gas (gas.law), which the two-fluid solver carries: the single-phase \
+             solver's gas has a constant density",
         ));
     }
     let gravity = match case.gravity {
@@ -243,6 +258,10 @@ pub fn two_fluid_solver(case: &Case) -> Result<TwoFluid, RunError> {
     };
     let mut tf = TwoFluid::new(grid.clone(), fluid, gas_walls, specs, gravity, settings)
         .map_err(|e| unsupported(format!("setting up the two-fluid solver: {e}")))?;
+    if !gas.law.is_constant() {
+        tf.set_gas_law(gas.equation_of_state())
+            .map_err(|e| unsupported(format!("gas.law: {e}")))?;
+    }
     tf.set_sidewalls(super::sidewalls::sidewalls(case)?);
     // a bent floor acts with the tilted gravity: from the start under a constant one, at
     // the tilt otherwise (`PendingTilt`)

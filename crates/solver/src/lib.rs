@@ -36,6 +36,7 @@ pub mod transport;
 pub mod two_fluid;
 pub mod volume_fraction;
 
+pub use runout_closures::GasLaw;
 pub use single_phase::{
     Fluid, Residuals, Settings, SideBc, SinglePhase, SolverError, SteadyReport,
 };

@@ -32,7 +32,7 @@
 
 use crate::check::Check;
 use crate::checks::{
-    BedPath, Cavity, Chute, Cooling, CoulombFloor, FluidizedBed, GasInlet, Haff, Incline,
+    BedPath, Cavity, Chute, Cooling, CoulombFloor, FluidizedBed, GasInlet, Haff, IdealGas, Incline,
     Poiseuille, Relaxation, Release, SJjPhi, Settling, TaylorGreen,
 };
 
@@ -52,6 +52,7 @@ pub fn registry() -> Vec<Box<dyn Check>> {
         Box::new(Settling),
         Box::new(FluidizedBed),
         Box::new(GasInlet),
+        Box::new(IdealGas),
         Box::new(SJjPhi),
         Box::new(Relaxation),
     ]

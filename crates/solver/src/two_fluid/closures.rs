@@ -7,7 +7,7 @@
 
 use rayon::prelude::*;
 
-use runout_closures::{evaluate, CellState, ClosureParams};
+use runout_closures::{evaluate_in_gas, CellState, ClosureParams, Gas};
 use runout_mesh::Grid;
 
 use super::walls::wall_face_velocities;
@@ -49,7 +49,12 @@ pub struct CellClosures {
 impl CellClosures {
     /// The values of one cell from runout-closures' `evaluate` (θ ≥ θ_small expected).
     pub fn evaluate(state: &CellState, params: &ClosureParams) -> Self {
-        let c = evaluate(state, params);
+        Self::evaluate_in_gas(state, params, &params.gas)
+    }
+
+    /// [`CellClosures::evaluate`] in the gas `gas` (a compressible gas's density of the cell).
+    pub fn evaluate_in_gas(state: &CellState, params: &ClosureParams, gas: &Gas) -> Self {
+        let c = evaluate_in_gas(state, params, gas);
         CellClosures {
             p_s: c.stress.p_s,
             p_star: c.stress.p_star,
@@ -86,7 +91,9 @@ pub(super) fn update_closures(
         .zip(coefficients.iter_mut());
     for (((phase, w), c), spec) in phases.zip(specs) {
         wall_strain_rates(grid, spec, phase, w, &mut c.strain);
-        evaluate_cells(grid, (&gas.u, &gas.v), phase, c, &spec.params);
+        // a compressible gas's density per cell; a constant one is the closures' own
+        let rho_g = gas.law().is_compressible().then(|| gas.density());
+        evaluate_cells(grid, (&gas.u, &gas.v), rho_g, phase, c, &spec.params);
         c.keep_strain_traces();
         evaluated += phase.eps().iter().filter(|&&e| e != 0.0).count() as u64;
     }
@@ -116,6 +123,7 @@ fn wall_strain_rates(
 fn evaluate_cells(
     grid: &Grid,
     (u_g, v_g): (&[f64], &[f64]),
+    rho_g: Option<&[f64]>,
     phase: &PhaseState,
     c: &mut PhaseCoefficients,
     params: &ClosureParams,
@@ -151,7 +159,17 @@ fn evaluate_cells(
                     tr_d: st.tr_d,
                     s_ddot_s: st.s_ddot_s,
                 };
-                row.put(i, &CellClosures::evaluate(&state, params));
+                let closures = match rho_g {
+                    None => CellClosures::evaluate(&state, params),
+                    Some(rho) => {
+                        let gas = Gas {
+                            density: rho[k],
+                            ..params.gas
+                        };
+                        CellClosures::evaluate_in_gas(&state, params, &gas)
+                    }
+                };
+                row.put(i, &closures);
             }
         });
 }

@@ -7,6 +7,14 @@
 //! then u_g += d_g (P'_low − P'_high) on every face with d ≠ 0 and P_g += ω_P P'. The solids
 //! velocities are not corrected with P'_g. The pressure is pinned at cell 0 where no side is
 //! open.
+//!
+//! An ideal gas (docs/model.md §1.4) keeps ρ_g inside the balance, with the face's ρ_g from
+//! the upwind cell (the inside cell on the boundary), and its change with the pressure
+//! correction, ρ_g += ω_P (dρ_g/dP) P', on the diagonal (MFIX `SOURCE_PP_G`, the `RO_G0`
+//! undefined branch):
+//!   [Σ_f ρ_g,f ε_g,f d_f A_f + ω_P (dρ_g/dP) εg V/Δt] P'_P − Σ_f ρ_g,f ε_g,f d_f A_f P'_nb = b,
+//!   b = −(ρ_g εg − ρ_g⁰ εg⁰) V/Δt + Σ_f ρ_g,f ε_g,f u_f·n_in A_f;
+//! its pressure level is set by its mass: P' is not pinned. ρ_g follows the corrected P.
 
 use std::time::Instant;
 
@@ -18,6 +26,7 @@ use super::model::Model;
 use super::{lin, solve_keeping_preconditioner, State, TwoFluidError, Workspace};
 use crate::momentum::fixed_row;
 use crate::transport::{face_value, Scheme};
+use runout_closures::GasLaw;
 use runout_linsolve::for_each_row;
 
 /// Step 4: gas pressure correction (module doc); returns the mean |gas imbalance|.
@@ -31,7 +40,11 @@ pub(super) fn pressure_correction(
     let (nx, ny) = (model.grid.nx(), model.grid.ny());
     let g = state.gas();
     let gas = GasContinuity {
-        density: model.gas.density,
+        law: g.law(),
+        rho: g.density(),
+        bulk: g.bulk_density(),
+        bulk_old: &g.old().rho_eps,
+        relax_pressure: model.settings.relax_pressure,
         eps: g.eps(),
         eps_old: &g.old().eps,
         u: &g.u,
@@ -70,13 +83,20 @@ pub(super) fn pressure_correction(
     g.p.iter_mut()
         .zip(&work.p_corr)
         .for_each(|(p, c)| *p += w * c);
+    state.sync_gas_density();
     Ok(total / (nx * ny) as f64)
 }
 
 /// What gas continuity is assembled from.
 struct GasContinuity<'a> {
-    /// ρ_g [kg m⁻³]
-    density: f64,
+    /// the equation of state
+    law: GasLaw,
+    /// ρ_g per cell, ρ_g εg now and at the old time level (an ideal gas's balance)
+    rho: &'a [f64],
+    bulk: &'a [f64],
+    bulk_old: &'a [f64],
+    /// ω_P, the share of P' added to P (an ideal gas's density change)
+    relax_pressure: f64,
     /// εg per cell, now and at the old time level
     eps: &'a [f64],
     eps_old: &'a [f64],
@@ -105,7 +125,19 @@ fn assemble(
 ) -> f64 {
     let (nx, ny) = (grid.nx(), grid.ny());
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
-    let (rho, eps, scheme) = (gas.density, gas.eps, gas.scheme);
+    let (eps, scheme) = (gas.eps, gas.scheme);
+    // a constant density factors out of the balance (MFIX's incompressible form)
+    let constant = match gas.law {
+        GasLaw::Constant(rho) => Some(rho),
+        GasLaw::IdealGas { .. } => None,
+    };
+    let compressibility = gas.law.compressibility();
+    // ρ_g on a face from the upwind cell, the inside cell on the boundary
+    let upwind_rho = |vel: f64, lo: Option<usize>, hi: Option<usize>| match (lo, hi) {
+        (Some(l), Some(h)) => gas.rho[if vel >= 0.0 { l } else { h }],
+        (Some(c), None) | (None, Some(c)) => gas.rho[c],
+        (None, None) => 0.0,
+    };
     // face εg (MFIX `DISCRETIZE(1)`, docs/model.md §4.2): upwind or Superbee between the
     // cells lo and hi, `stride` apart; the inside cell's on the domain boundary
     let face = |vel: f64, lo: Option<usize>, hi: Option<usize>, stride: usize| -> f64 {
@@ -148,20 +180,39 @@ fn assemble(
             let es = inlet(j == 0, &f.south, i, face(v[ks], south, Some(k), nx));
             let en = inlet(j + 1 == ny, &f.north, i, face(v[kn], Some(k), north, nx));
             let volume = dx[i] * dy[j];
-            row.b[i] = rho
-                * (-(eps[k] - gas.eps_old[k]) * volume / dt + ew * u[kw] * dy[j]
-                    - ee * u[ke] * dy[j]
-                    + es * v[ks] * dx[i]
-                    - en * v[kn] * dx[i]);
-            let ce = rho * ee * gas.d_u[ke] * dy[j];
-            let cw = rho * ew * gas.d_u[kw] * dy[j];
-            let cn = rho * en * gas.d_v[kn] * dx[i];
-            let cs = rho * es * gas.d_v[ks] * dx[i];
+            let (ce, cw, cn, cs);
+            if let Some(rho) = constant {
+                row.b[i] = rho
+                    * (-(eps[k] - gas.eps_old[k]) * volume / dt + ew * u[kw] * dy[j]
+                        - ee * u[ke] * dy[j]
+                        + es * v[ks] * dx[i]
+                        - en * v[kn] * dx[i]);
+                ce = rho * ee * gas.d_u[ke] * dy[j];
+                cw = rho * ew * gas.d_u[kw] * dy[j];
+                cn = rho * en * gas.d_v[kn] * dx[i];
+                cs = rho * es * gas.d_v[ks] * dx[i];
+                row.a_p[i] = ce + cw + cn + cs;
+            } else {
+                // face ρ_g εg: the upwind cell's ρ_g times the scheme's εg (module doc)
+                let mw = upwind_rho(u[kw], west, Some(k)) * ew;
+                let me = upwind_rho(u[ke], Some(k), east) * ee;
+                let ms = upwind_rho(v[ks], south, Some(k)) * es;
+                let mn = upwind_rho(v[kn], Some(k), north) * en;
+                row.b[i] = -(gas.bulk[k] - gas.bulk_old[k]) * volume / dt + mw * u[kw] * dy[j]
+                    - me * u[ke] * dy[j]
+                    + ms * v[ks] * dx[i]
+                    - mn * v[kn] * dx[i];
+                ce = me * gas.d_u[ke] * dy[j];
+                cw = mw * gas.d_u[kw] * dy[j];
+                cn = mn * gas.d_v[kn] * dx[i];
+                cs = ms * gas.d_v[ks] * dx[i];
+                row.a_p[i] =
+                    ce + cw + cn + cs + gas.relax_pressure * compressibility * eps[k] * volume / dt;
+            }
             row.a_e[i] = if east.is_some() { ce } else { 0.0 };
             row.a_w[i] = if west.is_some() { cw } else { 0.0 };
             row.a_n[i] = if north.is_some() { cn } else { 0.0 };
             row.a_s[i] = if south.is_some() { cs } else { 0.0 };
-            row.a_p[i] = ce + cw + cn + cs;
         }
     });
     imbalance.copy_from_slice(&a.b);

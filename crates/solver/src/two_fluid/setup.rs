@@ -17,6 +17,7 @@ use super::{
 };
 use crate::single_phase::{Fluid, SideBc};
 use crate::transport::FaceData;
+use runout_closures::GasLaw;
 
 impl TwoFluid {
     /// Sets up the solver: gas at rest, εs = 0, θ = θ_small, zero pressure; the caller fills
@@ -102,6 +103,36 @@ impl TwoFluid {
                 sidewalls: None,
             },
         })
+    }
+}
+
+impl TwoFluid {
+    /// Sets the gas's equation of state (docs/model.md §1.4; a constant density, the one the
+    /// solver is built with, unless this is called). A compressible gas's pressure level is
+    /// set by its mass, so P' is no longer pinned in a closed domain (docs/model.md §4.6).
+    /// Refused: a density of the law that is not finite and positive at the reference
+    /// pressure of 1 bar.
+    pub fn set_gas_law(&mut self, law: GasLaw) -> Result<(), TwoFluidError> {
+        let rho = law.density(1e5);
+        if !(rho.is_finite() && rho > 0.0) {
+            return Err(TwoFluidError::Shape(format!(
+                "gas law {law:?}: density {rho} kg/m³ at 1 bar"
+            )));
+        }
+        if law.is_compressible() && self.workspace.flags.pressure_pinned {
+            let (nx, ny) = (self.model.grid.nx(), self.model.grid.ny());
+            let pp = Pattern::new(nx, ny).map_err(lin("p' pattern"))?;
+            self.workspace
+                .solvers
+                .p
+                .set_pattern(&pp)
+                .map_err(lin("p'"))?;
+            self.workspace.a_p = Stencil5::new(pp);
+            self.workspace.flags.pressure_pinned = false;
+            self.workspace.flags.rebuild_preconditioners = true;
+        }
+        self.state.set_gas_law(law);
+        Ok(())
     }
 }
 

@@ -2,10 +2,13 @@
 //! iterate and at the old time level (docs/model.md §1, §4.9).
 //!
 //! It keeps two invariants (docs/model.md §1.1): εg = 1 − Σεs in every cell, and the bulk
-//! densities ρε of every phase equal to its material density times its volume fraction. The
+//! densities ρε of every phase equal to its material density times its volume fraction; the
+//! gas's material density follows its pressure by its [`GasLaw`] (docs/model.md §1.4). The
 //! volume fractions are private: εs changes only through [`State::set_solids_fraction`],
 //! [`State::update_solids`] and [`State::update_all_solids`], which restore both invariants.
 //! Velocities, θ and P_g are plain public arrays.
+
+use runout_closures::GasLaw;
 
 /// The old time level of the gas (the start of the step, [`State::begin_step`]).
 #[derive(Clone, Debug)]
@@ -25,7 +28,9 @@ pub struct GasOld {
 pub struct GasState {
     eps: Vec<f64>,
     rho_eps: Vec<f64>,
-    density: f64,
+    /// ρ_g per cell, by `law` from `p`
+    rho: Vec<f64>,
+    law: GasLaw,
     old: GasOld,
     /// gas pressure per cell [Pa]
     pub p: Vec<f64>,
@@ -44,6 +49,17 @@ impl GasState {
     /// The bulk density ρ_g εg per cell [kg m⁻³].
     pub fn bulk_density(&self) -> &[f64] {
         &self.rho_eps
+    }
+
+    /// The material density ρ_g per cell [kg m⁻³] (its law at the cell's pressure, as of the
+    /// last pressure update).
+    pub fn density(&self) -> &[f64] {
+        &self.rho
+    }
+
+    /// The equation of state.
+    pub fn law(&self) -> GasLaw {
+        self.law
     }
 
     /// The old time level.
@@ -152,7 +168,8 @@ impl State {
         let gas = GasState {
             eps: vec![1.0; n],
             rho_eps: vec![gas_density; n],
-            density: gas_density,
+            rho: vec![gas_density; n],
+            law: GasLaw::Constant(gas_density),
             old: GasOld {
                 eps: vec![1.0; n],
                 u: vec![0.0; nu],
@@ -267,8 +284,28 @@ impl State {
         out
     }
 
-    /// Stores the current fields as the old time level.
+    /// Sets the gas's equation of state and its density from the present pressure.
+    pub(super) fn set_gas_law(&mut self, law: GasLaw) {
+        self.gas.law = law;
+        self.sync_gas_density();
+    }
+
+    /// ρ_g of every cell from its pressure, and the gas bulk densities (after P changed);
+    /// nothing to do for a constant density.
+    pub(super) fn sync_gas_density(&mut self) {
+        let g = &mut self.gas;
+        if g.law.is_compressible() {
+            for k in 0..g.rho.len() {
+                g.rho[k] = g.law.density(g.p[k]);
+                g.rho_eps[k] = g.rho[k] * g.eps[k];
+            }
+        }
+    }
+
+    /// Stores the current fields as the old time level (the gas density from the pressure
+    /// first, which a caller may have set).
     pub(super) fn begin_step(&mut self) {
+        self.sync_gas_density();
         let g = &mut self.gas;
         g.old.eps.copy_from_slice(&g.eps);
         g.old.u.copy_from_slice(&g.u);
@@ -333,7 +370,7 @@ impl State {
     fn sync_gas_cell(&mut self, k: usize) {
         let g = &mut self.gas;
         g.eps[k] = 1.0 - self.solids.iter().map(|s| s.eps[k]).sum::<f64>();
-        g.rho_eps[k] = g.density * g.eps[k];
+        g.rho_eps[k] = g.rho[k] * g.eps[k];
     }
 }
 

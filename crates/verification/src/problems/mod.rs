@@ -97,6 +97,7 @@ pub mod coulomb_floor;
 pub mod fluidized_bed;
 pub mod gas_inlet;
 pub mod haff_energy;
+pub mod ideal_gas;
 pub mod incline;
 mod lid_driven;
 pub mod paper_material;

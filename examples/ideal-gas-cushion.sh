@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# The paper's air-cushion cases (S-JJ-phi, φ = 1 and 0.1) with air as an ideal gas beside the
+# shipped constant density (issue 60 item 1; docs/model.md §1.4): a copy of
+# cases/sensitivity/base.ron whose gas is `IdealGas(molar_mass: 0.028965, temperature:
+# 294.15)` (1.2000 kg/m³ at 101 325 Pa, the shipped density), both run by the same binary,
+# then the station numbers of `runout post` side by side.
+# usage: examples/ideal-gas-cushion.sh OUT [FIDELITY]   (FIDELITY: coarse (default) or wall)
+#   coarse: four runs of 250 × 23 cells, minutes each on one niced thread
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+out=$(mkdir -p "$1" && cd "$1" && pwd)
+fidelity=${2:-coarse}
+runout=${RUNOUT:-"$root/target/release/runout"}
+mkdir -p "$out/cases"
+sed 's/^    gas: (density: 1.2, viscosity: 1.8e-5, reference_pressure: 101325.0),$/    gas: (density: 1.2, viscosity: 1.8e-5, reference_pressure: 101325.0, law: IdealGas(molar_mass: 0.028965, temperature: 294.15)),/' \
+  "$root/cases/sensitivity/base.ron" > "$out/cases/base-ideal.ron"
+grep -q 'law: IdealGas' "$out/cases/base-ideal.ron" || { echo "base.ron's gas line changed: edit this script" >&2; exit 1; }
+cp "$root/cases/sensitivity/base.ron" "$out/cases/base.ron"
+for law in constant ideal; do
+  base=base.ron; [ "$law" = ideal ] && base=base-ideal.ron
+  cat > "$out/cases/S-JJ-phi-$law.ron" <<RON
+Sweep(
+    name: "S-JJ-phi-$law",
+    base: "$base",
+    set: [SolidsWalls([JohnsonJackson(specularity: 0.1, wall_restitution: 0.7, wall_friction_angle: 11.0)]), Diameter([5e-4])],
+    vary: [Specularity([1.0, 0.1])],
+)
+RON
+done
+RAYON_NUM_THREADS=1 nice -n 19 "$runout" sweep "$out/cases" --fidelity "$fidelity" --jobs 1 --out "$out"
+printf '| case | gas | air cushion | cushion thickness [m] | floor εs | max u_s [m/s] | front at the station [m] | steps | outer iterations | wall time [s] |\n|---|---|---|---|---|---|---|---|---|---|\n'
+for phi in 1 0.1; do
+  for law in constant ideal; do
+    dir="$out/runs/S-JJ-phi-${law}_phi=$phi/$fidelity"
+    "$runout" post "$dir" 2>/dev/null | python3 -c "
+import json,sys
+m=json.load(sys.stdin); s=m.get('summary',{}); st=m.get('station',m)
+def g(*keys):
+    for d in (m, st, s):
+        for k in keys:
+            if isinstance(d, dict) and k in d: return d[k]
+    return float('nan')
+print('| φ = $phi | $law | {} | {:.4f} | {:.4f} | {:.3f} | {:.3f} | {} | {} | {:.0f} |'.format(
+    g('air_cushion'), g('cushion_thickness_m','cushion_thickness'), g('floor_eps_s'), g('max_u_s'),
+    g('front_x_station','front_x'), g('steps'), g('outer_iterations'), g('wall_time_s','wall_time')))"
+  done
+done
