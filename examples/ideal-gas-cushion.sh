@@ -28,20 +28,15 @@ Sweep(
 RON
 done
 RAYON_NUM_THREADS=1 nice -n 19 "$runout" sweep "$out/cases" --fidelity "$fidelity" --jobs 1 --out "$out"
-printf '| case | gas | air cushion | cushion thickness [m] | floor εs | max u_s [m/s] | front at the station [m] | steps | outer iterations | wall time [s] |\n|---|---|---|---|---|---|---|---|---|---|\n'
+printf '| case | gas | air cushion | cushion thickness [m] | floor εs | flow thickness [m] | max u_s [m/s] | front at the station [m] | mean u_s there [m/s] | steps | outer iterations | wall time [s] |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n'
 for phi in 1 0.1; do
   for law in constant ideal; do
     dir="$out/runs/S-JJ-phi-${law}_phi=$phi/$fidelity"
     "$runout" post "$dir" 2>/dev/null | python3 -c "
-import json,sys
-m=json.load(sys.stdin); s=m.get('summary',{}); st=m.get('station',m)
-def g(*keys):
-    for d in (m, st, s):
-        for k in keys:
-            if isinstance(d, dict) and k in d: return d[k]
-    return float('nan')
-print('| φ = $phi | $law | {} | {:.4f} | {:.4f} | {:.3f} | {:.3f} | {} | {} | {:.0f} |'.format(
-    g('air_cushion'), g('cushion_thickness_m','cushion_thickness'), g('floor_eps_s'), g('max_u_s'),
-    g('front_x_station','front_x'), g('steps'), g('outer_iterations'), g('wall_time_s','wall_time')))"
+import json, sys
+m = json.load(sys.stdin); f = m['flow']; s = m['summary']
+print('| φ = $phi | $law | {} | {:.4f} | {:.6f} | {:.4f} | {:.6f} | {:.4f} | {:.6f} | {} | {} | {:.0f} |'.format(
+    f['air_cushion'], f['cushion_thickness'], f['floor_eps_s'], f['flow_thickness'], f['max_u_s'],
+    m['front_x'], m['mean_u_s'], s['steps'], s['outer_iterations'], s['wall_time']))"
   done
 done
