@@ -20,7 +20,7 @@ use runout_post::folder::read_summary;
 
 use super::plots::{draw, Mark, Panel, Series};
 
-/// The study's folder under cases/ (not part of the paper's matrix, `crate::sweep`).
+/// The study's folder under cases/ (not part of the paper's matrix, [`crate::matrix`]).
 pub const FOOT_DIR: &str = "foot";
 /// The study's case files.
 const CASES: &str = "cases/foot";
