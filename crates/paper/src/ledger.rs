@@ -1,5 +1,5 @@
-//! The metrics ledger: docs/reports/results/ledger/<fidelity>.csv, committed, one row per case of
-//! every finished run the report has read ([`RunRecord`], columns of [`super::row`]),
+//! The metrics ledger: `docs/reports/results/ledger/<fidelity>.csv`, committed, one row per case of
+//! every finished run the report has read (`RunRecord`, the columns of `row.rs`),
 //! sorted by case. Run folders do not survive a change of machine; the ledger does, so the
 //! findings of a fidelity can be judged from runs made in earlier sessions, on a cluster or
 //! by another command (`cargo xtask ledger add RUN_DIR...`).

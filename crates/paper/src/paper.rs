@@ -1,6 +1,6 @@
 //! What the paper reports: the numbers of shared/docs/cases.md "What the paper reports"
 //! (paper §§2.2–4), a table of data; runout's reading of each is [`super::reading`], the
-//! case sets of the paper's figures [`super::figure_sets`].
+//! case sets of the paper's figures `figure_sets.rs`.
 
 /// Threshold h_w^u of air-cushion formation drawn in paper Fig. 9 [1/m].
 pub const CUSHION_LIMIT_H_U: f64 = 70.0;

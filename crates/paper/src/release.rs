@@ -72,7 +72,7 @@ pub fn arrival_time(front: &[(f64, f64)], x: f64) -> Option<f64> {
 }
 
 /// The front at `t`: interpolated between the samples around it, or the last sample if it
-/// is at most [`LAST_SAMPLE_GAP`] before `t` (a run ends between two bulk samples).
+/// is at most `LAST_SAMPLE_GAP` before `t` (a run ends between two bulk samples).
 pub fn front_at(front: &[(f64, f64)], t: f64) -> Option<f64> {
     if let Some(k) = front.iter().position(|&(s, _)| s >= t) {
         if k == 0 {
@@ -224,7 +224,7 @@ pub fn table(rows: &[ReleaseRow]) -> String {
 
 /// The station numbers of the release rows, one CSV per fidelity beside the page
 /// (`reports/release/release_<fidelity>.csv`; an empty field where the row has no value),
-/// read by the results report's explanation of the findings ([`super::explain`]).
+/// read by the results report's explanation of the findings (`explain.rs`).
 pub const CSV_COLUMNS: [&str; 7] = [
     "case",
     "sweep",
