@@ -19,7 +19,7 @@
 //!   one-factor families ([`runout_study::sensitivity`]) as a table, a heat map and a CSV;
 //! - `ledger add RUN_DIR...`: records run folders made elsewhere in the metrics ledger
 //!   docs/reports/results/ledger/<fidelity>.csv, which the report judges the findings from where a
-//!   case has no run folder ([`report::ledger`]);
+//!   case has no run folder ([`runout_paper::ledger`]);
 //! - `error-time`: the discretisation error of the paper's station and probe numbers (with
 //!   Roache's GCI), the station profiles, gate speeds and bulk histories against CPU time
 //!   over a ladder of grids ([`error_time`]), in docs/reports/error-time.md;
@@ -37,16 +37,15 @@ mod collapse;
 mod error_time;
 mod figure;
 mod mfix_slope;
-mod report;
-mod solver_stamp;
 mod stability;
-mod sweep;
 mod verify;
 
+/// The seed paper's reproduction: its matrix, sweep, report and ledger.
+use runout_paper::{foot, ledger, release};
 /// The flow metrics live in the post-processing library (`runout post` reads the same).
 use runout_post::metrics;
 /// The study engine: sweeps, calibration and sensitivity (`runout sweep` and friends).
-use runout_study::{calibrate, jobs};
+use runout_study::{calibrate, jobs, sweep};
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -494,7 +493,7 @@ fn sweep_task(
     } else {
         root().join(cases)
     };
-    sweep::sweep(&root(), &dir, study.as_deref(), opts)
+    runout_paper::matrix::sweep(&root(), &dir, study.as_deref(), opts)
 }
 
 /// `cargo xtask error-time`: the comma-separated lists parsed into the study's options.
@@ -575,9 +574,9 @@ fn report_task(what: &str, fidelity: Option<&str>) -> Result<()> {
     let fidelity = fidelity.map(parse_fidelity).transpose()?;
     match what {
         "analytic" => analytic::report(&root()),
-        "results" => report::report(&root(), fidelity),
-        "release" => report::release::report(&root(), fidelity),
-        "foot" => report::foot::report(&root(), fidelity),
+        "results" => runout_paper::report(&root(), fidelity),
+        "release" => release::report(&root(), fidelity),
+        "foot" => foot::report(&root(), fidelity),
         other => bail!("unknown report `{other}` (known: results, analytic, release, foot)"),
     }
 }
@@ -590,12 +589,12 @@ fn ledger_task(action: LedgerAction) -> Result<()> {
         fidelity,
         solver,
     } = action;
-    let opts = report::ledger::AddOptions {
+    let opts = ledger::AddOptions {
         case,
         fidelity: fidelity.as_deref().map(parse_fidelity).transpose()?,
         solver,
     };
-    report::ledger::add(
+    ledger::add(
         &root().join("docs/reports"),
         &root().join("cases"),
         &run_dirs,

@@ -22,10 +22,9 @@ use runout_output::{RunStatus, RunSummary};
 use runout_run::store::{self, Request, Reuse};
 use runout_run::RunError;
 
-use crate::sweep::{csv_field, matrix, progress_style};
-
-/// The folder of the stability cases below the case directory (the sweep skips it).
-pub const STABILITY_DIR: &str = "stability";
+use runout_paper::date::civil_date;
+use runout_paper::matrix::STABILITY_DIR;
+use runout_study::sweep::{csv_field, matrix, progress_style};
 
 /// Options of a stability run.
 pub struct StabilityOptions {
@@ -428,20 +427,6 @@ pub fn md_row(row: &Row) -> String {
         num(row.max_eps_s, |v| format!("{v:.4}")),
         row.wall_time
     )
-}
-
-/// The civil date (year, month, day) of a day count since 1970-01-01 (H. Hinnant's
-/// `civil_from_days`).
-pub fn civil_date(days: i64) -> (i64, u32, u32) {
-    let z = days + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z.rem_euclid(146_097);
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let day = (doy - (153 * mp + 2) / 5 + 1) as u32;
-    let month = if mp < 10 { mp + 3 } else { mp - 9 } as u32;
-    (yoe + era * 400 + i64::from(month <= 2), month, day)
 }
 
 /// Today's date, YYYY-MM-DD (UTC).

@@ -44,9 +44,6 @@ use runout_verification::references::{
     ScalingLaw, LAGREE_CONTINUUM, LAJEUNESSE, LAJEUNESSE_HEIGHT,
 };
 
-/// The folder of the collapse cases under cases/ (left out of `cargo xtask sweep`).
-pub const COLLAPSE_DIR: &str = "collapse";
-
 /// The four columns, smallest aspect ratio first.
 const CASE_FILES: [&str; 4] = [
     "cases/collapse/C-a0.5.ron",

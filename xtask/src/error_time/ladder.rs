@@ -130,7 +130,7 @@ mod tests {
     use runout_case::{validate_case, Fidelity};
 
     use super::*;
-    use crate::sweep::matrix;
+    use runout_study::sweep::matrix;
 
     #[test]
     fn levels_use_the_presets_and_the_refined_paper_grid() {

@@ -94,7 +94,7 @@ use self::quantity::{quantities, LevelData, Quantity};
 use self::run::{run_level, Run};
 use self::station_errors::station_gci;
 use crate::stability::today;
-use crate::sweep::matrix;
+use runout_study::sweep::matrix;
 
 /// The cases of the error-against-time study: family S on the Johnson–Jackson φ = 0.1 floor
 /// and on the Jenkins floor with d = 0.5 mm (issue 45).

@@ -184,14 +184,6 @@ fn the_page_holds_the_command_the_date_every_row_and_every_message() {
     assert!(md.contains("εs,max = 0.65 in every case"), "{md}");
 }
 
-#[test]
-fn civil_dates_from_day_counts() {
-    assert_eq!(civil_date(0), (1970, 1, 1));
-    assert_eq!(civil_date(11_016), (2000, 2, 29));
-    assert_eq!(civil_date(19_723), (2024, 1, 1));
-    assert_eq!(civil_date(-1), (1969, 12, 31));
-}
-
 /// CI smoke: one stiff case (Δt_max ten times too large, started at Δt_max) at smoke
 /// fidelity, through the same runner as the table; about a second.
 #[test]

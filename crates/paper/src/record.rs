@@ -18,8 +18,8 @@ use runout_output::RunStatus;
 use runout_post::case_data::CaseData;
 use runout_post::metrics::FLOW_THRESHOLD;
 
+use crate::date;
 use crate::solver_stamp::SOLVER_FILE;
-use crate::stability;
 
 /// The solver of a run whose folder does not record it.
 pub const UNKNOWN_SOLVER: &str = "unknown";
@@ -38,7 +38,7 @@ pub enum Source {
     Ledger,
 }
 
-/// The station profile's scalars (crate::metrics definitions).
+/// The station profile's scalars (runout_post::metrics definitions).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Station {
     /// largest εs of the profile [-]
@@ -159,9 +159,9 @@ pub fn solver_of(dir: &Path) -> String {
         .unwrap_or_else(|| UNKNOWN_SOLVER.into())
 }
 
-/// A day as YYYY-MM-DD (UTC), from days since 1970-01-01 ([`stability::civil_date`]).
+/// A day as YYYY-MM-DD (UTC), from days since 1970-01-01 ([`date::civil_date`]).
 fn civil_date(days: i64) -> String {
-    let (year, month, day) = stability::civil_date(days);
+    let (year, month, day) = date::civil_date(days);
     format!("{year:04}-{month:02}-{day:02}")
 }
 

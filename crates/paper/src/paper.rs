@@ -1,6 +1,6 @@
 //! What the paper reports: the numbers of shared/docs/cases.md "What the paper reports"
 //! (paper §§2.2–4), a table of data; runout's reading of each is [`super::reading`], the
-//! case sets of the paper's figures [`super::figure_sets`].
+//! case sets of the paper's figures `figure_sets.rs`.
 
 /// Threshold h_w^u of air-cushion formation drawn in paper Fig. 9 [1/m].
 pub const CUSHION_LIMIT_H_U: f64 = 70.0;
@@ -12,7 +12,7 @@ pub const CUSHION_LIMIT_H_U: f64 = 70.0;
 /// A quantity the paper reports for one case.
 #[derive(Clone, Copy, Debug)]
 pub enum Quantity {
-    /// εs at the floor below 0.8 × the profile's peak (crate::metrics)
+    /// εs at the floor below 0.8 × the profile's peak (runout_post::metrics)
     AirCushion,
     /// εs of the floor cell at the station
     FloorEpsS,
@@ -268,8 +268,8 @@ mod tests {
 
     #[test]
     fn every_case_the_report_names_is_in_the_matrix() {
-        let cases = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases");
-        let matrix = crate::sweep::matrix(&cases).expect("the case matrix loads");
+        let cases = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../cases");
+        let matrix = runout_study::sweep::matrix(&cases).expect("the case matrix loads");
         let known: Vec<&str> = matrix.runs.iter().map(|r| r.case.name.as_str()).collect();
         for name in named_cases() {
             assert!(known.contains(&name), "`{name}` is not a case of cases/");

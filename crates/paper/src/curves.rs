@@ -12,8 +12,8 @@ use super::coverage::{coverage, figure_section, legend, remove_stale};
 use super::figure_sets::{ProfileFigure, FLUME, PROBE_CURVES};
 use super::paper::CUSHION_LIMIT_H_U;
 use super::plots::{self, Mark, Panel, Series};
-use crate::metrics::PROFILE_TIME;
 use runout_post::case_data::Cases;
+use runout_post::metrics::PROFILE_TIME;
 use runout_post::profile::Profile;
 
 /// Fraction of a profile's peak εs that still counts as solids when sizing the plot.

@@ -18,8 +18,8 @@ use runout_case::{Fidelity, SourcedCase};
 
 use super::plots::{draw, Mark, Panel, Series};
 use super::reading::flow_at_station;
-use crate::metrics::PROFILE_TIME;
 use runout_post::case_data::CaseData;
+use runout_post::metrics::PROFILE_TIME;
 use runout_post::table::Table;
 
 /// The study's name in its sweep files.
@@ -72,7 +72,7 @@ pub fn arrival_time(front: &[(f64, f64)], x: f64) -> Option<f64> {
 }
 
 /// The front at `t`: interpolated between the samples around it, or the last sample if it
-/// is at most [`LAST_SAMPLE_GAP`] before `t` (a run ends between two bulk samples).
+/// is at most `LAST_SAMPLE_GAP` before `t` (a run ends between two bulk samples).
 pub fn front_at(front: &[(f64, f64)], t: f64) -> Option<f64> {
     if let Some(k) = front.iter().position(|&(s, _)| s >= t) {
         if k == 0 {
@@ -122,7 +122,7 @@ pub fn release_row(runs: &Path, c: &SourcedCase, requested: Option<Fidelity>) ->
     let station = case.monitors.profiles.first().map_or(f64::NAN, |p| p.x);
     let data = CaseData::load(runs, &case.name, requested);
     // the case's own, so that a case without a run has it too
-    let station_time = crate::metrics::station_time(Some(&case.clone().with_start_clock()));
+    let station_time = runout_post::metrics::station_time(Some(&case.clone().with_start_clock()));
     let front_series = data
         .bulk
         .as_ref()
@@ -224,7 +224,7 @@ pub fn table(rows: &[ReleaseRow]) -> String {
 
 /// The station numbers of the release rows, one CSV per fidelity beside the page
 /// (`reports/release/release_<fidelity>.csv`; an empty field where the row has no value),
-/// read by the results report's explanation of the findings ([`super::explain`]).
+/// read by the results report's explanation of the findings (`explain.rs`).
 pub const CSV_COLUMNS: [&str; 7] = [
     "case",
     "sweep",
@@ -262,7 +262,7 @@ pub fn csv_text(rows: &[ReleaseRow]) -> String {
 /// Writes the page and its figures (one table and one figure per fidelity that has runs, or
 /// the requested one); returns the page.
 pub fn write(root: &Path, requested: Option<Fidelity>) -> Result<String> {
-    let matrix = crate::sweep::study_matrix(&root.join("cases"), STUDY)?;
+    let matrix = runout_study::sweep::study_matrix(&root.join("cases"), STUDY)?;
     let runs = root.join("runs");
     let docs = root.join("docs");
     let (lo, hi) = JENKINS_MAX_U_S;
@@ -394,8 +394,8 @@ mod tests {
 
     #[test]
     fn every_release_case_has_a_row_that_says_why_it_is_missing() {
-        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
-        let matrix = crate::sweep::study_matrix(&root.join("cases"), STUDY).unwrap();
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+        let matrix = runout_study::sweep::study_matrix(&root.join("cases"), STUDY).unwrap();
         assert_eq!(matrix.runs.len(), 36);
         let empty = std::env::temp_dir().join(format!("runout-release-{}", std::process::id()));
         let named = |name: &str| {

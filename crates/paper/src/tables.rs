@@ -11,7 +11,7 @@ use super::paper::PAPER_NUMBERS;
 use super::reading::reading;
 use super::record::{RunRecord, Source};
 use super::records::Records;
-use crate::metrics::mse_vs_described;
+use runout_post::metrics::mse_vs_described;
 
 /// A markdown table cell: `|` escaped.
 pub(super) fn cell(s: &str) -> String {

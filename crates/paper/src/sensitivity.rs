@@ -15,7 +15,7 @@ use super::plots::{self, HeatCell, Heatmap};
 use super::record::RunRecord;
 use super::records::Records;
 use super::{cell, FIGURE_DIR};
-use crate::metrics::PROFILE_TIME;
+use runout_post::metrics::PROFILE_TIME;
 use runout_study::families::Family;
 use runout_study::sensitivity::{local, summary, Elasticity, Method, Summary};
 use runout_study::sweep::{csv_field, Matrix};
@@ -500,12 +500,12 @@ mod tests {
     use runout_post::fixture::*;
 
     fn cases_dir() -> std::path::PathBuf {
-        Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases")
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../cases")
     }
 
     #[test]
     fn the_families_of_family_s_are_found_and_name_cases_of_the_matrix() {
-        let matrix = crate::sweep::paper_matrix(&cases_dir()).unwrap();
+        let matrix = crate::matrix::paper_matrix(&cases_dir()).unwrap();
         let fams = families(&matrix, &cases_dir()).unwrap();
         let labels: Vec<String> = fams.iter().map(Family::label).collect();
         for expected in [
@@ -567,7 +567,7 @@ mod tests {
     fn the_section_recovers_a_made_up_power_law_and_names_what_is_missing() {
         let tmp = TempDir::new("sensitivity");
         let runs = tmp.0.join("runs");
-        let matrix = crate::sweep::paper_matrix(&cases_dir()).unwrap();
+        let matrix = crate::matrix::paper_matrix(&cases_dir()).unwrap();
         let base = matrix
             .runs
             .iter()

@@ -261,7 +261,7 @@ pub fn section(
     md.push_str("## Summary: the paper's findings in runout's runs\n\n");
     let _ = writeln!(md, "{}\n", summary_line(&judged));
     md.push_str(
-        "How each is judged (xtask/src/report/findings.rs): an air cushion yes/no as the \
+        "How each is judged (crates/paper/src/findings.rs): an air cushion yes/no as the \
          station profile shows it (floor εs below 0.8 × the profile's peak); a trend, \
          ranking or threshold by comparing runout's own values along the sweep; a number by \
          runout's value as shown, inside the paper's range or within 20 % of its single \
@@ -284,7 +284,7 @@ pub fn section(
     if !not.is_empty() {
         md.push_str(
             "**Not reproduced**, with what runout's runs show instead and, after the arrow, \
-             what moves it (issue 45, item 4; xtask/src/report/explain.rs): the grid (the \
+             what moves it (issue 45, item 4; crates/paper/src/explain.rs): the grid (the \
              error ladder of docs/reports/error-time.md: at coarse its coarse-to-paper change, at \
              the paper grid its GCI), the release (the nine blocks of the release study of \
              the case's floor, docs/studies/impact.md §4, at coarse), and what is left beyond both. \

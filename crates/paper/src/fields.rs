@@ -16,9 +16,9 @@ use runout_post::fields::{field_files, nearest};
 
 use super::coverage::{figure_section, legend, remove_stale, Coverage};
 use super::figure_sets::FieldFigure;
-use crate::figure::plot_error;
 use runout_post::case_data::Cases;
 use runout_post::chosen::Run;
+use runout_study::plots::plot_error;
 
 /// Along-slope window of the maps [m]: from behind the release to past the furthest front.
 pub const WINDOW_X: (f64, f64) = (5.5, 15.0);

@@ -1,22 +1,23 @@
-//! `cargo xtask sweep`: the paper's case matrix, expanded from cases/ (except the stiff
-//! cases of cases/stability/, which `cargo xtask stability` runs, the column collapse
-//! of cases/collapse/, which `cargo xtask verify collapse` runs, and the slide onto a flat
-//! run-out of cases/foot/, which `runout sweep cases/foot` runs), run in parallel by the
-//! study engine ([`runout_study::sweep`]) into the workspace's `runs/` and
-//! `results/summary.csv`; each run folder it finished records the checkout's `git describe`
-//! ([`crate::solver_stamp`]).
+//! The paper's case matrix, expanded from cases/ (except the stiff cases of cases/stability/,
+//! which `cargo xtask stability` runs, the column collapse of cases/collapse/, which `cargo
+//! xtask verify collapse` runs, and the slide onto a flat run-out of cases/foot/, which
+//! `runout sweep cases/foot` runs), and its sweep: run in parallel by the study engine
+//! ([`runout_study::sweep`]) into the workspace's `runs/` and `results/summary.csv`; each
+//! run folder it finished records the checkout's `git describe` ([`crate::solver_stamp`]).
 
 use std::path::Path;
 
 use anyhow::Result;
+use runout_study::sweep::{matrix, study_matrix, Matrix, SweepOptions};
 
-use crate::collapse::COLLAPSE_DIR;
-use crate::report::foot::FOOT_DIR;
-use crate::stability::STABILITY_DIR;
+use crate::foot::FOOT_DIR;
+use crate::solver_stamp::{git_describe, stamp_finished};
 
-pub use runout_study::sweep::{
-    csv_field, matrix, parse_shard, progress_style, study_matrix, Matrix, SweepOptions,
-};
+/// The folder of the stability cases below the case directory (`cargo xtask stability`).
+pub const STABILITY_DIR: &str = "stability";
+
+/// The folder of the collapse cases under cases/ (`cargo xtask verify collapse`).
+pub const COLLAPSE_DIR: &str = "collapse";
 
 /// The folder under cases/ of the slides down beds of several slopes (issue 57), which are
 /// not the paper's.
@@ -53,11 +54,11 @@ pub fn sweep(root: &Path, cases_dir: &Path, study: Option<&str>, opts: SweepOpti
         ..opts
     };
     let started = std::time::SystemTime::now();
-    let describe = crate::solver_stamp::git_describe(root);
+    let describe = git_describe(root);
     let result = runout_study::sweep::sweep(root, &matrix, &opts);
     if let (Some(d), false) = (describe, opts.list) {
         let names = matrix.runs.iter().map(|r| r.case.name.as_str());
-        crate::solver_stamp::stamp_finished(&root.join("runs"), names, opts.fidelity, started, &d);
+        stamp_finished(&root.join("runs"), names, opts.fidelity, started, &d);
     }
     result
 }

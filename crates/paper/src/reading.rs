@@ -7,7 +7,7 @@ use runout_post::case_data::CaseData;
 use super::paper::Quantity;
 use super::record::RunRecord;
 use super::records::Records;
-use crate::metrics::{mse_vs_described, FlowMetrics, FLOW_THRESHOLD};
+use runout_post::metrics::{mse_vs_described, FlowMetrics, FLOW_THRESHOLD};
 
 /// The metrics of a case's station profile; a profile without flowing material (which
 /// would read as "no cushion, zero thickness") says that there is no flow instead.

@@ -1,5 +1,5 @@
-//! The metrics ledger: docs/reports/results/ledger/<fidelity>.csv, committed, one row per case of
-//! every finished run the report has read ([`RunRecord`], columns of [`super::row`]),
+//! The metrics ledger: `docs/reports/results/ledger/<fidelity>.csv`, committed, one row per case of
+//! every finished run the report has read (`RunRecord`, the columns of `row.rs`),
 //! sorted by case. Run folders do not survive a change of machine; the ledger does, so the
 //! findings of a fidelity can be judged from runs made in earlier sessions, on a cluster or
 //! by another command (`cargo xtask ledger add RUN_DIR...`).
@@ -160,7 +160,7 @@ fn record_of(dir: &Path, opts: &AddOptions) -> Result<RunRecord> {
 /// The grid of `case` at `f` in the paper's matrix under `cases`; `None` if it is not a
 /// case of the matrix.
 fn matrix_grid(cases: &Path, case: &str, f: Fidelity) -> Result<Option<(usize, usize)>> {
-    let matrix = crate::sweep::paper_matrix(cases)?;
+    let matrix = crate::matrix::paper_matrix(cases)?;
     let Some(run) = matrix.runs.iter().find(|r| r.case.name == case) else {
         return Ok(None);
     };
@@ -276,7 +276,7 @@ mod tests {
 
         // a folder elsewhere, with its solver stated; smoke is refused, and so is a run
         // whose grid is not its case's at the fidelity it claims
-        let cases = Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases");
+        let cases = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../cases");
         let elsewhere = tmp.0.join("cluster");
         write_run(
             &elsewhere,

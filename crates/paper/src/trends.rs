@@ -109,7 +109,7 @@ fn probe_h_u(records: &Records, case: &str) -> Result<f64, String> {
 }
 
 fn flume_mse(r: &RunRecord, described: &[(usize, f64)]) -> Result<f64, String> {
-    crate::metrics::mse_vs_described(r.gates.as_ref().map_err(Clone::clone)?, described)
+    runout_post::metrics::mse_vs_described(r.gates.as_ref().map_err(Clone::clone)?, described)
         .map(|(e, _)| e)
         .ok_or_else(|| r.no_gate_reached())
 }

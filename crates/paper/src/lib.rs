@@ -1,11 +1,17 @@
-//! `cargo xtask report [results] [--fidelity F]`: the sweep's runs beside the paper (issue 8).
+//! The seed paper's reproduction, built on runout's public libraries (study, post, case,
+//! output): the paper's case matrix and its sweep ([`matrix`]), and the report of its runs
+//! beside the paper (`cargo xtask report [results] [--fidelity F]`, issue 8) with its
+//! findings, error bars, explanations, figures and the metrics ledger ([`ledger`]); beside it
+//! the release study ([`release`]) and the slide onto a flat run-out ([`foot`]). A research
+//! group builds its own study on runout the same way.
 //!
-//! Writes `docs/reports/results.md` and, in `docs/reports/results/`, SVG figures of the quantities and axes
-//! of paper Figs. 4, 5, 7, 8, 9, 12, 13 and 14 (Fig. 1 is `cargo xtask report analytic`,
-//! linked), a table of every number the paper reports beside runout's, the flume's gate
-//! speeds with their mean square error against the described speeds, the family-M
-//! cross-check against MFIX, and the elasticities of the one-factor families of family S
-//! (issue 23, [`runout_study::sensitivity`]) as a table and a heat map.
+//! The report ([`report`]) writes `docs/reports/results.md` and, in `docs/reports/results/`,
+//! SVG figures of the quantities and axes of paper Figs. 4, 5, 7, 8, 9, 12, 13 and 14 (Fig. 1
+//! is `cargo xtask report analytic`, linked), a table of every number the paper reports
+//! beside runout's, the flume's gate speeds with their mean square error against the
+//! described speeds, the family-M cross-check against MFIX, and the elasticities of the
+//! one-factor families of family S (issue 23, [`runout_study::sensitivity`]) as a table and a
+//! heat map.
 //!
 //! Each case is read from `runs/<case>/<fidelity>/` (written by `cargo xtask sweep` or
 //! `runout run`): by default the best fidelity with a finished run (paper, then coarse, then
@@ -13,8 +19,11 @@
 //! before the paper's time, a monitor file the run does not have) is said in the figure's
 //! caption and in the tables; it is never an error.
 
+#![deny(missing_docs)]
+
 mod coverage;
 mod curves;
+pub mod date;
 mod error_bars;
 mod explain;
 mod fields;
@@ -22,16 +31,18 @@ mod figure_sets;
 mod findings;
 pub mod foot;
 pub mod ledger;
-pub(crate) mod paper;
+pub mod matrix;
+pub mod paper;
 /// The SVG panels, drawn by the study engine's plots.
 use runout_study::plots;
-pub(crate) mod reading;
+pub mod reading;
 mod record;
-pub(crate) mod records;
+pub mod records;
 pub mod release;
 mod row;
 mod sensitivity;
 mod side_by_side;
+pub mod solver_stamp;
 mod tables;
 mod trends;
 
@@ -73,7 +84,7 @@ pub struct ReportPaths {
 
 /// Writes results.md and its figures; returns the markdown.
 pub fn write_report(paths: &ReportPaths, requested: Option<Fidelity>) -> Result<String> {
-    let matrix = crate::sweep::paper_matrix(&paths.cases)?;
+    let matrix = crate::matrix::paper_matrix(&paths.cases)?;
     let names: Vec<String> = matrix.runs.iter().map(|r| r.case.name.clone()).collect();
     let store = Store::load(&paths.runs, &names);
     let mut ledger = Ledger::read(&paths.reports)?;
@@ -237,7 +248,7 @@ mod tests {
     fn paths(tmp: &TempDir) -> ReportPaths {
         ReportPaths {
             runs: tmp.0.join("runs"),
-            cases: Path::new(env!("CARGO_MANIFEST_DIR")).join("../cases"),
+            cases: Path::new(env!("CARGO_MANIFEST_DIR")).join("../../cases"),
             reports: tmp.0.join("docs/reports"),
         }
     }

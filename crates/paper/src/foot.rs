@@ -1,7 +1,7 @@
 //! `cargo xtask report foot [--fidelity F]`: the paper's slide run out onto a flat floor
 //! (issue 43 item 5, docs/studies/foot.md).
 //!
-//! Reads the runs of the sweeps under cases/foot/ from runs/foot/runs/<case>/<fidelity>/
+//! Reads the runs of the sweeps under cases/foot/ from `runs/foot/runs/<case>/<fidelity>/`
 //! (`runout sweep cases/foot --fidelity F --out runs/foot`) and writes
 //! `docs/reports/foot.md`: one table per fidelity that has runs, each floor condition with
 //! μ(I) and with Princeton — whether and when the run ended itself at rest, the deposit of
@@ -20,7 +20,7 @@ use runout_post::folder::read_summary;
 
 use super::plots::{draw, Mark, Panel, Series};
 
-/// The study's folder under cases/ (not part of the paper's matrix, `crate::sweep`).
+/// The study's folder under cases/ (not part of the paper's matrix, [`crate::matrix`]).
 pub const FOOT_DIR: &str = "foot";
 /// The study's case files.
 const CASES: &str = "cases/foot";
