@@ -27,7 +27,10 @@ Sweep(
 )
 RON
 done
-RAYON_NUM_THREADS=1 nice -n 19 "$runout" sweep "$out/cases" --fidelity "$fidelity" --jobs 1 --out "$out"
+# the two sweep files only (the folder would run its bases too)
+for law in constant ideal; do
+  RAYON_NUM_THREADS=1 nice -n 19 "$runout" sweep "$out/cases/S-JJ-phi-$law.ron" --fidelity "$fidelity" --jobs 1 --out "$out"
+done
 printf '| case | gas | air cushion | cushion thickness [m] | floor εs | flow thickness [m] | max u_s [m/s] | front at the station [m] | mean u_s there [m/s] | steps | outer iterations | wall time [s] |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n'
 for phi in 1 0.1; do
   for law in constant ideal; do
