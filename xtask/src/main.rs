@@ -35,7 +35,6 @@ mod case_reference;
 mod chute;
 mod collapse;
 mod error_time;
-mod figure;
 mod mfix_slope;
 mod stability;
 mod verify;
