@@ -13,7 +13,7 @@ use std::fmt::Write as _;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
-use std::time::{Instant, SystemTime, UNIX_EPOCH};
+use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
 use indicatif::{MultiProgress, ProgressBar};
@@ -22,7 +22,7 @@ use runout_output::{RunStatus, RunSummary};
 use runout_run::store::{self, Request, Reuse};
 use runout_run::RunError;
 
-use runout_paper::date::civil_date;
+use runout_paper::date::today;
 use runout_paper::matrix::STABILITY_DIR;
 use runout_study::sweep::{csv_field, matrix, progress_style};
 
@@ -427,15 +427,6 @@ pub fn md_row(row: &Row) -> String {
         num(row.max_eps_s, |v| format!("{v:.4}")),
         row.wall_time
     )
-}
-
-/// Today's date, YYYY-MM-DD (UTC).
-pub fn today() -> String {
-    let days = SystemTime::now()
-        .duration_since(UNIX_EPOCH)
-        .map_or(0, |d| d.as_secs() / 86_400) as i64;
-    let (y, m, d) = civil_date(days);
-    format!("{y:04}-{m:02}-{d:02}")
 }
 
 /// The Markdown page: the command, the date, the table, the definitions and every message.
