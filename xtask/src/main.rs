@@ -27,7 +27,8 @@
 //!   gates, front positions or a profile) by minimising the RMS misfit: a landscape scan,
 //!   then Brent (1-D) or Nelder–Mead (2-D) from argmin ([`calibrate`], docs/reference/calibrate.md);
 //! - `stability`: the stiff and extreme cases of cases/stability/ (issue 7), one at a time,
-//!   with the table of docs/reports/stability.md; fails if a run writes NaN.
+//!   with the table of docs/reports/stability.md ([`runout_paper::stability`]); fails if a
+//!   run writes NaN.
 
 mod analytic;
 mod bench_two_fluid;
@@ -35,13 +36,12 @@ mod case_reference;
 mod chute;
 mod collapse;
 mod mfix_slope;
-mod stability;
 mod verify;
 
 /// The seed paper's reproduction: its matrix, sweep, report and ledger.
-use runout_paper::{error_time, foot, ledger, release};
+use runout_paper::{error_time, foot, ledger, release, stability};
 /// The study engine: sweeps, calibration and sensitivity (`runout sweep` and friends).
-use runout_study::{calibrate, jobs, sweep};
+use runout_study::{calibrate, sweep};
 
 use std::path::{Path, PathBuf};
 use std::process::Command;

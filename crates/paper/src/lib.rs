@@ -4,7 +4,8 @@
 //! findings, error bars, explanations, figures and the metrics ledger ([`ledger`]); beside it
 //! the release study ([`release`]), the slide onto a flat run-out ([`foot`]) and the
 //! discretisation error against run time over a ladder of grids ([`error_time`], `cargo
-//! xtask error-time`). A research group builds its own study on runout the same way.
+//! xtask error-time`), and the stiff and extreme cases of the stability suite ([`stability`],
+//! `cargo xtask stability`). A research group builds its own study on runout the same way.
 //!
 //! The report ([`report`]) writes `docs/reports/results.md` and, in `docs/reports/results/`,
 //! SVG figures of the quantities and axes of paper Figs. 4, 5, 7, 8, 9, 12, 13 and 14 (Fig. 1
@@ -45,6 +46,7 @@ mod row;
 mod sensitivity;
 mod side_by_side;
 pub mod solver_stamp;
+pub mod stability;
 mod tables;
 mod trends;
 

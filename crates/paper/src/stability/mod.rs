@@ -22,8 +22,9 @@ use runout_output::{RunStatus, RunSummary};
 use runout_run::store::{self, Request, Reuse};
 use runout_run::RunError;
 
-use runout_paper::date::today;
-use runout_paper::matrix::STABILITY_DIR;
+use crate::date::today;
+use crate::matrix::STABILITY_DIR;
+use runout_study::jobs::run_queue;
 use runout_study::sweep::{csv_field, matrix, progress_style};
 
 /// Options of a stability run.
@@ -319,9 +320,9 @@ pub fn run_cases(cases_dir: &Path, runs_dir: &Path, opts: &StabilityOptions) -> 
     }
     let progress = MultiProgress::new();
     let rows: Mutex<Vec<(usize, Row)>> = Mutex::new(Vec::new());
-    // each worker on a pool of its own (crate::jobs): a run waiting in a parallel stage of
-    // a shared pool could steal and run the next case inside it
-    crate::jobs::run_queue(
+    // each worker on a pool of its own (runout_study::jobs): a run waiting in a parallel
+    // stage of a shared pool could steal and run the next case inside it
+    run_queue(
         selected.iter().enumerate(),
         opts.jobs,
         || true,
