@@ -18,7 +18,7 @@ use plotters::prelude::*;
 use runout_case::{load, Analytic, Loaded};
 use runout_walls::analytic::RobinProfile;
 
-use crate::figure::{plot_error, LINE_COLOURS};
+use runout_study::plots::{legend, plot_error, LINE_COLOURS};
 
 /// Points per closed-form curve (CSV and SVG).
 const SAMPLES: usize = 201;
@@ -237,12 +237,7 @@ fn draw(a: &Analytic, panels: &[Panel], path: &Path) -> Result<()> {
                 )
                 .map_err(plot_error)?;
         }
-        chart
-            .configure_series_labels()
-            .background_style(WHITE.mix(0.8))
-            .border_style(BLACK)
-            .draw()
-            .map_err(plot_error)?;
+        legend(&mut chart, SeriesLabelPosition::MiddleRight).map_err(plot_error)?;
     }
     root.present().map_err(plot_error)?;
     Ok(())

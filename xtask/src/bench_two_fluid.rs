@@ -29,9 +29,8 @@ use clap::Parser;
 use runout_case::{load, Case, Fidelity, Loaded};
 use runout_mesh::{AxisSpec, Segment};
 use runout_output::RunSummary;
+use runout_run::cpu_time::cpu_seconds;
 use runout_run::{run_case_with, RunOptions};
-
-use crate::mfix_slope::cpu_seconds;
 
 /// MFIX 21.3.2's CPU seconds for family M's 1 s on this kind of machine (issue 22).
 const MFIX_CPU_PER_SIMULATED_SECOND: f64 = 411.0;

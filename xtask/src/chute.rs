@@ -15,7 +15,7 @@ use runout_verification::checks::{relative_change, Chute, ChuteRun, CHUTE_TOLERA
 use runout_verification::problems::chute_column::ChuteCheck;
 use runout_verification::Outcome;
 
-use crate::figure::{plot_error, LINE_COLOURS};
+use runout_study::plots::{plot_error, LINE_COLOURS};
 
 /// Acceptance: largest difference relative to the largest value (issue 7).
 const TOLERANCE: f64 = CHUTE_TOLERANCE;

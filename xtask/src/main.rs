@@ -22,30 +22,26 @@
 //!   case has no run folder ([`runout_paper::ledger`]);
 //! - `error-time`: the discretisation error of the paper's station and probe numbers (with
 //!   Roache's GCI), the station profiles, gate speeds and bulk histories against CPU time
-//!   over a ladder of grids ([`error_time`]), in docs/reports/error-time.md;
+//!   over a ladder of grids ([`runout_paper::error_time`]), in docs/reports/error-time.md;
 //! - `calibrate`: fits one or two numeric fields of a case to measurements (front speeds at
 //!   gates, front positions or a profile) by minimising the RMS misfit: a landscape scan,
 //!   then Brent (1-D) or Nelder–Mead (2-D) from argmin ([`calibrate`], docs/reference/calibrate.md);
 //! - `stability`: the stiff and extreme cases of cases/stability/ (issue 7), one at a time,
-//!   with the table of docs/reports/stability.md; fails if a run writes NaN.
+//!   with the table of docs/reports/stability.md ([`runout_paper::stability`]); fails if a
+//!   run writes NaN.
 
 mod analytic;
 mod bench_two_fluid;
 mod case_reference;
 mod chute;
 mod collapse;
-mod error_time;
-mod figure;
 mod mfix_slope;
-mod stability;
 mod verify;
 
 /// The seed paper's reproduction: its matrix, sweep, report and ledger.
-use runout_paper::{foot, ledger, release};
-/// The flow metrics live in the post-processing library (`runout post` reads the same).
-use runout_post::metrics;
+use runout_paper::{error_time, foot, ledger, release, stability};
 /// The study engine: sweeps, calibration and sensitivity (`runout sweep` and friends).
-use runout_study::{calibrate, jobs, sweep};
+use runout_study::{calibrate, sweep};
 
 use std::path::{Path, PathBuf};
 use std::process::Command;

@@ -19,6 +19,7 @@ use std::time::Instant;
 use anyhow::{bail, Context, Result};
 use runout_case::{load, Fidelity, Loaded, SourcedCase};
 use runout_output::{read_vtr_array, RunSummary};
+use runout_run::cpu_time::cpu_seconds;
 use runout_run::run_case;
 
 use runout_verification::references::mfix_family_m::{
@@ -40,18 +41,6 @@ pub struct Options {
     pub threads: Vec<usize>,
     /// skip the three other floors
     pub skip_variants: bool,
-}
-
-/// CPU time of this process so far (user + system, all threads) [s].
-pub(crate) fn cpu_seconds() -> f64 {
-    // SAFETY: getrusage writes into the zeroed struct we own.
-    let mut usage: libc::rusage = unsafe { std::mem::zeroed() };
-    let rc = unsafe { libc::getrusage(libc::RUSAGE_SELF, &mut usage) };
-    if rc != 0 {
-        return f64::NAN;
-    }
-    let tv = |t: libc::timeval| t.tv_sec as f64 + t.tv_usec as f64 * 1e-6;
-    tv(usage.ru_utime) + tv(usage.ru_stime)
 }
 
 /// One timed run.

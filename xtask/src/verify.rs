@@ -28,7 +28,7 @@ use runout_verification::problems::{
 };
 use runout_verification::{find, group, registry, Outcome, Size};
 
-use crate::figure::{legend, plot_error, LINE_COLOURS};
+use runout_study::plots::{legend, plot_error, LINE_COLOURS};
 
 /// Output directory of `--report`, relative to the workspace root.
 const OUTPUT_DIR: &str = "docs/reports/verification";

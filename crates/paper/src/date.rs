@@ -1,4 +1,7 @@
-//! Civil dates of day counts, for the ledger's run dates and the stability page's date.
+//! Civil dates of day counts, for the ledger's run dates and the dates of the stability and
+//! error-time pages.
+
+use std::time::{SystemTime, UNIX_EPOCH};
 
 /// The civil date (year, month, day) of a day count since 1970-01-01 (H. Hinnant's
 /// `civil_from_days`).
@@ -12,6 +15,15 @@ pub fn civil_date(days: i64) -> (i64, u32, u32) {
     let day = (doy - (153 * mp + 2) / 5 + 1) as u32;
     let month = if mp < 10 { mp + 3 } else { mp - 9 } as u32;
     (yoe + era * 400 + i64::from(month <= 2), month, day)
+}
+
+/// Today's date, YYYY-MM-DD (UTC).
+pub fn today() -> String {
+    let days = SystemTime::now()
+        .duration_since(UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs() / 86_400) as i64;
+    let (y, m, d) = civil_date(days);
+    format!("{y:04}-{m:02}-{d:02}")
 }
 
 #[cfg(test)]

@@ -1,9 +1,11 @@
-//! The seed paper's reproduction, built on runout's public libraries (study, post, case,
+//! The seed paper's reproduction, built on runout's public libraries (study, post, run, case,
 //! output): the paper's case matrix and its sweep ([`matrix`]), and the report of its runs
 //! beside the paper (`cargo xtask report [results] [--fidelity F]`, issue 8) with its
 //! findings, error bars, explanations, figures and the metrics ledger ([`ledger`]); beside it
-//! the release study ([`release`]) and the slide onto a flat run-out ([`foot`]). A research
-//! group builds its own study on runout the same way.
+//! the release study ([`release`]), the slide onto a flat run-out ([`foot`]) and the
+//! discretisation error against run time over a ladder of grids ([`error_time`], `cargo
+//! xtask error-time`), and the stiff and extreme cases of the stability suite ([`stability`],
+//! `cargo xtask stability`). A research group builds its own study on runout the same way.
 //!
 //! The report ([`report`]) writes `docs/reports/results.md` and, in `docs/reports/results/`,
 //! SVG figures of the quantities and axes of paper Figs. 4, 5, 7, 8, 9, 12, 13 and 14 (Fig. 1
@@ -25,6 +27,7 @@ mod coverage;
 mod curves;
 pub mod date;
 mod error_bars;
+pub mod error_time;
 mod explain;
 mod fields;
 mod figure_sets;
@@ -43,6 +46,7 @@ mod row;
 mod sensitivity;
 mod side_by_side;
 pub mod solver_stamp;
+pub mod stability;
 mod tables;
 mod trends;
 

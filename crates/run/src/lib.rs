@@ -7,13 +7,15 @@
 //! the Δt rule, [`monitors`] the scheduled hooks, [`checkpoint`] the restart files,
 //! [`out_dir`] the run folder's protection, [`lock`] its one writer, [`runs_folder`] the
 //! links below `runs/`, [`seal`] a finished run's file list, [`store`] the folders of
-//! finished runs, [`signals`] the stop on SIGINT/SIGTERM.
+//! finished runs, [`signals`] the stop on SIGINT/SIGTERM, [`cpu_time`] the process's CPU time
+//! for timing runs.
 
 #![deny(missing_docs)]
 
 mod build;
 mod case_solver;
 pub mod checkpoint;
+pub mod cpu_time;
 mod dt_controller;
 pub mod explain;
 mod gas_inlets;

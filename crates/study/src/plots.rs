@@ -3,6 +3,7 @@
 use std::path::Path;
 
 use anyhow::Result;
+use plotters::coord::CoordTranslate;
 use plotters::prelude::*;
 
 /// A drawing error of plotters (whose error types are not `std::error::Error` for every
@@ -17,7 +18,7 @@ const PANEL_WIDTH: u32 = 460;
 const PANEL_HEIGHT: u32 = 420;
 
 /// Line colours, by series index (the tab10 palette), then black; the one palette of the
-/// workspace's figures (xtask's `figure::LINE_COLOURS` picks from it).
+/// workspace's figures ([`LINE_COLOURS`] picks from it).
 pub const COLOURS: [RGBColor; 11] = [
     RGBColor(31, 119, 180),
     RGBColor(255, 127, 14),
@@ -34,6 +35,31 @@ pub const COLOURS: [RGBColor; 11] = [
 
 /// The colour index of black (reference data).
 pub const BLACK_INDEX: usize = COLOURS.len() - 1;
+
+/// Line colours, cycled per curve: blue, red, green, purple, orange of [`COLOURS`], then
+/// black.
+pub const LINE_COLOURS: [RGBColor; 6] = [
+    COLOURS[0],
+    COLOURS[3],
+    COLOURS[2],
+    COLOURS[4],
+    COLOURS[1],
+    COLOURS[BLACK_INDEX],
+];
+
+/// Draws the legend of `chart`'s labelled series at `position`, on a white box (80 %
+/// opaque) with a black border.
+pub fn legend<'a, DB: DrawingBackend + 'a, CT: CoordTranslate>(
+    chart: &mut ChartContext<'a, DB, CT>,
+    position: SeriesLabelPosition,
+) -> Result<(), DrawingAreaErrorKind<DB::ErrorType>> {
+    chart
+        .configure_series_labels()
+        .position(position)
+        .background_style(WHITE.mix(0.8))
+        .border_style(BLACK)
+        .draw()
+}
 
 /// How a series is drawn.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -231,13 +257,7 @@ fn draw_panel(
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2)));
     }
     if labelled {
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperRight)
-            .background_style(WHITE.mix(0.8))
-            .border_style(BLACK)
-            .draw()
-            .map_err(plot_error)?;
+        legend(&mut chart, SeriesLabelPosition::UpperRight).map_err(plot_error)?;
     }
     Ok(())
 }

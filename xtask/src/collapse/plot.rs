@@ -8,7 +8,7 @@ use anyhow::Result;
 use plotters::prelude::*;
 
 use super::run::Outcome;
-use crate::figure::{legend, plot_error, LINE_COLOURS};
+use runout_study::plots::{legend, plot_error, LINE_COLOURS};
 use runout_verification::references::{
     ScalingLaw, LAGREE_CONTINUUM, LAJEUNESSE, LAJEUNESSE_AS_KUMAR_CITES, LUBE,
 };

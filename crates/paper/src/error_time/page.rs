@@ -16,7 +16,7 @@ use super::quantity::{quantities, Quantity, Source};
 use super::richardson::{asymptotic, ASYMPTOTIC_BAND};
 use super::run::Run;
 use super::{opt, station_page, Ladder, NOT_RUN, OUTPUT_DIR};
-use crate::metrics::FLOW_THRESHOLD;
+use runout_post::metrics::FLOW_THRESHOLD;
 
 /// Whether the page describes a pipeline check rather than a study.
 fn pipeline_check(levels: &[Level]) -> bool {

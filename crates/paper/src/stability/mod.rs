@@ -13,7 +13,7 @@ use std::fmt::Write as _;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
-use std::time::{Instant, SystemTime, UNIX_EPOCH};
+use std::time::Instant;
 
 use anyhow::{bail, Context, Result};
 use indicatif::{MultiProgress, ProgressBar};
@@ -22,8 +22,9 @@ use runout_output::{RunStatus, RunSummary};
 use runout_run::store::{self, Request, Reuse};
 use runout_run::RunError;
 
-use runout_paper::date::civil_date;
-use runout_paper::matrix::STABILITY_DIR;
+use crate::date::today;
+use crate::matrix::STABILITY_DIR;
+use runout_study::jobs::run_queue;
 use runout_study::sweep::{csv_field, matrix, progress_style};
 
 /// Options of a stability run.
@@ -319,9 +320,9 @@ pub fn run_cases(cases_dir: &Path, runs_dir: &Path, opts: &StabilityOptions) -> 
     }
     let progress = MultiProgress::new();
     let rows: Mutex<Vec<(usize, Row)>> = Mutex::new(Vec::new());
-    // each worker on a pool of its own (crate::jobs): a run waiting in a parallel stage of
-    // a shared pool could steal and run the next case inside it
-    crate::jobs::run_queue(
+    // each worker on a pool of its own (runout_study::jobs): a run waiting in a parallel
+    // stage of a shared pool could steal and run the next case inside it
+    run_queue(
         selected.iter().enumerate(),
         opts.jobs,
         || true,
@@ -427,15 +428,6 @@ pub fn md_row(row: &Row) -> String {
         num(row.max_eps_s, |v| format!("{v:.4}")),
         row.wall_time
     )
-}
-
-/// Today's date, YYYY-MM-DD (UTC).
-pub fn today() -> String {
-    let days = SystemTime::now()
-        .duration_since(UNIX_EPOCH)
-        .map_or(0, |d| d.as_secs() / 86_400) as i64;
-    let (y, m, d) = civil_date(days);
-    format!("{y:04}-{m:02}-{d:02}")
 }
 
 /// The Markdown page: the command, the date, the table, the definitions and every message.

@@ -11,7 +11,7 @@ use plotters::prelude::*;
 use super::ladder::scheme_name;
 use super::quantity::Quantity;
 use super::Ladder;
-use crate::figure::{legend, plot_error, LINE_COLOURS};
+use runout_study::plots::{legend, plot_error, LINE_COLOURS};
 
 /// SVG size [px].
 const FIGURE_SIZE: (u32, u32) = (900, 600);

@@ -8,8 +8,9 @@
 //! - `tiny`: the smoke grid coarsened 2× more (a pipeline check, not a fidelity preset);
 //! - `smoke`, `coarse`: the grids of the case's fidelity presets;
 //! - `half`: the paper grid coarsened 2×; `paper`: the case's own grid; `finer`: the paper
-//!   grid refined 2× ([`Segment::refined`]). For family S, coarse, half, paper and finer
-//!   (250 × 23, 500 × 45, 1000 × 90, 2000 × 180) are a uniform ladder, 2× per step.
+//!   grid refined 2× (`runout_mesh::Segment::refined`). For family S, coarse, half, paper
+//!   and finer (250 × 23, 500 × 45, 1000 × 90, 2000 × 180) are a uniform ladder, 2× per
+//!   step.
 //!
 //! Every level runs to the case's own end time (the presets' shorter smoke end time would
 //! stop before the profile time and the gates), so only the grid changes between levels;
@@ -18,9 +19,9 @@
 //! Errors, for each case and scheme:
 //! - **the paper's station and probe numbers** (air-cushion thickness, flow thickness, εs and
 //!   θ of the floor cell, max u_s at the station at the profile time, h_w^u at the floor
-//!   probe), read by the report's own functions ([`station`]): |q − q_ref| in their unit,
+//!   probe), read by the report's own functions (`station`): |q − q_ref| in their unit,
 //!   and from the three finest levels the trend, observed order, Richardson extrapolation
-//!   and Roache's GCI ([`gci`]); a cushion present at one level and not the next is said to
+//!   and Roache's GCI (`gci`); a cushion present at one level and not the next is said to
 //!   be a ladder that does not converge;
 //! - **station profiles** (εs, u_s, θ at the x and last time of the case's first profile
 //!   monitor): every run's profile is interpolated linearly onto the cell-centre heights of
@@ -48,22 +49,20 @@
 //!
 //! Every level runs with the case file's numerics (outer iteration, time-step controller),
 //! as the sweep's runs do, so the paper level is the sweep's paper run. Each run's CPU time
-//! and threads are kept beside it ([`cost`]).
+//! and threads are kept beside it (`cost`).
 //!
 //! Output: `docs/reports/error-time.md` (date, command, the hand-kept notes of
 //! `docs/reports/error-time/notes.md`, levels not run and why, tables),
 //! `docs/reports/error-time/error_time.csv` and one log–log SVG of error against CPU time per case
 //! and quantity in `docs/reports/error-time/`.
 //!
-//! The parts, one a file: [`ladder`] (the levels and schemes), [`quantity`] (what is
-//! compared), [`run`] (running or reusing one level), [`cost`] (its CPU time), [`read`] and
-//! [`station`] (reading its files), [`measures`] (interpolation, norms, shared samples),
-//! [`errors`] and [`station_errors`] (the errors against the reference and the Richardson
-//! extrapolation), [`richardson`] (the observed order), [`gci`] (Roache's GCI),
-//! [`csv_file`], [`page`], [`station_page`] and [`plot`] (the outputs); this file holds the
+//! The parts, one a file: `ladder` (the levels and schemes), `quantity` (what is
+//! compared), `run` (running or reusing one level), `cost` (its CPU time), `read` and
+//! `station` (reading its files), `measures` (interpolation, norms, shared samples),
+//! `errors` and `station_errors` (the errors against the reference and the Richardson
+//! extrapolation), `richardson` (the observed order), `gci` (Roache's GCI),
+//! `csv_file`, `page`, `station_page` and `plot` (the outputs); this file holds the
 //! options and the study's stages.
-//!
-//! [`Segment::refined`]: runout_mesh::Segment::refined
 
 mod cost;
 mod csv_file;
@@ -88,12 +87,12 @@ use runout_case::{Case, Convection};
 
 use self::errors::{quantity_errors, QuantityErrors};
 use self::gci::ScalarConvergence;
-pub use self::ladder::parse_scheme;
-use self::ladder::{ending_at, scheme_name, Level};
+use self::ladder::{ending_at, scheme_name};
+pub use self::ladder::{parse_scheme, Level};
 use self::quantity::{quantities, LevelData, Quantity};
 use self::run::{run_level, Run};
 use self::station_errors::station_gci;
-use crate::stability::today;
+use crate::date::today;
 use runout_study::sweep::matrix;
 
 /// The cases of the error-against-time study: family S on the Johnson–Jackson φ = 0.1 floor

@@ -134,8 +134,8 @@ mod tests {
 
     #[test]
     fn levels_use_the_presets_and_the_refined_paper_grid() {
-        let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
-        let runs = matrix(&root.join("cases")).unwrap().runs;
+        let cases = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../cases");
+        let runs = matrix(&cases).unwrap().runs;
         let case = &runs
             .iter()
             .find(|r| r.case.name == "S-JJ-phi_phi=0.1")

@@ -3,8 +3,8 @@
 //! ladder share (the flow band of a profile, the common gates, the common times).
 
 use super::quantity::{History, LevelData, Quantity};
-use crate::metrics::FLOW_THRESHOLD;
 use runout_post::convergence::{weighted_l1, weighted_l2};
+use runout_post::metrics::FLOW_THRESHOLD;
 use runout_post::profile::Profile;
 
 /// Linear interpolation of (xs, ys) at `x`, extended linearly beyond the ends (xs

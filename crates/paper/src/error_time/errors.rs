@@ -5,8 +5,8 @@
 use super::measures::{gate_samples, history_samples, norm, profile_samples, range};
 use super::quantity::{LevelData, Quantity, Source};
 use super::richardson::Order;
-use crate::metrics::FLOW_THRESHOLD;
 use runout_post::convergence::{max_abs, observed_order, richardson};
+use runout_post::metrics::FLOW_THRESHOLD;
 
 /// The errors of one quantity over a ladder.
 #[derive(Clone, Debug, Default, PartialEq)]

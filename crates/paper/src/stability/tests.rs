@@ -188,7 +188,7 @@ fn the_page_holds_the_command_the_date_every_row_and_every_message() {
 /// fidelity, through the same runner as the table; about a second.
 #[test]
 fn the_dt_max_case_runs_at_smoke_fidelity_without_writing_nan() {
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     let cases = root.join("cases").join(STABILITY_DIR);
     let out = std::env::temp_dir().join(format!("runout-stability-{}", std::process::id()));
     let opts = StabilityOptions {

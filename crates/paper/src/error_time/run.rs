@@ -8,6 +8,7 @@ use std::path::Path;
 use anyhow::{bail, Result};
 use runout_case::{validate_case, Case, Convection, Fidelity};
 use runout_output::RunSummary;
+use runout_run::cpu_time::cpu_seconds;
 use runout_run::store::{self, finished_run, Request, Reuse};
 
 use super::cost::{read_cost, write_cost, RunCost};
@@ -88,7 +89,7 @@ pub(super) fn run_level(
         // `Paper` runs the resolved case as it is (at_fidelity(Paper) is the identity); the
         // summary names the level, not the `Paper` the runner was handed
         let resumed = runout_run::checkpoint::exists(&store::partial_dir(&done));
-        let cpu_before = crate::mfix_slope::cpu_seconds();
+        let cpu_before = cpu_seconds();
         let request = Request {
             reuse: Reuse::Never,
             label: Some(format!("error-time {level}")),
@@ -107,7 +108,7 @@ pub(super) fn run_level(
                 let s = stored.summary().clone();
                 let cost = RunCost {
                     threads: rayon::current_num_threads(),
-                    cpu_seconds: crate::mfix_slope::cpu_seconds() - cpu_before,
+                    cpu_seconds: cpu_seconds() - cpu_before,
                     resumed,
                 };
                 if let Err(e) = write_cost(&done, &cost) {

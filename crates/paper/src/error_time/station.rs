@@ -1,5 +1,5 @@
 //! The numbers the paper reports at its station and floor probe, read from one run of the
-//! ladder exactly as `cargo xtask report` reads them ([`runout_paper::reading::value`] on the
+//! ladder exactly as `cargo xtask report` reads them ([`crate::reading::value`] on the
 //! run's [`CaseData`]): the air cushion (yes/no) and its thickness, the flow thickness, εs and
 //! θ of the floor cell and the largest u_s at the station at the profile time, and h_w^u at
 //! the floor probe then.
@@ -13,9 +13,9 @@ use runout_post::folder::read_summary;
 
 use super::ladder::Level;
 use super::quantity::Quantity;
-use runout_paper::paper::Quantity as PaperQuantity;
-use runout_paper::reading::{value, Reading};
-use runout_paper::records::Records;
+use crate::paper::Quantity as PaperQuantity;
+use crate::reading::{value, Reading};
+use crate::records::Records;
 
 /// The station and probe numbers of one run, each with why it is missing.
 #[derive(Clone, Debug, Default)]
