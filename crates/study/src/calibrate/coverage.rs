@@ -303,7 +303,9 @@ mod tests {
     /// fidelity, the specularity over 0.01–1 (log), truths 0.05, 0.1, 0.2, 0.3, 0.45, 0.6 and
     /// 0.9, four kinds of measurement (the fronts at 0.2–1.0 s and at 0.1–0.5 s with σ = 5 mm,
     /// the u_s profile at x = 0.3 m, t = 0.3 s with σ = 0.02 m/s, the gate speeds with
-    /// σ = 0.3 m/s), each noise-free and with `COVERAGE_DRAWS` noisy draws (default 4).
+    /// σ = 0.3 m/s), each noise-free and with `COVERAGE_DRAWS` noisy draws (default 4);
+    /// `COVERAGE_TRUTHS=0.45,0.6` and `COVERAGE_KINDS=fronts-0.2-1.0s` run a part of it
+    /// (its table then lists that part).
     /// Hours of coarse runs, resumable (runs/calibrate/coverage/, finished runs reused); the
     /// table is written to runs/calibrate/coverage/coverage.md as the draws come:
     /// `RAYON_NUM_THREADS=1 nice -n 19 cargo test --release -p runout-study coverage_table --
@@ -351,6 +353,26 @@ mod tests {
                 },
             ],
             draws,
+        };
+        let only = |var: &str| {
+            std::env::var(var)
+                .ok()
+                .map(|s| s.split(',').map(str::to_owned).collect::<Vec<_>>())
+        };
+        let plan = CoveragePlan {
+            truths: match only("COVERAGE_TRUTHS") {
+                Some(list) => list.iter().map(|t| t.parse().expect("a truth")).collect(),
+                None => plan.truths,
+            },
+            kinds: match only("COVERAGE_KINDS") {
+                Some(list) => plan
+                    .kinds
+                    .into_iter()
+                    .filter(|k| list.contains(&k.label))
+                    .collect(),
+                None => plan.kinds,
+            },
+            ..plan
         };
         let dir = root().join("runs/calibrate/coverage");
         let mut done = Vec::new();

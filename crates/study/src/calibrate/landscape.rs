@@ -150,24 +150,28 @@ fn smooth_note(r: &Range) -> String {
     };
     let mut md = format!(
         "\nThe model's scatter about its smooth trend (local quadratic regression over {} \
-         evaluations, calibrate/smooth.rs): σ_model = {:.2} σ, a wiggle that decorrelates \
-         over any distance shorter than the regression's window. The stated range \
-         includes it: the smooth response's range, with σ_eff = σ √(1 + {:.2}²), is {} – {}.\n",
+         evaluations, its window's half-width {} of the bounds chosen by cross-validation, \
+         calibrate/smooth.rs): σ_model = {:.2} σ pooled, up to {:.2} σ at one measured point, \
+         a wiggle that decorrelates over any distance shorter than the window. The stated \
+         range includes it: the smooth response's range, with σ_eff,i = σ_i √(1 + s_i²), is \
+         {} – {}.\n",
         s.evaluations,
+        s.half_width,
         s.scatter,
-        s.scatter,
+        s.scatter_max,
         number(s.bounds.0),
         number(s.bounds.1)
     );
-    if s.scatter > scatter::RELIABLE_RATIO {
+    if s.scatter_max > scatter::RELIABLE_RATIO {
         md.push_str(&format!(
             "\nAbove {:.2} σ the scatter (or the trend's curvature over the window, which \
-             counts as scatter) is comparable to σ: the smooth range then depends on the \
-             assumed smoothness scale (calibrate/smooth.rs, HALF_WIDTH) and the stated \
-             range is a guide, not a 68 % interval. A σ of at least 3 σ_model ({:.2} × the \
-             σ used), or a finer fidelity, is one the scatter does not dominate.\n",
+             counts as scatter) is comparable to σ: a run's outputs then jump between \
+             neighbouring parameter values by as much as the measurements' error, the \
+             measured run itself is one such draw, and the stated range is a guide, not a \
+             68 % interval. A σ of at least 3 σ_model ({:.2} × the σ used), or a finer \
+             fidelity, is one the scatter does not dominate.\n",
             scatter::RELIABLE_RATIO,
-            3.0 * s.scatter
+            3.0 * s.scatter_max
         ));
     }
     md

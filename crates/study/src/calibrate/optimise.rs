@@ -10,7 +10,10 @@
 //!    better grid neighbour along each parameter (all three known), until the standard
 //!    deviation of the simplex's χ² is below `ftol`;
 //! 3. in 1-D, the edges of the range Δχ² ≤ 1 pinned by at most `profile` more evaluations
-//!    per side ([`super::uncertainty`]).
+//!    per side ([`super::uncertainty`]), then the smooth response's range sampled in at most
+//!    `profile` rounds of evaluations a quarter of its width apart
+//!    ([`super::smooth::sampling_proposals`]), so that its trend is carried by evaluations
+//!    across the range, not by the refinement's cluster alone.
 //!
 //! The optimum is the best evaluation of all. The optimiser works in unit coordinates
 //! u ∈ [0, 1] per parameter (linear or log scale); a point outside the box, or one whose χ²
@@ -24,6 +27,7 @@ use argmin::core::{CostFunction, Error as ArgminError, Executor};
 use argmin::solver::neldermead::NelderMead;
 
 use super::brent::{self, Bracket};
+use super::smooth;
 use super::uncertainty;
 use super::valley::{self, Valley};
 
@@ -155,6 +159,8 @@ pub enum Stage {
     Refine,
     /// pinning an edge of the range Δχ² ≤ 1
     Profile,
+    /// sampling the smooth response's range (1-D, [`smooth::sampling_proposals`])
+    Sample,
     /// a station of the profile along the valley (2-D)
     Valley,
 }
@@ -167,6 +173,7 @@ impl Stage {
             Stage::Scan => "scan",
             Stage::Refine => "refine",
             Stage::Profile => "profile",
+            Stage::Sample => "sample",
             Stage::Valley => "valley",
         }
     }
@@ -453,6 +460,37 @@ fn pin_edges(ev: &Evaluator, settings: &Settings) -> Result<()> {
     Ok(())
 }
 
+/// Samples the smooth response's range (1-D): at most `settings.profile` rounds, each
+/// evaluating (in parallel) the stations of [`smooth::sampling_proposals`] (`xtol` apart at
+/// least) not yet evaluated; none without residuals or a smooth range.
+fn sample_range(ev: &Evaluator, settings: &Settings) -> Result<()> {
+    for _ in 0..settings.profile {
+        let evaluated: Vec<(f64, Vec<f64>)> = {
+            let done = ev.done.lock().expect("no poisoned lock");
+            done.iter()
+                .filter(|e| e.chi2.is_finite() && !e.residuals.is_empty())
+                .map(|e| (ev.params[0].unit(e.x[0]), e.residuals.clone()))
+                .collect()
+        };
+        let view: Vec<(f64, &[f64])> = evaluated.iter().map(|(u, r)| (*u, r.as_slice())).collect();
+        let Some(range) = smooth::range(&view, uncertainty::DELTA_CHI2_1D, |u| u) else {
+            break;
+        };
+        let units: Vec<f64> = evaluated.iter().map(|e| e.0).collect();
+        let proposals: Vec<Vec<f64>> =
+            smooth::sampling_proposals(range.bounds.0, range.bounds.1, settings.xtol, &units)
+                .into_iter()
+                .map(|u| vec![ev.params[0].value(u)])
+                .filter(|x| ev.cached(x).is_none())
+                .collect();
+        if proposals.is_empty() {
+            break;
+        }
+        evaluate_all(ev, proposals, Stage::Sample, settings.jobs)?;
+    }
+    Ok(())
+}
+
 /// The profile of χ² along the parameter the region is loosest along ([`valley`]): its
 /// stations evenly spaced over the box, walked outward from the best evaluation in two
 /// chains (run at once when `settings.jobs` ≥ 2).
@@ -577,6 +615,7 @@ pub fn calibrate(params: &[Param], model: &dyn Model, settings: &Settings) -> Re
     }
     let valley = if params.len() == 1 {
         pin_edges(&ev, settings)?;
+        sample_range(&ev, settings)?;
         None
     } else if settings.valley > 0 {
         Some(trace_valley(&ev, settings)?)

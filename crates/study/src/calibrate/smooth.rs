@@ -11,30 +11,40 @@
 //! 1. the normalised residuals r_i(u) = (s_i(u) − m_i)/σ_i of the evaluations are smoothed
 //!    in the unit coordinate u by local quadratic regression (LOESS, Cleveland 1979, JASA
 //!    74:829): at u₀ the weighted least-squares quadratic through the evaluations with
-//!    |u − u₀| < W (at least [`HALF_WIDTH`]), tricube weights w = (1 − (|u − u₀|/W)³)³,
+//!    |u − u₀| < W (W chosen below), tricube weights w = (1 − (|u − u₀|/W)³)³,
 //!    evaluated at u₀.
 //!    The fit is linear in the data, r̂(u₀) = Σ_j l_j(u₀) r(u_j), the same weights l for every
 //!    measured point i;
-//! 2. the scatter about that trend, pooled over the measured points (Cleveland & Devlin
-//!    1988, JASA 83:596, the residual variance of a local regression):
+//! 2. the scatter about that trend at each measured point i (Cleveland & Devlin 1988, JASA
+//!    83:596, the residual variance of a local regression):
 //!
-//!      s² = (σ_model/σ)² = Σ_i Σ_j (r_i(u_j) − r̂_i(u_j))² / (n_i (n − tr L)),
+//!      s_i² = (σ_model,i/σ_i)² = Σ_j (r_i(u_j) − r̂_i(u_j))² / (n − tr L),
 //!
-//!    with n the evaluations with a fit, n_i the measured points and tr L = Σ_j l_j(u_j) the
-//!    fit's effective number of parameters;
-//! 3. χ² of the trend with the two errors in quadrature, σ_eff² = σ² (1 + s²):
+//!    with n the evaluations with a fit and tr L = Σ_j l_j(u_j) the fit's effective number
+//!    of parameters. Per point, not pooled: a front scatters by a third of a cell late in a
+//!    slide and not at all early on or once it has left the domain (issue 62's fronts at
+//!    0.2–1.0 s: s_i from 0 to about 0.5), and a pooled s would understate the scatter
+//!    exactly where the fit is decided;
+//! 3. χ² of the trend with the two errors in quadrature, σ_eff,i² = σ_i² (1 + s_i²):
 //!
-//!      χ²_s(u) = Σ_i r̂_i(u)² / (1 + s²),
+//!      χ²_s(u) = Σ_i r̂_i(u)² / (1 + s_i²),
 //!
 //!    on [`GRID`] points of [0, 1], and the range Δχ²_s ≤ 1 around its minimum.
 //!
-//! The assumption is stated by W: the model's output is smooth over W = 0.3 of a
-//! parameter's bounds (0.6 of a decade on a two-decade log scale), and what changes faster
-//! is scatter. The coarse gate speeds' wiggle decorrelates over about 0.01 of the unit
-//! interval (5 % of φ), the scan's points lie 0.25 apart (`--scan 5`), so every window holds
-//! a scan point beside the refinement's cluster. Where fewer than [`MIN_DISTINCT`] distinct
-//! values lie within W the window widens to the nearest of them (LOESS's nearest-neighbour
-//! bandwidth).
+//! The window W is chosen from the data: of the half-widths [`HALF_WIDTHS`], the one with
+//! the least generalised cross-validation score (Craven & Wahba 1979, Numer. Math. 31:377;
+//! for local regression Cleveland & Grosse 1991, Stat. Comput. 1:47)
+//!
+//!      GCV(W) = n · RSS(W) / (n − tr L(W))²,
+//!
+//! RSS the squared residuals about the trend pooled over the measured points. A window wider
+//! than the trend's bends is biased (a misfit that falls steeply to a knee and is flat
+//! beyond it, fitted by one quadratic across the knee, puts its minimum in the middle of the
+//! flat part: issue 62's truth 0.45, docs/reference/calibrate.md); a narrower one follows
+//! the scatter; GCV weighs the two. Where fewer than [`MIN_DISTINCT`] distinct values lie
+//! within W the window widens to the nearest of them (LOESS's nearest-neighbour bandwidth).
+//! The trend is only as good as the evaluations that carry it: `calibrate`'s last stage
+//! samples the smooth range at a quarter of its width ([`sampling_proposals`]).
 //!
 //! [`super::uncertainty::range`] states the hull of this range and the one read from the
 //! evaluations' own χ²: with a smooth model (s ≈ 0) the two agree; with a wiggling one the
@@ -47,11 +57,12 @@
 use nalgebra::{Matrix3, Vector3};
 use serde::Serialize;
 
-/// Least half-width W of the local regression's window, in unit coordinates (module doc).
-pub const HALF_WIDTH: f64 = 0.3;
+/// The half-widths W of the local regression's window the data choose from, in unit
+/// coordinates (module doc): from 0.05 (a tenth of a decade on a two-decade log scale) to 0.3.
+pub const HALF_WIDTHS: [f64; 6] = [0.05, 0.075, 0.1, 0.15, 0.2, 0.3];
 
 /// Distinct evaluated values a window holds at least: where fewer lie within
-/// [`HALF_WIDTH`] the window widens to the nearest this many (the nearest-neighbour
+/// the window's W it widens to the nearest this many (the nearest-neighbour
 /// bandwidth of LOESS), so a quadratic (three coefficients) keeps a degree of freedom.
 pub const MIN_DISTINCT: usize = 4;
 
@@ -70,25 +81,29 @@ pub struct SmoothRange {
     pub optimum: f64,
     /// χ²_s there
     pub chi2_min: f64,
-    /// s = σ_model/σ, the scatter about the trend in units of σ
+    /// the scatter about the trend in units of σ, pooled: √(mean of s_i²)
     pub scatter: f64,
+    /// the largest scatter of one measured point, max s_i
+    pub scatter_max: f64,
     /// evaluations used (n)
     pub evaluations: usize,
+    /// the window's half-width W the data chose (unit coordinates)
+    pub half_width: f64,
 }
 
-/// The window's half-width at `u0`: [`HALF_WIDTH`], or a little beyond the
-/// [`MIN_DISTINCT`]-th nearest distinct value of `distinct` (sorted) where that is further.
-fn half_width(distinct: &[f64], u0: f64) -> f64 {
+/// The window's half-width at `u0`: `least`, or a little beyond the [`MIN_DISTINCT`]-th
+/// nearest distinct value of `distinct` (sorted) where that is further.
+fn half_width(distinct: &[f64], u0: f64, least: f64) -> f64 {
     let mut d: Vec<f64> = distinct.iter().map(|u| (u - u0).abs()).collect();
     d.sort_by(f64::total_cmp);
-    HALF_WIDTH.max(1.05 * d[MIN_DISTINCT - 1])
+    least.max(1.05 * d[MIN_DISTINCT - 1])
 }
 
 /// The weights l_j of the local quadratic at `u0` over the evaluations at `us` (r̂(u₀) = Σ_j
-/// l_j r_j), `distinct` the sorted distinct values of `us` (at least [`MIN_DISTINCT`]);
-/// `None` if the normal equations are singular.
-fn local_weights(us: &[f64], distinct: &[f64], u0: f64) -> Option<Vec<f64>> {
-    let width = half_width(distinct, u0);
+/// l_j r_j), `distinct` the sorted distinct values of `us` (at least [`MIN_DISTINCT`]), the
+/// window's least half-width `least`; `None` if the normal equations are singular.
+fn local_weights(us: &[f64], distinct: &[f64], u0: f64, least: f64) -> Option<Vec<f64>> {
+    let width = half_width(distinct, u0, least);
     let tricube = |u: f64| {
         let d = (u - u0).abs() / width;
         if d < 1.0 {
@@ -147,31 +162,25 @@ pub fn range(
         return None;
     }
     let rs: Vec<&[f64]> = usable.iter().map(|e| e.1).collect();
-    // 2. the scatter about the trend at the evaluations themselves
-    let (mut rss, mut trace, mut fitted) = (0.0, 0.0, 0usize);
-    for (j, &u) in us.iter().enumerate() {
-        let Some(l) = local_weights(&us, &distinct, u) else {
-            continue;
-        };
-        rss += trend(&l, &rs)
-            .iter()
-            .zip(rs[j])
-            .map(|(fit, r)| (r - fit).powi(2))
-            .sum::<f64>();
-        trace += l[j];
-        fitted += 1;
-    }
-    let dof = fitted as f64 - trace;
-    if dof <= 0.0 {
-        return None;
-    }
-    let s2 = rss / (columns as f64 * dof);
+    // the window by GCV (module doc), the wider on a tie
+    let chosen = HALF_WIDTHS
+        .iter()
+        .rev()
+        .filter_map(|&w| fit(&us, &distinct, &rs, w))
+        .min_by(|a, b| a.gcv.total_cmp(&b.gcv))?;
+    let width = chosen.half_width;
+    let inflation: Vec<f64> = chosen.scatter2.iter().map(|s2| 1.0 + s2).collect();
     // 3. χ²_s on the grid (None where the normal equations are singular)
     let chi2: Vec<Option<f64>> = (0..GRID)
         .map(|k| {
             let u = k as f64 / (GRID - 1) as f64;
-            local_weights(&us, &distinct, u)
-                .map(|l| trend(&l, &rs).iter().map(|r| r * r).sum::<f64>() / (1.0 + s2))
+            local_weights(&us, &distinct, u, width).map(|l| {
+                trend(&l, &rs)
+                    .iter()
+                    .zip(&inflation)
+                    .map(|(r, f)| r * r / f)
+                    .sum::<f64>()
+            })
         })
         .collect();
     let (k_min, chi2_min) = chi2
@@ -197,8 +206,71 @@ pub fn range(
         ),
         optimum: at(k_min),
         chi2_min,
-        scatter: s2.sqrt(),
-        evaluations: fitted,
+        scatter: (chosen.scatter2.iter().sum::<f64>() / columns as f64).sqrt(),
+        scatter_max: chosen
+            .scatter2
+            .iter()
+            .fold(0.0, |m: f64, s2| m.max(s2.sqrt())),
+        evaluations: chosen.fitted,
+        half_width: width,
+    })
+}
+
+/// The stations that sample a smooth range `low`–`high` (unit coordinates): the range and a
+/// quarter of its width beyond each end, a quarter of its width q apart (at least `least`),
+/// within [0, 1], leaving out those within q/2 of an evaluation at `evaluated`. A trend
+/// carried only by a refinement's cluster and a scan point either side is a guess between
+/// them (issue 62's truth 0.45: nothing between 0.40 and 0.49, where the truth lay); these
+/// stations put evaluations wherever the range or its edges could move.
+pub fn sampling_proposals(low: f64, high: f64, least: f64, evaluated: &[f64]) -> Vec<f64> {
+    let q = (0.25 * (high - low)).max(least);
+    (-1..=5)
+        .map(|k| low + k as f64 * q)
+        .filter(|&u| u <= high + q + 1e-12)
+        .map(|u| u.clamp(0.0, 1.0))
+        .filter(|&u| evaluated.iter().all(|&e| (e - u).abs() > 0.5 * q))
+        .fold(Vec::new(), |mut out, u| {
+            if out.last() != Some(&u) {
+                out.push(u);
+            }
+            out
+        })
+}
+
+/// The local regression with least half-width `least` at the evaluations themselves.
+struct Fit {
+    half_width: f64,
+    /// s_i² per measured point (step 2 of the module doc)
+    scatter2: Vec<f64>,
+    /// the generalised cross-validation score n RSS/(n − tr L)², RSS per measured point
+    gcv: f64,
+    /// evaluations with a fit (n)
+    fitted: usize,
+}
+
+/// The fit of the trend with least half-width `least` (`None` without a degree of freedom
+/// for the scatter).
+fn fit(us: &[f64], distinct: &[f64], rs: &[&[f64]], least: f64) -> Option<Fit> {
+    let columns = rs[0].len();
+    let (mut rss, mut trace, mut fitted) = (vec![0.0; columns], 0.0, 0usize);
+    for (j, &u) in us.iter().enumerate() {
+        let Some(l) = local_weights(us, distinct, u, least) else {
+            continue;
+        };
+        for ((sum, fit), r) in rss.iter_mut().zip(trend(&l, rs)).zip(rs[j]) {
+            *sum += (r - fit).powi(2);
+        }
+        trace += l[j];
+        fitted += 1;
+    }
+    let dof = fitted as f64 - trace;
+    let total: f64 = rss.iter().sum();
+    (dof > 0.0).then(|| Fit {
+        half_width: least,
+        // 2. the scatter about the trend (Cleveland & Devlin 1988)
+        scatter2: rss.iter().map(|r| r / dof).collect(),
+        gcv: fitted as f64 * total / columns as f64 / (dof * dof),
+        fitted,
     })
 }
 
@@ -285,5 +357,61 @@ mod tests {
             "{r:?}"
         );
         assert_eq!(r.bracketed, (true, false), "{r:?}");
+    }
+
+    /// Issue 62's truth 0.45 in closed form: a misfit that falls steeply to a knee at u = 0.7
+    /// and is nearly flat beyond it, the truth at u = 0.85 on the flat part, evaluated by a
+    /// five-point scan, a refinement's cluster and the sampled stations. One quadratic
+    /// across the knee (W = 0.3) puts the trend's minimum away from the truth; the window
+    /// GCV chooses is narrower than the knee's distance and its range holds the truth.
+    #[test]
+    fn a_knee_chooses_a_narrow_window_and_the_range_holds_the_truth() {
+        let truth = 0.85;
+        let trend = |u: f64, i: usize| {
+            let slope = 1.0 + i as f64 / 4.0;
+            40.0 * (0.7 - u).max(0.0) * slope + 4.0 * (u - truth) * slope
+        };
+        let runs: Vec<(f64, Vec<f64>)> = (0..=4)
+            .map(|k| k as f64 / 4.0)
+            .chain([0.9, 0.93, 0.95, 0.96, 0.965])
+            .chain((0..6).map(|k| 0.75 + 0.04 * k as f64))
+            .map(|u| (u, (0..4).map(|i| trend(u, i)).collect()))
+            .collect();
+        let r = range(&view(&runs), 1.0, |u| u).unwrap();
+        assert!(r.half_width < HALF_WIDTHS[HALF_WIDTHS.len() - 1], "{r:?}");
+        assert!(r.bounds.0 <= truth && truth <= r.bounds.1, "{r:?}");
+        assert!((r.optimum - truth).abs() < 0.02, "{r:?}");
+        let (us, rs): (Vec<f64>, Vec<&[f64]>) =
+            runs.iter().map(|(u, r)| (*u, r.as_slice())).unzip();
+        let mut distinct = us.clone();
+        distinct.sort_by(f64::total_cmp);
+        distinct.dedup();
+        let widest = fit(&us, &distinct, &rs, 0.3).unwrap();
+        let chosen = fit(&us, &distinct, &rs, r.half_width).unwrap();
+        assert!(chosen.gcv < widest.gcv, "GCV prefers the narrow window");
+    }
+
+    /// The stations: the range and a quarter of its width beyond, a quarter apart, within
+    /// [0, 1], none beside an evaluation; a range narrower than four `least` is sampled
+    /// `least` apart around it.
+    #[test]
+    fn the_sampling_stations_cover_the_range_and_its_edges() {
+        let u = sampling_proposals(0.4, 0.8, 1e-3, &[]);
+        let expected = [0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9];
+        assert_eq!(u.len(), expected.len(), "{u:?}");
+        assert!(
+            u.iter().zip(expected).all(|(a, b)| (a - b).abs() < 1e-12),
+            "{u:?}"
+        );
+        // evaluations within q/2 = 0.05 leave their stations out
+        let u = sampling_proposals(0.4, 0.8, 1e-3, &[0.52, 0.71, 0.2]);
+        assert_eq!(u.len(), 5, "{u:?}");
+        // clamped to the bounds, not repeated
+        let u = sampling_proposals(0.0, 0.2, 1e-3, &[]);
+        assert_eq!(u.first(), Some(&0.0));
+        assert!(u.windows(2).all(|w| w[1] > w[0]), "{u:?}");
+        let u = sampling_proposals(0.5, 0.5001, 0.01, &[]);
+        assert_eq!(u.len(), 3, "{u:?}");
+        assert!((u[1] - u[0] - 0.01).abs() < 1e-12, "{u:?}");
     }
 }

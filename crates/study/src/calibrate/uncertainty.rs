@@ -226,14 +226,15 @@ fn range_1d(c: &Calibration, finite: &[&Evaluation]) -> Range {
             format!(
                 "the hull of the evaluations' own range ({direct}: {}–{}) and the smooth \
                  response's ({}–{}: the residuals of {} evaluations smoothed by local quadratic \
-                 regression, the model's scatter about them, {:.2} σ, added to σ in quadrature; \
-                 calibrate/smooth.rs)",
+                 regression, the model's scatter about them, {:.2} σ pooled and up to {:.2} σ \
+                 at one point, added to σ in quadrature; calibrate/smooth.rs)",
                 short(p.value(low)),
                 short(p.value(high)),
                 short(s.bounds.0),
                 short(s.bounds.1),
                 s.evaluations,
-                s.scatter
+                s.scatter,
+                s.scatter_max
             )
         }
     };
