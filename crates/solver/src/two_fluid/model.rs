@@ -42,3 +42,19 @@ pub(super) struct Model {
     /// the side walls of a quasi-2-D channel (docs/model.md §8), none in a plane flow
     pub sidewalls: Option<Sidewalls>,
 }
+
+/// The momentum residual's floor speed as a fraction of the free-fall speed over the domain's
+/// height √(|g| L_y) ([`Model::momentum_speed_floor`]).
+const MOMENTUM_SPEED_FLOOR: f64 = 1e-6;
+
+impl Model {
+    /// The speed [m/s] below which a class of momentum nodes counts as at rest for its
+    /// residual (docs/model.md §4.11, [`super::residuals::ClassedResidual`]):
+    /// [`MOMENTUM_SPEED_FLOOR`] √(|g| L_y), about 2 µm/s on a half-metre domain; with the
+    /// 1e-3 tolerance a class at rest is converged when its velocity error is below ~2 nm/s.
+    /// Zero without gravity.
+    pub fn momentum_speed_floor(&self) -> f64 {
+        let g = self.gravity.0.hypot(self.gravity.1);
+        MOMENTUM_SPEED_FLOOR * (g * self.grid.y.length()).sqrt()
+    }
+}

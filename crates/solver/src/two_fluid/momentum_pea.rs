@@ -75,11 +75,12 @@ pub(super) fn momentum(
         worst_u
     };
     // docs/model.md §4.11: per class of node, or pooled as MFIX
+    let speed_floor = model.momentum_speed_floor();
     let measure = |r: &ClassedResidual| {
         if model.settings.pooled_momentum_residual {
             r.pooled()
         } else {
-            r.largest()
+            r.largest(speed_floor)
         }
     };
     let residual = measure(&residual_u) + measure(&residual_v);
@@ -511,7 +512,7 @@ fn eliminate_drag_with<const N: usize>(
                 if p > 0 && node.dilute[p - 1] {
                     continue;
                 }
-                let Some((res, scale)) = node.residual(p, m) else {
+                let Some((res, scale, a_p)) = node.residual(p, m) else {
                     continue;
                 };
                 let class = if p == 0 {
@@ -526,7 +527,7 @@ fn eliminate_drag_with<const N: usize>(
                             .map(|c| (coef.mu[c], coef.mu_kin[c])),
                     )
                 };
-                residual.add(p, class, res, scale);
+                residual.add(p, class, res, scale, a_p);
                 if res > worst.0 {
                     *worst = (res, p, c.dir, i, j);
                 }

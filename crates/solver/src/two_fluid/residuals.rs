@@ -68,11 +68,11 @@ impl<const N: usize> CoupledNode<N> {
         }
     }
 
-    /// The momentum residual of phase p (of m solids phases) and its normaliser, `None`
-    /// where the phase does not move: |(U, V)| ≤ 1e-15 with U, V the two face velocities
-    /// MFIX stores at one index (the east and north faces of the cell west of a u-node,
-    /// south of a v-node).
-    pub fn residual(&self, p: usize, m: usize) -> Option<(f64, f64)> {
+    /// The momentum residual of phase p (of m solids phases), its normaliser |a_P| |(U, V)|
+    /// and |a_P|, `None` where the phase does not move: |(U, V)| ≤ 1e-15 with U, V the two
+    /// face velocities MFIX stores at one index (the east and north faces of the cell west of
+    /// a u-node, south of a v-node).
+    pub fn residual(&self, p: usize, m: usize) -> Option<(f64, f64, f64)> {
         let (phi, drag) = (&self.phi, &self.drag);
         let speed = (phi[p] * phi[p] + self.cross[p] * self.cross[p]).sqrt();
         if speed <= 1e-15 {
@@ -84,7 +84,8 @@ impl<const N: usize> CoupledNode<N> {
             drag[p - 1] * (phi[0] - phi[p])
         };
         let res = (self.r_in[p] + coupling - self.a_in[p] * phi[p]).abs();
-        Some((res, self.a_in[p].abs() * speed))
+        let a = self.a_in[p].abs();
+        Some((res, a * speed, a))
     }
 }
 
@@ -97,11 +98,17 @@ impl<const N: usize> CoupledNode<N> {
 /// outer iterations stop before the head has moved where the converged step puts it (issue
 /// 58: the front of S-JEN-d at `wall` 13.12 m at a pooled 1e-3, 13.76 m at 1e-4 or with
 /// the classes).
+///
+/// A class at rest is normalised by no less than a floor speed times its Σ |a_P|
+/// ([`ClassedResidual::largest`]): normalised by its own vanishing speeds, the round-off of a
+/// bed at rest never falls below the tolerance, and steps are rejected until Δt is tiny
+/// (issue 60: the settled bed of cases/gas/ideal-gas-box.ron at coarse fidelity stalled at a
+/// momentum residual of 1.03e-3, in the solids' v at rest, with Δt at 8e-7 s).
 #[derive(Clone, Copy, Debug)]
 pub(super) struct ClassedResidual {
-    /// Σ residual and Σ normaliser per class: 0 the gas, 2p − 1 and 2p solids phase p's
-    /// loose and packed nodes
-    sums: [(f64, f64); 1 + 2 * MAX_SOLIDS_PHASES],
+    /// Σ residual, Σ normaliser and Σ |a_P| per class: 0 the gas, 2p − 1 and 2p solids phase
+    /// p's loose and packed nodes
+    sums: [(f64, f64, f64); 1 + 2 * MAX_SOLIDS_PHASES],
 }
 
 /// Where a solids node sits, for [`ClassedResidual`].
@@ -128,15 +135,15 @@ impl NodeClass {
 impl Default for ClassedResidual {
     fn default() -> Self {
         ClassedResidual {
-            sums: [(0.0, 0.0); 1 + 2 * MAX_SOLIDS_PHASES],
+            sums: [(0.0, 0.0, 0.0); 1 + 2 * MAX_SOLIDS_PHASES],
         }
     }
 }
 
 impl ClassedResidual {
-    /// Adds a node's residual and normaliser of phase p (0 the gas) in `class` (ignored for
-    /// the gas).
-    pub fn add(&mut self, p: usize, class: NodeClass, residual: f64, scale: f64) {
+    /// Adds a node's residual, normaliser and |a_P| of phase p (0 the gas) in `class`
+    /// (ignored for the gas).
+    pub fn add(&mut self, p: usize, class: NodeClass, residual: f64, scale: f64, a_p: f64) {
         let k = match (p, class) {
             (0, _) => 0,
             (p, NodeClass::Loose) => 2 * p - 1,
@@ -144,15 +151,18 @@ impl ClassedResidual {
         };
         self.sums[k].0 += residual;
         self.sums[k].1 += scale;
+        self.sums[k].2 += a_p;
     }
 
-    /// The largest class residual, each Σ residual / Σ normaliser (a class without moving
-    /// nodes counts 0).
-    pub fn largest(&self) -> f64 {
+    /// The largest class residual, each Σ residual / max(Σ normaliser, `speed_floor` Σ |a_P|)
+    /// (a class without moving nodes counts 0): a class whose a_P-weighted mean speed is below
+    /// `speed_floor` [m/s] is converged when its velocity error is below the tolerance times
+    /// that floor.
+    pub fn largest(&self, speed_floor: f64) -> f64 {
         self.sums
             .iter()
-            .filter(|(_, den)| *den > 0.0)
-            .map(|(num, den)| num / den)
+            .filter(|(_, den, _)| *den > 0.0)
+            .map(|(num, den, a)| num / den.max(speed_floor * a))
             .fold(0.0, f64::max)
     }
 
@@ -161,7 +171,7 @@ impl ClassedResidual {
         let (num, den) = self
             .sums
             .iter()
-            .fold((0.0, 0.0), |(n, d), (a, b)| (n + a, d + b));
+            .fold((0.0, 0.0), |(n, d), (a, b, _)| (n + a, d + b));
         if den > 0.0 {
             num / den
         } else {
@@ -234,15 +244,29 @@ mod tests {
     fn the_head_is_not_hidden_by_the_packed_body() {
         let mut r = ClassedResidual::default();
         // a packed body of large a_P converged to 1e-5, a loose head to 1e-2
-        r.add(1, NodeClass::Packed, 1e-5 * 1e6, 1e6);
-        r.add(1, NodeClass::Loose, 1e-2 * 1.0, 1.0);
-        r.add(0, NodeClass::Loose, 1e-4 * 10.0, 10.0);
-        assert!((r.largest() - 1e-2).abs() < 1e-15);
+        r.add(1, NodeClass::Packed, 1e-5 * 1e6, 1e6, 1e6);
+        r.add(1, NodeClass::Loose, 1e-2 * 1.0, 1.0, 1.0);
+        r.add(0, NodeClass::Loose, 1e-4 * 10.0, 10.0, 10.0);
+        assert!((r.largest(0.0) - 1e-2).abs() < 1e-15);
         // pooled, the head disappears below 1e-3
         assert!(r.pooled() < 2e-5);
-        assert_eq!(ClassedResidual::default().largest(), 0.0);
+        assert_eq!(ClassedResidual::default().largest(1e-6), 0.0);
         assert_eq!(NodeClass::of([(3.0, 1.0), (1.0, 1.0)]), NodeClass::Packed);
         assert_eq!(NodeClass::of([(1.5, 1.0)]), NodeClass::Loose);
+    }
+
+    /// A bed at rest (speeds 1e-10 m/s, its round-off 1e-3 of them) is converged against a
+    /// floor of 1e-6 m/s; a moving class's residual is the same value, bit for bit.
+    #[test]
+    fn a_class_at_rest_is_measured_against_the_speed_floor() {
+        let mut r = ClassedResidual::default();
+        let (a, speed) = (1e6, 1e-10);
+        r.add(1, NodeClass::Packed, 1e-3 * a * speed, a * speed, a);
+        assert!((r.largest(0.0) / 1e-3 - 1.0).abs() < 1e-12);
+        assert!((r.largest(1e-6) / 1e-7 - 1.0).abs() < 1e-12);
+        let mut moving = ClassedResidual::default();
+        moving.add(1, NodeClass::Loose, 0.37 * 2.5, 2.5, 1.0);
+        assert_eq!(moving.largest(1e-6), moving.largest(0.0));
     }
 
     #[test]
