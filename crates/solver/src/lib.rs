@@ -2,7 +2,8 @@
 //!
 //! - [`transport`]: upwind/Superbee convection and diffusion on a structured block;
 //! - [`momentum`]: one phase's momentum equations with variable ρε, ε, μ (docs/model.md §4.4),
-//!   u and v assembled once through the [`staggered`] component view;
+//!   u and v assembled once: each term written in the component's own coordinates and
+//!   compiled per direction (`direction`), dispatched from the [`staggered`] component view;
 //! - [`momentum_form`]: the momentum equations' continuity-subtracted (MFIX) or conservative
 //!   form (docs/model.md §4.3);
 //! - [`single_phase`]: the incompressible SIMPLE core on a stretched staggered grid;
@@ -22,6 +23,7 @@
 
 /// The floor of a slope whose foot turns (docs/model.md §9), from runout-mesh.
 pub use runout_mesh::bent_floor;
+pub(crate) mod direction;
 pub mod energy;
 pub mod kinematics;
 pub mod momentum;

@@ -22,12 +22,15 @@
 //! ([`PhaseFields::explicit_source`], computed by [`crate::stress`]); the interphase drag is
 //! added by the partial elimination of the two-fluid model.
 
+use std::marker::PhantomData;
+
 use runout_closures::FaceMean;
 use runout_linsolve::{RowMut, Stencil5};
 use runout_mesh::{Grid, Sides};
 use runout_walls::RobinFace;
 
 use crate::bent_floor::BentFloor;
+use crate::direction::{Direction, X, Y};
 use crate::momentum_form::add_continuity_remainder;
 pub use crate::momentum_form::MomentumForm;
 use crate::side::{outlet_pressure, OutletPoint, SideBc};
@@ -78,6 +81,18 @@ pub struct WallFaces {
     pub south: Option<Vec<RobinFace>>,
     /// closures along the north side
     pub north: Option<Vec<RobinFace>>,
+}
+
+impl WallFaces {
+    /// The per-node closures of each side, `None` where the side's [`SideBc`] holds.
+    fn sides(&self) -> Sides<Option<&Vec<RobinFace>>> {
+        Sides {
+            west: self.west.as_ref(),
+            east: self.east.as_ref(),
+            south: self.south.as_ref(),
+            north: self.north.as_ref(),
+        }
+    }
 }
 
 /// The closure at position `k` along `side`: the per-node one if given, else the side's.
@@ -137,20 +152,6 @@ pub(crate) fn face_mean(mean: FaceMean, a: f64, b: f64, weight_a: f64) -> f64 {
         FaceMean::Harmonic => harmonic(a, b, weight_a),
         FaceMean::Arithmetic => weight_a * a + (1.0 - weight_a) * b,
     }
-}
-
-/// Distance-weighted interpolation of a cell field to x-face i (1 ≤ i < nx; AVG_X).
-fn interp_x(grid: &Grid, field: &[f64], i: usize, j: usize) -> f64 {
-    let nx = grid.nx();
-    let w = grid.x.interpolation_weight(i - 1);
-    w * field[i - 1 + nx * j] + (1.0 - w) * field[i + nx * j]
-}
-
-/// Distance-weighted interpolation of a cell field to y-face j (1 ≤ j < ny; AVG_Y).
-fn interp_y(grid: &Grid, field: &[f64], i: usize, j: usize) -> f64 {
-    let nx = grid.nx();
-    let w = grid.y.interpolation_weight(j - 1);
-    w * field[i + nx * (j - 1)] + (1.0 - w) * field[i + nx * j]
 }
 
 /// Σ a_nb φ_nb + b of row k: the right-hand side with the current neighbour values (used
@@ -285,11 +286,9 @@ fn both_skipped(skip: Option<&[bool]>, k0: usize, k1: usize) -> bool {
 /// without relaxation (module doc); `old` is the component's velocity at the old time level.
 /// Rows of fixed nodes (wall normal velocities) read 0.
 ///
-/// u and v are one equation, written twice as mirror images (`u_faces`/`u_sources` and
-/// `v_faces`/`v_sources`; the test `v_of_the_transposed_problem_is_u` holds them to it): one
-/// assembly over the staggered [`Component`] view gave the same results bit for bit but
-/// cost 6–7 % more CPU on family M (docs/studies/performance.md, session 14), where the issue's
-/// constraint allows 3 %.
+/// u and v are one equation, written once in the component's own coordinates
+/// (`control_volume_faces`, `sources`) and compiled once per direction (`Direction`,
+/// direction.rs).
 #[allow(clippy::too_many_arguments)]
 pub fn assemble(
     ctx: &Context<'_>,
@@ -320,17 +319,17 @@ pub fn assemble_with_fluxes(
     faces: &mut FaceData,
     a: &mut Stencil5,
 ) {
+    let phi = c.pick(u, v);
     if c.dir == 0 {
-        u_faces(ctx, phase, fluxes, faces);
-        assemble_masked(faces, u, ctx.scheme, phase.skip, a);
-        u_sources(ctx, phase, old, a);
+        control_volume_faces::<X>(ctx, phase, fluxes, faces);
+        assemble_masked(faces, phi, ctx.scheme, phase.skip, a);
+        sources::<X>(ctx, phase, old, a);
     } else {
-        v_faces(ctx, phase, fluxes, faces);
-        assemble_masked(faces, v, ctx.scheme, phase.skip, a);
-        v_sources(ctx, phase, old, a);
+        control_volume_faces::<Y>(ctx, phase, fluxes, faces);
+        assemble_masked(faces, phi, ctx.scheme, phase.skip, a);
+        sources::<Y>(ctx, phase, old, a);
     }
     if ctx.form == MomentumForm::Conservative && ctx.dt.is_finite() {
-        let phi = if c.dir == 0 { u } else { v };
         add_continuity_remainder(ctx.grid, phase, c, phi, faces, ctx.dt, a);
     }
 }
@@ -408,363 +407,268 @@ pub fn mass_fluxes(
     }
 }
 
-/// The u-nodes of a grid: the cells beside each node, the distance weights between them and
-/// the widths of the control volumes (a periodic column's node 0 lies between cell nx − 1 and
-/// cell 0 and spans a whole cell).
-#[derive(Clone, Copy)]
-struct UNodes<'a> {
+/// The nodes of component `D` on a grid: the cells beside each node, the distance weights
+/// between them and the widths of the control volumes (a periodic column's node 0 lies
+/// between cell nx − 1 and cell 0 and spans a whole cell).
+struct Nodes<'a, D> {
     grid: &'a Grid,
     periodic: bool,
+    direction: PhantomData<D>,
 }
 
-impl UNodes<'_> {
-    /// The cells west and east of u-node i: one at an end, unless the column is periodic,
-    /// where node 0 lies between cell nx − 1 (= 0) and cell 0.
-    fn cells_beside(self, i: usize) -> (Option<usize>, Option<usize>) {
-        let nx = self.grid.nx();
-        if self.periodic && i == 0 {
-            (Some(nx - 1), Some(0))
-        } else {
-            (i.checked_sub(1), (i < nx).then_some(i))
+impl<'a, D: Direction> Nodes<'a, D> {
+    #[inline]
+    fn of(grid: &'a Grid) -> Self {
+        Nodes {
+            grid,
+            periodic: D::periodic(grid),
+            direction: PhantomData,
         }
     }
 
-    /// Distance weight of cell w at the face between cells w and e (½ across the wrap).
-    fn x_weight(self, w: usize, e: usize) -> f64 {
-        if w < e {
-            self.grid.x.interpolation_weight(w)
+    /// The cells before and after node a along the direction: one at an end, unless the
+    /// column is periodic, where node 0 lies between cell nx − 1 (= 0) and cell 0.
+    #[inline]
+    fn cells_beside(&self, a: usize) -> (Option<usize>, Option<usize>) {
+        let n = D::along(self.grid).len();
+        if self.periodic && a == 0 {
+            (Some(n - 1), Some(0))
+        } else {
+            (a.checked_sub(1), (a < n).then_some(a))
+        }
+    }
+
+    /// Distance weight of cell `lo` at the face between cells `lo` and `hi` (½ across the
+    /// wrap).
+    #[inline]
+    fn weight(&self, lo: usize, hi: usize) -> f64 {
+        if lo < hi {
+            D::along(self.grid).interpolation_weight(lo)
         } else {
             0.5
         }
     }
 
-    /// Width of the u control volume: the whole cell for a periodic column's node 0.
-    fn width(self, i: usize) -> f64 {
-        let (nx, dx) = (self.grid.nx(), self.grid.x.widths());
-        if self.periodic && i == 0 {
-            0.5 * (dx[nx - 1] + dx[0])
+    /// Width of the control volume of node a: the whole cell for a periodic column's node 0.
+    #[inline]
+    fn width(&self, a: usize) -> f64 {
+        let widths = D::along(self.grid).widths();
+        if self.periodic && a == 0 {
+            0.5 * (widths[widths.len() - 1] + widths[0])
         } else {
-            cv_width(dx, i)
+            cv_width(widths, a)
         }
     }
 }
 
-/// The face fluxes and conductances of the u control volumes (module doc).
-fn u_faces(ctx: &Context<'_>, phase: &PhaseFields<'_>, fluxes: &MassFluxes, faces: &mut FaceData) {
+/// The face fluxes and conductances of component `D`'s control volumes (module doc).
+fn control_volume_faces<D: Direction>(
+    ctx: &Context<'_>,
+    phase: &PhaseFields<'_>,
+    fluxes: &MassFluxes,
+    faces: &mut FaceData,
+) {
     let grid = ctx.grid;
-    let (nx, ny) = (grid.nx(), grid.ny());
-    let (dx, dy) = (grid.x.widths(), grid.y.widths());
-    let dyc = grid.y.face_spacing();
-    let mx = nx + 1;
+    let nx = grid.nx();
+    let (n_a, n_b) = (D::along(grid).len(), D::across(grid).len());
+    let (d_a, d_b) = (D::along(grid).widths(), D::across(grid).widths());
+    let across_spacing = D::across(grid).face_spacing();
     let mu = phase.viscosity;
-    // scalar-cell x-face mass flux at u-node (i, j)
-    let x_face_flux = |i: usize, j: usize| fluxes.x[i + mx * j];
-    let nodes = UNodes {
-        grid,
-        periodic: ctx.grid.periodic_x(),
+    let nodes = Nodes::<D>::of(grid);
+    // scalar-cell mass fluxes normal to the direction at node (a, b), and across it at the
+    // face b of cell a ([`MassFluxes`])
+    let (along_flux, across_flux) = D::mass_fluxes(fluxes);
+    let along_flux = |a: usize, b: usize| along_flux[D::node(a, b, nx)];
+    let across_flux = |a: usize, b: usize| across_flux[D::cross_node(a, b, nx)];
+    D::for_each(1..n_a + 1, 0..n_b, |a, b| {
+        // the face through cell centre a − 1, between nodes a − 1 and a
+        let k = D::along_face(faces, a, b);
+        let (flux, cond) = D::along_faces(faces);
+        // periodic column: the face couples node 0 to its own copy, and its flux and
+        // diffusion cancel those of the wrapped face on the other side
+        if nodes.periodic || both_skipped(phase.skip, D::node(a - 1, b, nx), D::node(a, b, nx)) {
+            (flux[k], cond[k]) = (0.0, 0.0);
+            return;
+        }
+        flux[k] = 0.5 * (along_flux(a - 1, b) + along_flux(a, b));
+        cond[k] = mu[D::cell(a - 1, b, nx)] * d_b[b] / d_a[a - 1];
+    });
+    D::for_each(0..n_a + 1, 1..n_b, |a, b| {
+        // the face between nodes (a, b − 1) and (a, b): halves of the fluxes of the cells
+        // beside the node
+        let k = D::across_face(faces, a, b);
+        let (flux, cond) = D::across_faces(faces);
+        if both_skipped(phase.skip, D::node(a, b - 1, nx), D::node(a, b, nx)) {
+            (flux[k], cond[k]) = (0.0, 0.0);
+            return;
+        }
+        let (lo, hi) = nodes.cells_beside(a);
+        flux[k] = [lo, hi]
+            .into_iter()
+            .flatten()
+            .map(|c| 0.5 * across_flux(c, b))
+            .sum();
+        // viscosity at the corner: harmonic (μ(I): arithmetic) across, then along (MFIX
+        // AVG_X_H of AVG_Y_H for u, AVG_Y_H of AVG_X_H for v; docs/model.md §4.1)
+        let mean = phase.viscosity_mean;
+        let line = |c: usize| {
+            face_mean(
+                mean,
+                mu[D::cell(c, b - 1, nx)],
+                mu[D::cell(c, b, nx)],
+                D::across(grid).interpolation_weight(b - 1),
+            )
+        };
+        let mu_corner = match (lo, hi) {
+            (Some(l), Some(h)) => face_mean(mean, line(l), line(h), nodes.weight(l, h)),
+            (Some(c), None) | (None, Some(c)) => line(c),
+            (None, None) => 0.0,
+        };
+        cond[k] = mu_corner * nodes.width(a) / across_spacing[b];
+    });
+}
+
+/// The body force per unit mass at node (a, b) between cells `lo` and `hi` along the
+/// direction: gravity's component, or a bent floor's field, whose v equations gain the
+/// centrifugal force of the phase's u (docs/model.md §9).
+fn body_force<D: Direction>(
+    ctx: &Context<'_>,
+    phase: &PhaseFields<'_>,
+    a: usize,
+    b: usize,
+    (lo, hi): (Option<usize>, Option<usize>),
+) -> f64 {
+    let grid = ctx.grid;
+    let Some(floor) = ctx.bent_floor else {
+        return D::pick(ctx.gravity.0, ctx.gravity.1);
     };
-    let cells_beside = |i: usize| nodes.cells_beside(i);
-    let x_weight = |w: usize, e: usize| nodes.x_weight(w, e);
-    let width = |i: usize| nodes.width(i);
-    // scalar-cell y-face mass flux at v-node (i, j), 1 ≤ j < ny
-    let y_face_flux = |i: usize, j: usize| fluxes.y[i + nx * j];
-    for j in 0..ny {
-        for i in 1..=nx {
-            // u-CV x-face at cell centre i−1, between u-nodes i−1 and i
-            let k = faces.xf(i, j);
-            // periodic column: the face couples node 0 to its own copy, and its flux and
-            // diffusion cancel those of the wrapped face on the other side
-            if ctx.grid.periodic_x() || both_skipped(phase.skip, i - 1 + mx * j, i + mx * j) {
-                (faces.flux_x[k], faces.cond_x[k]) = (0.0, 0.0);
-                continue;
-            }
-            faces.flux_x[k] = 0.5 * (x_face_flux(i - 1, j) + x_face_flux(i, j));
-            faces.cond_x[k] = mu[i - 1 + nx * j] * dy[j] / dx[i - 1];
+    let (xc, yc) = (grid.x.centres(), grid.y.centres());
+    if D::DIR == 0 {
+        match (lo, hi) {
+            (Some(w), Some(e)) => floor.force_x_between(xc[w], xc[e], yc[b]),
+            _ => floor.force(grid.x.faces()[a], yc[b]).0,
         }
-    }
-    for j in 1..ny {
-        for i in 0..mx {
-            // u-CV y-face at y-face j: halves of the two adjacent cells' v-face fluxes
-            if both_skipped(phase.skip, i + mx * (j - 1), i + mx * j) {
-                let k = faces.yf(i, j);
-                (faces.flux_y[k], faces.cond_y[k]) = (0.0, 0.0);
-                continue;
-            }
-            let (west, east) = cells_beside(i);
-            let flux: f64 = [west, east]
-                .into_iter()
-                .flatten()
-                .map(|c| 0.5 * y_face_flux(c, j))
-                .sum();
-            // viscosity at the corner: harmonic (μ(I): arithmetic) in y per column, then in
-            // x (AVG_X_H of AVG_Y_H)
-            let mean = phase.viscosity_mean;
-            let column = |c: usize| {
-                face_mean(
-                    mean,
-                    mu[c + nx * (j - 1)],
-                    mu[c + nx * j],
-                    grid.y.interpolation_weight(j - 1),
-                )
-            };
-            let mu_corner = match (west, east) {
-                (Some(w), Some(e)) => face_mean(mean, column(w), column(e), x_weight(w, e)),
-                (Some(c), None) | (None, Some(c)) => column(c),
-                (None, None) => 0.0,
-            };
-            let k = faces.yf(i, j);
-            faces.flux_y[k] = flux;
-            faces.cond_y[k] = mu_corner * width(i) / dyc[j];
-        }
+    } else {
+        let u = phase
+            .velocity_along
+            .map_or(0.0, |u| mean_u_at_v_node(u, grid.nx(), b, lo, hi));
+        floor.force(xc[b], 0.0).1 + floor.centrifugal(xc[b], u)
     }
 }
 
-/// The sources of the u equations (walls, transient, gravity, pressure gradients, the
-/// explicit stress) and the rows of fixed nodes.
-fn u_sources(ctx: &Context<'_>, phase: &PhaseFields<'_>, u_old: &[f64], a: &mut Stencil5) {
-    let grid = ctx.grid;
-    let (nx, ny) = (grid.nx(), grid.ny());
-    let (dx, dy) = (grid.x.widths(), grid.y.widths());
-    let mx = nx + 1;
-    let rho_eps = phase.bulk_density;
-    let mu = phase.viscosity;
-    let nodes = UNodes {
-        grid,
-        periodic: ctx.grid.periodic_x(),
+/// The gas pressure an outlet at the `high` (else low) end of component `D`'s line b holds
+/// (docs/model.md §4.1, §9); 0 at a wall.
+fn end_pressure<D: Direction>(ctx: &Context<'_>, b: usize, high: bool) -> f64 {
+    let (along, across) = (D::along(ctx.grid), D::across(ctx.grid));
+    let (low_end, high_end) = D::ends(ctx.bcs);
+    let (bc, a_end) = if high {
+        (high_end, along.end())
+    } else {
+        (low_end, along.start())
     };
-    let cells_beside = |i: usize| nodes.cells_beside(i);
-    let x_weight = |w: usize, e: usize| nodes.x_weight(w, e);
-    let width = |i: usize| nodes.width(i);
-    let y0 = grid.y.start();
-    let yc = grid.y.centres();
-    let (x0, x1) = (grid.x.start(), grid.x.end());
-    let xc = grid.x.centres();
-    for j in 0..ny {
-        let west_point = OutletPoint::on_side((x0, y0), (x0, yc[j]), ctx.gravity.1);
-        let p_west = outlet_pressure(ctx.bent_floor, &ctx.bcs.west, west_point).unwrap_or(0.0);
-        let east_point = OutletPoint::on_side((x1, y0), (x1, yc[j]), ctx.gravity.1);
-        let p_east = outlet_pressure(ctx.bent_floor, &ctx.bcs.east, east_point).unwrap_or(0.0);
-        for i in 0..mx {
-            let k = i + mx * j;
-            if a.pattern().fixed_mask()[k] {
-                fixed_row(a, k, 0.0);
-                continue;
-            }
-            if phase.skip.is_some_and(|s| s[k]) {
-                continue;
-            }
-            let width = width(i);
-            // cells on either side (the inside cell only at an outlet end)
-            let (west, east) = cells_beside(i);
-            let half_volume = |c: Option<usize>, field: &[f64]| {
-                c.map_or(0.0, |c| 0.5 * dx[c] * dy[j] * field[c + nx * j])
-            };
-            // walls below and above: the fluid cells' viscosity (docs/model.md §3.1)
-            let mu_wall = |row: usize| -> f64 {
-                match (west, east) {
-                    (Some(w), Some(e)) => {
-                        harmonic(mu[w + nx * row], mu[e + nx * row], x_weight(w, e))
-                    }
-                    (Some(c), None) | (None, Some(c)) => mu[c + nx * row],
-                    (None, None) => 0.0,
-                }
-            };
-            let over = ctx.wall_faces;
-            if j == 0 {
-                let bc = side_closure(&ctx.bcs.south, over.and_then(|w| w.south.as_ref()), i);
-                add_wall_face(a, k, &bc, mu_wall(0), dy[0], width);
-            }
-            if j == ny - 1 {
-                let bc = side_closure(&ctx.bcs.north, over.and_then(|w| w.north.as_ref()), i);
-                add_wall_face(a, k, &bc, mu_wall(ny - 1), dy[ny - 1], width);
-            }
-            // transient (implicit Euler, docs/model.md §4.3–4.4)
-            let a0 = (half_volume(west, phase.bulk_density_old)
-                + half_volume(east, phase.bulk_density_old))
-                / ctx.dt;
-            a.a_p[k] += a0;
-            a.b[k] += a0 * u_old[k];
-            // body force with the current bulk density
-            let g_x = match (ctx.bent_floor, west, east) {
-                (None, ..) => ctx.gravity.0,
-                (Some(b), Some(w), Some(e)) => b.force_x_between(xc[w], xc[e], yc[j]),
-                (Some(b), ..) => b.force(grid.x.faces()[i], yc[j]).0,
-            };
-            a.b[k] += (half_volume(west, rho_eps) + half_volume(east, rho_eps)) * g_x;
-            // gas pressure, −ε̄ ΔP A; solids pressure, −ΔP_s A
-            let eps_face = match (west, east) {
-                (Some(w), Some(e)) if w >= e => {
-                    let f = phase.volume_fraction;
-                    0.5 * (f[w + nx * j] + f[e + nx * j])
-                }
-                (Some(_), Some(_)) => interp_x(grid, phase.volume_fraction, i, j),
-                (Some(c), None) | (None, Some(c)) => phase.volume_fraction[c + nx * j],
-                (None, None) => 0.0,
-            };
-            let p_w = west.map_or(p_west, |c| ctx.gas_pressure[c + nx * j]);
-            let p_e = east.map_or(p_east, |c| ctx.gas_pressure[c + nx * j]);
-            a.b[k] += eps_face * (p_w - p_e) * dy[j];
-            if let (Some(ps), Some(w), Some(e)) = (phase.solids_pressure, west, east) {
-                a.b[k] += (ps[w + nx * j] - ps[e + nx * j]) * dy[j];
-            }
-            // −(P*_E − P*_W) A, MFIX's SDPS (docs/model.md §4.4, §2.4.1)
-            if let (Some(pp), Some(w), Some(e)) = (phase.plastic_pressure, west, east) {
-                a.b[k] += (pp[w + nx * j] - pp[e + nx * j]) * dy[j];
-            }
-            if let Some(tau) = phase.explicit_source {
-                a.b[k] += tau[k];
-            }
-        }
-    }
+    let corner = D::pick((a_end, across.start()), (across.start(), a_end));
+    let point = D::pick((a_end, across.centres()[b]), (across.centres()[b], a_end));
+    let g_across = D::pick(ctx.gravity.1, ctx.gravity.0);
+    let at = OutletPoint::on_side(corner, point, g_across);
+    outlet_pressure(ctx.bent_floor, bc, at).unwrap_or(0.0)
 }
 
-/// The face fluxes and conductances of the v control volumes (module doc).
-fn v_faces(ctx: &Context<'_>, phase: &PhaseFields<'_>, fluxes: &MassFluxes, faces: &mut FaceData) {
+/// The sources of component `D`'s equations (walls, transient, gravity, pressure
+/// gradients, the explicit stress) and the rows of fixed nodes.
+fn sources<D: Direction>(
+    ctx: &Context<'_>,
+    phase: &PhaseFields<'_>,
+    old: &[f64],
+    a: &mut Stencil5,
+) {
     let grid = ctx.grid;
-    let (nx, ny) = (grid.nx(), grid.ny());
+    let nx = grid.nx();
+    let (n_a, n_b) = (D::along(grid).len(), D::across(grid).len());
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
-    let dxc = grid.x.face_spacing();
-    let my = ny + 1;
-    let mu = phase.viscosity;
-    // scalar-cell y-face and x-face mass fluxes ([`MassFluxes`])
-    let y_face_flux = |i: usize, j: usize| fluxes.y[i + nx * j];
-    let x_face_flux = |i: usize, j: usize| fluxes.x[i + (nx + 1) * j];
-    for j in 0..my {
-        for i in 1..nx {
-            // v-CV x-face at x-face i: halves of the two adjacent rows' u-face fluxes
-            if both_skipped(phase.skip, i - 1 + nx * j, i + nx * j) {
-                let k = faces.xf(i, j);
-                (faces.flux_x[k], faces.cond_x[k]) = (0.0, 0.0);
-                continue;
-            }
-            let (south, north) = (j.checked_sub(1), (j < ny).then_some(j));
-            let flux: f64 = [south, north]
-                .into_iter()
-                .flatten()
-                .map(|r| 0.5 * x_face_flux(i, r))
-                .sum();
-            let mean = phase.viscosity_mean;
-            let row = |r: usize| {
-                face_mean(
-                    mean,
-                    mu[i - 1 + nx * r],
-                    mu[i + nx * r],
-                    grid.x.interpolation_weight(i - 1),
-                )
-            };
-            let mu_corner = match (south, north) {
-                (Some(s), Some(n)) => {
-                    face_mean(mean, row(s), row(n), grid.y.interpolation_weight(s))
+    let d_b = D::across(grid).widths();
+    let (rho_eps, mu, eps) = (phase.bulk_density, phase.viscosity, phase.volume_fraction);
+    let nodes = Nodes::<D>::of(grid);
+    let cell = |c: usize, b: usize| D::cell(c, b, nx);
+    let over = ctx.wall_faces.map_or(Sides::all(None), WallFaces::sides);
+    let (low_wall, high_wall) = D::walls(ctx.bcs);
+    let (low_faces, high_faces) = D::walls(&over);
+    D::for_each(0..n_a + 1, 0..n_b, |a_node, b| {
+        let k = D::node(a_node, b, nx);
+        if a.pattern().fixed_mask()[k] {
+            fixed_row(a, k, 0.0);
+            return;
+        }
+        if phase.skip.is_some_and(|s| s[k]) {
+            return;
+        }
+        let width = nodes.width(a_node);
+        // cells on either side along the component (the inside cell only at an outlet end)
+        let (lo, hi) = nodes.cells_beside(a_node);
+        let half_volume = |c: Option<usize>, field: &[f64]| {
+            c.map_or(0.0, |c| {
+                let (i, j) = D::xy(c, b);
+                0.5 * dx[i] * dy[j] * field[i + nx * j]
+            })
+        };
+        // walls across the line: the fluid cells' viscosity (docs/model.md §3.1)
+        let mu_wall = |row: usize| -> f64 {
+            match (lo, hi) {
+                (Some(l), Some(h)) => {
+                    harmonic(mu[cell(l, row)], mu[cell(h, row)], nodes.weight(l, h))
                 }
-                (Some(r), None) | (None, Some(r)) => row(r),
+                (Some(c), None) | (None, Some(c)) => mu[cell(c, row)],
                 (None, None) => 0.0,
-            };
-            let k = faces.xf(i, j);
-            faces.flux_x[k] = flux;
-            faces.cond_x[k] = mu_corner * cv_width(dy, j) / dxc[i];
+            }
+        };
+        if b == 0 {
+            let bc = side_closure(low_wall, *low_faces, a_node);
+            add_wall_face(a, k, &bc, mu_wall(0), d_b[0], width);
         }
-    }
-    for j in 1..my {
-        for i in 0..nx {
-            let k = faces.yf(i, j);
-            if both_skipped(phase.skip, i + nx * (j - 1), i + nx * j) {
-                (faces.flux_y[k], faces.cond_y[k]) = (0.0, 0.0);
-                continue;
-            }
-            faces.flux_y[k] = 0.5 * (y_face_flux(i, j - 1) + y_face_flux(i, j));
-            faces.cond_y[k] = mu[i + nx * (j - 1)] * dx[i] / dy[j - 1];
+        if b == n_b - 1 {
+            let bc = side_closure(high_wall, *high_faces, a_node);
+            add_wall_face(a, k, &bc, mu_wall(n_b - 1), d_b[n_b - 1], width);
         }
-    }
-}
-
-/// The sources of the v equations (walls, transient, gravity, pressure gradients, the
-/// explicit stress) and the rows of fixed nodes.
-fn v_sources(ctx: &Context<'_>, phase: &PhaseFields<'_>, v_old: &[f64], a: &mut Stencil5) {
-    let grid = ctx.grid;
-    let (nx, ny) = (grid.nx(), grid.ny());
-    let (dx, dy) = (grid.x.widths(), grid.y.widths());
-    let my = ny + 1;
-    let rho_eps = phase.bulk_density;
-    let mu = phase.viscosity;
-    let x0 = grid.x.start();
-    let (y0, y1) = (grid.y.start(), grid.y.end());
-    let xc = grid.x.centres();
-    for j in 0..my {
-        for i in 0..nx {
-            let k = i + nx * j;
-            if a.pattern().fixed_mask()[k] {
-                fixed_row(a, k, 0.0);
-                continue;
+        // transient (implicit Euler, docs/model.md §4.3–4.4)
+        let a0 = (half_volume(lo, phase.bulk_density_old)
+            + half_volume(hi, phase.bulk_density_old))
+            / ctx.dt;
+        a.a_p[k] += a0;
+        a.b[k] += a0 * old[k];
+        // body force with the current bulk density
+        let mass = half_volume(lo, rho_eps) + half_volume(hi, rho_eps);
+        a.b[k] += mass * body_force::<D>(ctx, phase, a_node, b, (lo, hi));
+        // gas pressure, −ε̄ ΔP A (ε̄ distance-interpolated, AVG_X / AVG_Y); solids pressure,
+        // −ΔP_s A
+        let eps_face = match (lo, hi) {
+            // across a periodic wrap
+            (Some(l), Some(h)) if l >= h => 0.5 * (eps[cell(l, b)] + eps[cell(h, b)]),
+            (Some(l), Some(h)) => {
+                let w = D::along(grid).interpolation_weight(l);
+                w * eps[cell(l, b)] + (1.0 - w) * eps[cell(h, b)]
             }
-            if phase.skip.is_some_and(|s| s[k]) {
-                continue;
-            }
-            let height = cv_width(dy, j);
-            let (south, north) = (j.checked_sub(1), (j < ny).then_some(j));
-            let half_volume = |r: Option<usize>, field: &[f64]| {
-                r.map_or(0.0, |r| 0.5 * dx[i] * dy[r] * field[i + nx * r])
-            };
-            let mu_wall = |col: usize| -> f64 {
-                match (south, north) {
-                    (Some(s), Some(n)) => harmonic(
-                        mu[col + nx * s],
-                        mu[col + nx * n],
-                        grid.y.interpolation_weight(s),
-                    ),
-                    (Some(r), None) | (None, Some(r)) => mu[col + nx * r],
-                    (None, None) => 0.0,
-                }
-            };
-            let over = ctx.wall_faces;
-            if i == 0 {
-                let bc = side_closure(&ctx.bcs.west, over.and_then(|w| w.west.as_ref()), j);
-                add_wall_face(a, k, &bc, mu_wall(0), dx[0], height);
-            }
-            if i == nx - 1 {
-                let bc = side_closure(&ctx.bcs.east, over.and_then(|w| w.east.as_ref()), j);
-                add_wall_face(a, k, &bc, mu_wall(nx - 1), dx[nx - 1], height);
-            }
-            let a0 = (half_volume(south, phase.bulk_density_old)
-                + half_volume(north, phase.bulk_density_old))
-                / ctx.dt;
-            a.a_p[k] += a0;
-            a.b[k] += a0 * v_old[k];
-            let mass = half_volume(south, rho_eps) + half_volume(north, rho_eps);
-            match ctx.bent_floor {
-                None => a.b[k] += mass * ctx.gravity.1,
-                Some(b) => {
-                    let u = phase
-                        .velocity_along
-                        .map_or(0.0, |u| mean_u_at_v_node(u, nx, i, south, north));
-                    a.b[k] += mass * (b.force(xc[i], 0.0).1 + b.centrifugal(xc[i], u));
-                }
-            }
-            let eps_face = match (south, north) {
-                (Some(_), Some(_)) => interp_y(grid, phase.volume_fraction, i, j),
-                (Some(r), None) | (None, Some(r)) => phase.volume_fraction[i + nx * r],
-                (None, None) => 0.0,
-            };
-            let south_point = OutletPoint::on_side((x0, y0), (xc[i], y0), ctx.gravity.0);
-            let p_south =
-                outlet_pressure(ctx.bent_floor, &ctx.bcs.south, south_point).unwrap_or(0.0);
-            let north_point = OutletPoint::on_side((x0, y1), (xc[i], y1), ctx.gravity.0);
-            let p_north =
-                outlet_pressure(ctx.bent_floor, &ctx.bcs.north, north_point).unwrap_or(0.0);
-            let p_s = south.map_or(p_south, |r| ctx.gas_pressure[i + nx * r]);
-            let p_n = north.map_or(p_north, |r| ctx.gas_pressure[i + nx * r]);
-            a.b[k] += eps_face * (p_s - p_n) * dx[i];
-            if let (Some(ps), Some(s), Some(n)) = (phase.solids_pressure, south, north) {
-                a.b[k] += (ps[i + nx * s] - ps[i + nx * n]) * dx[i];
-            }
-            // −(P*_N − P*_S) A, MFIX's SDPS (docs/model.md §4.4, §2.4.1)
-            if let (Some(pp), Some(s), Some(n)) = (phase.plastic_pressure, south, north) {
-                a.b[k] += (pp[i + nx * s] - pp[i + nx * n]) * dx[i];
-            }
-            if let Some(tau) = phase.explicit_source {
-                a.b[k] += tau[k];
-            }
+            (Some(c), None) | (None, Some(c)) => eps[cell(c, b)],
+            (None, None) => 0.0,
+        };
+        let p_lo = lo.map_or_else(
+            || end_pressure::<D>(ctx, b, false),
+            |c| ctx.gas_pressure[cell(c, b)],
+        );
+        let p_hi = hi.map_or_else(
+            || end_pressure::<D>(ctx, b, true),
+            |c| ctx.gas_pressure[cell(c, b)],
+        );
+        a.b[k] += eps_face * (p_lo - p_hi) * d_b[b];
+        if let (Some(ps), Some(l), Some(h)) = (phase.solids_pressure, lo, hi) {
+            a.b[k] += (ps[cell(l, b)] - ps[cell(h, b)]) * d_b[b];
         }
-    }
+        // −ΔP* A, MFIX's SDPS (docs/model.md §4.4, §2.4.1)
+        if let (Some(pp), Some(l), Some(h)) = (phase.plastic_pressure, lo, hi) {
+            a.b[k] += (pp[cell(l, b)] - pp[cell(h, b)]) * d_b[b];
+        }
+        if let Some(tau) = phase.explicit_source {
+            a.b[k] += tau[k];
+        }
+    });
 }
 
 #[cfg(test)]

@@ -319,8 +319,9 @@ impl SinglePhase {
     /// One SIMPLE outer iteration with time step `dt` (`f64::INFINITY` for a steady
     /// iteration). Returns the residuals of the momentum predictor and of continuity.
     pub fn outer_iteration(&mut self, dt: f64, iteration: usize) -> Result<Residuals, SolverError> {
-        let (ru, worst_u) = self.momentum_u(dt)?;
-        let (rv, worst_v) = self.momentum_v(dt)?;
+        let [cu, cv] = Component::of_grid(&self.grid);
+        let (ru, worst_u) = self.momentum(cu, dt)?;
+        let (rv, worst_v) = self.momentum(cv, dt)?;
         let (mass, worst_mass) = self.pressure_correction()?;
         for (name, field) in [("u", &self.u), ("v", &self.v), ("p", &self.p)] {
             if let Some(node) = field.iter().position(|x| !x.is_finite()) {
@@ -371,69 +372,12 @@ impl SinglePhase {
         (if den > 0.0 { num / den } else { num }, worst)
     }
 
-    fn momentum_u(&mut self, dt: f64) -> Result<(f64, usize), SolverError> {
-        let (nx, mx) = (self.grid.nx(), self.grid.nx() + 1);
-        let dy = self.grid.y.widths();
-        let ctx = Context {
-            grid: &self.grid,
-            bcs: &self.bcs,
-            gravity: self.gravity,
-            bent_floor: None,
-            dt,
-            scheme: self.settings.scheme,
-            gas_pressure: &self.p,
-            wall_faces: None,
-            form: MomentumForm::ContinuitySubtracted,
-        };
-        let phase = PhaseFields {
-            bulk_density: &self.density_cells,
-            bulk_density_old: &self.density_cells,
-            volume_fraction: &self.ones,
-            viscosity: &self.viscosity_cells,
-            viscosity_mean: FaceMean::Harmonic,
-            solids_pressure: None,
-            plastic_pressure: None,
-            explicit_source: None,
-            skip: None,
-            velocity_along: None,
-        };
-        let [cu, _] = Component::of_grid(&self.grid);
-        assemble(
-            &ctx,
-            &phase,
-            cu,
-            &self.u,
-            &self.v,
-            &self.u_old,
-            &mut self.u_faces,
-            &mut self.a_u,
-        );
-        let a = &mut self.a_u;
-        let v = &self.v;
-        let speed = |k: usize| {
-            let (i, j) = (k % mx, k / mx);
-            self.u[k].hypot(v[i.min(nx - 1) + nx * j])
-        };
-        let r = Self::finish_momentum(a, &self.u, speed, self.settings.relax_velocity);
-        for k in 0..self.d_u.len() {
-            self.d_u[k] = if a.pattern().fixed_mask()[k] {
-                0.0
-            } else {
-                dy[k / mx] / a.a_p[k]
-            };
-        }
-        self.solver_u
-            .setup_and_solve(a, &mut self.u)
-            .map_err(|source| SolverError::Linear {
-                equation: "u momentum",
-                source,
-            })?;
-        Ok(r)
-    }
-
-    fn momentum_v(&mut self, dt: f64) -> Result<(f64, usize), SolverError> {
+    /// The momentum predictor of component `c` (u or v) with the current pressure: the
+    /// assembly (docs/model.md §4.4), the residual and Patankar relaxation (§4.10–4.11), the
+    /// d coefficients of the pressure correction (§4.6) and the solve.
+    fn momentum(&mut self, c: Component, dt: f64) -> Result<(f64, usize), SolverError> {
         let (nx, ny) = (self.grid.nx(), self.grid.ny());
-        let dx = self.grid.x.widths();
+        let (dx, dy) = (self.grid.x.widths(), self.grid.y.widths());
         let ctx = Context {
             grid: &self.grid,
             bcs: &self.bcs,
@@ -457,36 +401,36 @@ impl SinglePhase {
             skip: None,
             velocity_along: None,
         };
-        let [_, cv] = Component::of_grid(&self.grid);
-        assemble(
-            &ctx,
-            &phase,
-            cv,
-            &self.u,
-            &self.v,
-            &self.v_old,
-            &mut self.v_faces,
-            &mut self.a_v,
+        let (old, faces, a) = c.pick(
+            (&self.u_old, &mut self.u_faces, &mut self.a_u),
+            (&self.v_old, &mut self.v_faces, &mut self.a_v),
         );
-        let a = &mut self.a_v;
-        let u = &self.u;
+        assemble(&ctx, &phase, c, &self.u, &self.v, old, faces, a);
+        // the speed from both components stored at the same (i, j), the other one's node
+        // clamped to its block (docs/model.md §4.11)
+        let (phi, other) = c.pick((&self.u, &self.v), (&self.v, &self.u));
         let speed = |k: usize| {
-            let (i, j) = (k % nx, k / nx);
-            self.v[k].hypot(u[i + (nx + 1) * j.min(ny - 1)])
+            let (i, j) = (k % c.mx, k / c.mx);
+            let (i, j, other_mx) = c.pick((i.min(nx - 1), j, nx), (i, j.min(ny - 1), nx + 1));
+            phi[k].hypot(other[i + other_mx * j])
         };
-        let r = Self::finish_momentum(a, &self.v, speed, self.settings.relax_velocity);
-        for k in 0..self.d_v.len() {
-            let i = k % nx;
-            self.d_v[k] = if a.pattern().fixed_mask()[k] {
+        let r = Self::finish_momentum(a, phi, speed, self.settings.relax_velocity);
+        let d = c.pick(&mut self.d_u, &mut self.d_v);
+        for k in 0..d.len() {
+            d[k] = if a.pattern().fixed_mask()[k] {
                 0.0
             } else {
-                dx[i] / a.a_p[k]
+                c.face_area(k % c.mx, k / c.mx, dx, dy) / a.a_p[k]
             };
         }
-        self.solver_v
-            .setup_and_solve(a, &mut self.v)
+        let (phi, solver) = c.pick(
+            (&mut self.u, &mut self.solver_u),
+            (&mut self.v, &mut self.solver_v),
+        );
+        solver
+            .setup_and_solve(a, phi)
             .map_err(|source| SolverError::Linear {
-                equation: "v momentum",
+                equation: c.pick("u momentum", "v momentum"),
                 source,
             })?;
         Ok(r)
