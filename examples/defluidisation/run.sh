@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Defluidisation against pore-pressure diffusion (issue 60 item 3, exploration): the
-# defluidisation.ron of this folder at gas pressures P and bed heights H (domain 1.5 H,
+# Defluidisation against pore-pressure diffusion (issue 60 item 3, exploration): cases/gas/
+# defluidisation.ron at gas pressures P and bed heights H (domain 1.5 H,
 # 2.5 mm cells). The bed settles for 0.2 s, air enters through the floor for
 # max(1 s, 3 H²/D) (D the rigid bed's diffusivity, below), and the floor is closed for
 # max(0.4 s, 6 k half times) more, k = 8 at 1 atm and 1.5 below (the compaction's slowing). `half_time.py` then gives the basal excess
-# pressure's half time after the floor closes against the rigid bed's t½ = 0.1977 H²/D,
+# pressure's half time after the floor closes against the rigid bed's t½ = 0.1967 H²/D,
 # D = P εg/β (Gidaspow's Ergun branch at the bed's mean εs), and t½/H².
 # At 1 kPa the gas stores ~10× more per pascal than the bed's frictional compaction does, so
 # the bed is nearly rigid; at 1 atm the compaction dominates.
@@ -41,7 +41,7 @@ for run in "${out_runs[@]}"; do
       -e "s/min: 1e-8,/min: $(py "2e-9 * $end"),/" \
       -e "s/output_interval: 1e-3,/output_interval: $(py "$half / 50"),/" \
       -e "s/name: \"defluidisation\"/name: \"defluidisation-$name\"/" \
-      "$here/defluidisation.ron" > "$out/$name.ron"
+      "$root/cases/gas/defluidisation.ron" > "$out/$name.ron"
   [ -f "$out/$name/summary.json" ] ||
     RAYON_NUM_THREADS=1 "$runout" run "$out/$name.ron" --fidelity coarse --out "$out/$name" | tail -1
   echo "$name $off" >> "$out/shut-off-times"

@@ -16,6 +16,8 @@
 //! | `settling` | settling column | the bed's weight |
 //! | `fluidized-bed` | fluidized bed | the bed's buoyant weight |
 //! | `gas-inlet` | a bed fluidised through a floor inlet on a schedule, through the driver | the bed's buoyant weight while open, none while shut |
+//! | `ideal-gas` | air as an ideal gas in a closed box while a bed settles | its mass, the isothermal column |
+//! | `defluidisation` | a bed aerated through the floor at 1 kPa, then shut off | pore-pressure diffusion in a rigid bed, t½ ∝ H² |
 //! | `s-jj-phi` | the paper's slide through the driver | bounds and conservation |
 //! | `relaxation` | the paper's slide with two under-relaxations | the same front and station numbers |
 //!
@@ -32,8 +34,8 @@
 
 use crate::check::Check;
 use crate::checks::{
-    BedPath, Cavity, Chute, Cooling, CoulombFloor, FluidizedBed, GasInlet, Haff, IdealGas, Incline,
-    Poiseuille, Relaxation, Release, SJjPhi, Settling, TaylorGreen,
+    BedPath, Cavity, Chute, Cooling, CoulombFloor, Defluidisation, FluidizedBed, GasInlet, Haff,
+    IdealGas, Incline, Poiseuille, Relaxation, Release, SJjPhi, Settling, TaylorGreen,
 };
 
 /// Every check, in the order `cargo xtask verify all` runs them.
@@ -53,6 +55,7 @@ pub fn registry() -> Vec<Box<dyn Check>> {
         Box::new(FluidizedBed),
         Box::new(GasInlet),
         Box::new(IdealGas),
+        Box::new(Defluidisation),
         Box::new(SJjPhi),
         Box::new(Relaxation),
     ]

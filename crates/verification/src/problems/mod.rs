@@ -94,6 +94,7 @@ mod channel;
 pub mod chute_column;
 pub mod cooling_box;
 pub mod coulomb_floor;
+pub mod defluidisation;
 pub mod fluidized_bed;
 pub mod gas_inlet;
 pub mod haff_energy;

@@ -9,6 +9,8 @@
 //! - [`runout_laws`]: the laboratory runout laws of the column collapse, Lajeunesse et al.
 //!   (2005) and Lube et al. (2005);
 //! - [`mfix_family_m`]: MFIX 21.3.2's front, mean velocity and cost for family M.
+//! - [`pore_pressure`]: pore-pressure diffusion in a rigid bed whose aeration is shut off
+//!   (Carslaw & Jaeger 1959).
 //!
 //! The closed forms of the single-phase problems (the partial-slip Poiseuille profile, the
 //! decaying Taylor–Green vortex) sit beside their problems in [`crate::problems`], where
@@ -18,6 +20,7 @@ pub mod botella_peyret;
 pub mod ghia;
 pub mod haff;
 pub mod mfix_family_m;
+pub mod pore_pressure;
 pub mod runout_laws;
 
 pub use botella_peyret::*;
