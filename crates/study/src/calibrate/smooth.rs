@@ -35,7 +35,7 @@
 //! the least generalised cross-validation score (Craven & Wahba 1979, Numer. Math. 31:377;
 //! for local regression Cleveland & Grosse 1991, Stat. Comput. 1:47)
 //!
-//!      GCV(W) = n · RSS(W) / (n − tr L(W))²,
+//!   GCV(W) = n · RSS(W) / (n − tr L(W))²,
 //!
 //! RSS the squared residuals about the trend pooled over the measured points. A window wider
 //! than the trend's bends is biased (a misfit that falls steeply to a knee and is flat
