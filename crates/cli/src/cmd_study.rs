@@ -105,7 +105,8 @@ pub struct CalibrateArgs {
     /// Nelder–Mead (2-D) stops when the standard deviation of its simplex's χ² is below this
     #[arg(long, default_value_t = 0.05)]
     pub ftol: f64,
-    /// at most this many runs per side pinning the edges of the range Δχ² ≤ 1 (1-D)
+    /// at most this many runs per side pinning the edges of the range Δχ² ≤ 1, then as many
+    /// rounds of runs across the smooth response's range (1-D)
     #[arg(long, default_value_t = 2)]
     pub profile: usize,
     /// stations of the profile of χ² along the loosely constrained parameter (2-D; 0: none),

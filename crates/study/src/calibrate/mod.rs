@@ -67,7 +67,8 @@ pub struct Options {
     pub xtol: f64,
     /// Nelder–Mead's tolerance: the standard deviation of its simplex's χ²
     pub ftol: f64,
-    /// evaluations per side pinning the edges of the range (1-D)
+    /// evaluations per side pinning the edges of the range, and rounds sampling the smooth
+    /// response's range (1-D)
     pub profile: usize,
     /// stations of the profile along the loosely constrained parameter (2-D; 0: none)
     pub valley: usize,

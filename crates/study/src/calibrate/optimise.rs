@@ -209,7 +209,8 @@ pub struct Settings {
     pub xtol: f64,
     /// Nelder–Mead stops when the standard deviation of its simplex's χ² is below this
     pub ftol: f64,
-    /// at most this many evaluations per side pinning the edges of the range (1-D)
+    /// at most this many evaluations per side pinning the edges of the range, then as many
+    /// rounds sampling the smooth response's range (1-D)
     pub profile: usize,
     /// stations of the profile of χ² along the loosely constrained parameter (2-D, 0: none;
     /// [`super::valley`]), at most [`super::valley::STATION_EVALUATIONS`] evaluations each
