@@ -443,29 +443,42 @@ fn refine_2d_without_scan(ev: &Evaluator, u0: Vec<f64>, settings: &Settings) -> 
     nelder_mead(ev, simplex, settings)
 }
 
-/// Pins the edges of the range Δχ² ≤ 1 (1-D): at most `settings.profile` rounds, each
-/// evaluating (in parallel) the next estimate of every edge not yet known to `xtol`.
-fn pin_edges(ev: &Evaluator, settings: &Settings) -> Result<()> {
+/// At most `settings.profile` rounds of 1-D evaluations (in parallel) as `stage`, each at the
+/// unit coordinates `propose` gives from the evaluations so far that are not yet evaluated;
+/// none once it proposes nothing new.
+fn rounds(
+    ev: &Evaluator,
+    settings: &Settings,
+    stage: Stage,
+    propose: impl Fn(&Evaluator) -> Vec<f64>,
+) -> Result<()> {
     for _ in 0..settings.profile {
-        let proposals: Vec<Vec<f64>> =
-            uncertainty::edge_proposals(&known_1d(ev), uncertainty::DELTA_CHI2_1D, settings.xtol)
-                .into_iter()
-                .map(|u| vec![ev.params[0].value(u)])
-                .filter(|x| ev.cached(x).is_none())
-                .collect();
+        let proposals: Vec<Vec<f64>> = propose(ev)
+            .into_iter()
+            .map(|u| vec![ev.params[0].value(u)])
+            .filter(|x| ev.cached(x).is_none())
+            .collect();
         if proposals.is_empty() {
             break;
         }
-        evaluate_all(ev, proposals, Stage::Profile, settings.jobs)?;
+        evaluate_all(ev, proposals, stage, settings.jobs)?;
     }
     Ok(())
 }
 
-/// Samples the smooth response's range (1-D): at most `settings.profile` rounds, each
-/// evaluating (in parallel) the stations of [`smooth::sampling_proposals`] (`xtol` apart at
-/// least) not yet evaluated; none without residuals or a smooth range.
+/// Pins the edges of the range Δχ² ≤ 1 (1-D): each round evaluates the next estimate of every
+/// edge not yet known to `xtol` ([`rounds`]).
+fn pin_edges(ev: &Evaluator, settings: &Settings) -> Result<()> {
+    rounds(ev, settings, Stage::Profile, |ev| {
+        uncertainty::edge_proposals(&known_1d(ev), uncertainty::DELTA_CHI2_1D, settings.xtol)
+    })
+}
+
+/// Samples the smooth response's range (1-D): each round evaluates the stations of
+/// [`smooth::sampling_proposals`] (`xtol` apart at least) ([`rounds`]); none without
+/// residuals or a smooth range.
 fn sample_range(ev: &Evaluator, settings: &Settings) -> Result<()> {
-    for _ in 0..settings.profile {
+    rounds(ev, settings, Stage::Sample, |ev| {
         let evaluated: Vec<(f64, Vec<f64>)> = {
             let done = ev.done.lock().expect("no poisoned lock");
             done.iter()
@@ -474,22 +487,11 @@ fn sample_range(ev: &Evaluator, settings: &Settings) -> Result<()> {
                 .collect()
         };
         let view: Vec<(f64, &[f64])> = evaluated.iter().map(|(u, r)| (*u, r.as_slice())).collect();
-        let Some(range) = smooth::range(&view, uncertainty::DELTA_CHI2_1D, |u| u) else {
-            break;
-        };
         let units: Vec<f64> = evaluated.iter().map(|e| e.0).collect();
-        let proposals: Vec<Vec<f64>> =
+        smooth::range(&view, uncertainty::DELTA_CHI2_1D, |u| u).map_or(Vec::new(), |range| {
             smooth::sampling_proposals(range.bounds.0, range.bounds.1, settings.xtol, &units)
-                .into_iter()
-                .map(|u| vec![ev.params[0].value(u)])
-                .filter(|x| ev.cached(x).is_none())
-                .collect();
-        if proposals.is_empty() {
-            break;
-        }
-        evaluate_all(ev, proposals, Stage::Sample, settings.jobs)?;
-    }
-    Ok(())
+        })
+    })
 }
 
 /// The profile of χ² along the parameter the region is loosest along ([`valley`]): its
