@@ -46,6 +46,18 @@ pub enum DragChoice {
     WenYu,
 }
 
+impl DragChoice {
+    /// The drag law, with Syamlal–O'Brien's `c1` and `d1` (ignored by the others).
+    pub fn law(self, c1: f64, d1: f64) -> Drag {
+        match self {
+            DragChoice::SyamlalObrien => Drag::SyamlalOBrien { c1, d1 },
+            DragChoice::Gidaspow => Drag::Gidaspow,
+            DragChoice::GidaspowBlend => Drag::GidaspowBlend,
+            DragChoice::WenYu => Drag::WenYu,
+        }
+    }
+}
+
 /// Print every closure value (g0, Lun kinetic theory, friction, K_cp, drag, granular-energy
 /// sources) at one state as JSON. Defaults are the paper's sensitivity-analysis values
 /// (paper Table 3).
@@ -123,15 +135,8 @@ impl ClosuresArgs {
     }
 
     fn params(&self) -> ClosureParams {
-        self.material.params(match self.drag {
-            DragChoice::SyamlalObrien => Drag::SyamlalOBrien {
-                c1: self.drag_c1,
-                d1: self.drag_d1,
-            },
-            DragChoice::Gidaspow => Drag::Gidaspow,
-            DragChoice::GidaspowBlend => Drag::GidaspowBlend,
-            DragChoice::WenYu => Drag::WenYu,
-        })
+        self.material
+            .params(self.drag.law(self.drag_c1, self.drag_d1))
     }
 }
 
@@ -167,7 +172,7 @@ pub fn run(args: &ClosuresArgs) -> anyhow::Result<()> {
 }
 
 /// The command-line spelling of a `ValueEnum` choice.
-fn choice_name<T: ValueEnum>(choice: &T) -> String {
+pub(crate) fn choice_name<T: ValueEnum>(choice: &T) -> String {
     choice
         .to_possible_value()
         .map(|v| v.get_name().to_string())

@@ -13,6 +13,7 @@
 
 mod cmd_closures;
 mod cmd_grid_error;
+mod cmd_pore_pressure;
 mod cmd_study;
 mod cmd_wall;
 mod material;
@@ -102,6 +103,10 @@ enum Command {
     /// Print every closure value (kinetic theory, friction, drag, K_cp, granular-energy
     /// sources) at one state as JSON.
     Closures(cmd_closures::ClosuresArgs),
+    /// Print how long gas pressure lasts in the pores of a bed at rest as JSON: the drag
+    /// law's Darcy mobility and U_mf, the gas's and the bed's storage, the pore-pressure
+    /// diffusivity and the basal excess's half-life at each height (docs/guide/gas.md).
+    PorePressure(cmd_pore_pressure::PorePressureArgs),
     /// Print a run folder's metrics as JSON: its summary, the station time, the front and
     /// mean u_s there, and the station profile's metrics (air cushion, cushion and flow
     /// thickness, floor εs, max u_s), h_w^u at the floor probe, the gate speeds
@@ -640,6 +645,7 @@ fn main() -> ExitCode {
                 ExitCode::FAILURE
             }
         },
+        Command::PorePressure(args) => exit_code("pore-pressure", cmd_pore_pressure::run(&args)),
         Command::Post {
             run_dir,
             gates,

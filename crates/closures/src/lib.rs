@@ -11,6 +11,7 @@
 //!   and the single-particle KT drag (§2.6);
 //! - [`energy`]: the granular-energy sources Π, J_vis, J_slip (§1.3);
 //! - [`stress`]: additive assembly of kinetic and frictional stresses (§2.3);
+//! - [`pore_pressure`]: the pore pressure's Darcy mobility, U_mf, storage and diffusion time (§2.8);
 //! - [`guards`]: the small-value guards of §2.7;
 //! - [`cell`]: the full closure set of one cell state, [`evaluate`].
 //!
@@ -42,6 +43,7 @@ pub mod gas_law;
 pub mod guards;
 pub mod kinetic;
 pub mod mu_i;
+pub mod pore_pressure;
 pub mod radial;
 pub mod stress;
 

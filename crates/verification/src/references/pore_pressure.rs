@@ -113,6 +113,9 @@ mod tests {
             tau_half()
         );
         assert!((tau_half() - 0.19673).abs() < 1e-5, "{}", tau_half());
+        // the constant `runout pore-pressure` uses
+        let constant = runout_closures::pore_pressure::TAU_HALF;
+        assert!((tau_half() - constant).abs() < 5e-6, "{constant}");
         assert!((basal_fraction(1e-9) - 1.0).abs() < 1e-3);
     }
 
