@@ -45,6 +45,16 @@ pub enum InletRate {
     MassFlux(f64),
 }
 
+impl InletRate {
+    /// The same kind of rate, `factor` times as large.
+    pub fn scaled(self, factor: f64) -> Self {
+        match self {
+            InletRate::Velocity(v) => InletRate::Velocity(factor * v),
+            InletRate::MassFlux(g) => InletRate::MassFlux(factor * g),
+        }
+    }
+}
+
 impl GasInlet {
     /// The superficial velocity into the domain [m s⁻¹] for gas of `density` [kg m⁻³].
     pub fn velocity(&self, density: f64) -> f64 {

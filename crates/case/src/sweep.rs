@@ -96,6 +96,9 @@ pub enum Param {
     Release(Vec<ReleaseBlock>),
     /// what the times of a tilt-on-impact case count from (docs/studies/impact.md §4)
     Clock(Vec<Clock>),
+    /// the factor on every gas inlet's rate [-], ≥ 0; 0 removes the inlets (the same case
+    /// without gas let in: a fluidised release's unfluidised control)
+    Aeration(Vec<f64>),
 }
 
 impl Param {
@@ -111,6 +114,7 @@ impl Param {
             Param::SolidsWalls(_) => "wall",
             Param::Release(_) => "release",
             Param::Clock(_) => "clock",
+            Param::Aeration(_) => "aeration",
         }
     }
 
@@ -126,6 +130,7 @@ impl Param {
             Param::SolidsWalls(_) => "SolidsWalls",
             Param::Release(_) => "Release",
             Param::Clock(_) => "Clock",
+            Param::Aeration(_) => "Aeration",
         }
     }
 
@@ -137,7 +142,8 @@ impl Param {
             | Param::PartialSlipHu(v)
             | Param::PartialSlipHTheta(v)
             | Param::PartialSlipC(v)
-            | Param::Slope(v) => v.len(),
+            | Param::Slope(v)
+            | Param::Aeration(v) => v.len(),
             Param::SolidsWalls(v) => v.len(),
             Param::Release(v) => v.len(),
             Param::Clock(v) => v.len(),
@@ -158,7 +164,8 @@ impl Param {
             | Param::PartialSlipHu(v)
             | Param::PartialSlipHTheta(v)
             | Param::PartialSlipC(v)
-            | Param::Slope(v) => short(v[k]),
+            | Param::Slope(v)
+            | Param::Aeration(v) => short(v[k]),
             Param::SolidsWalls(v) => v[k].label(),
             Param::Release(v) => v[k].label(),
             Param::Clock(v) => format!("{:?}", v[k]),
@@ -208,6 +215,7 @@ impl Param {
                 region.y = (b.bottom, b.bottom + b.height);
                 Ok(())
             }
+            Param::Aeration(v) => aerate(case, v[k]),
             Param::Clock(v) => match &mut case.gravity {
                 Gravity::TiltOnImpact { clock, .. } => {
                     *clock = v[k];
@@ -240,6 +248,24 @@ impl Param {
             _ => None,
         }
     }
+}
+
+/// Scales every gas inlet's rate by `factor` (≥ 0); 0 removes the inlets.
+fn aerate(case: &mut Case, factor: f64) -> Result<(), String> {
+    if !(factor.is_finite() && factor >= 0.0) {
+        return Err(format!("a factor >= 0, found {factor}"));
+    }
+    if case.gas_inlets.is_empty() {
+        return Err("the base case has no gas inlet (`gas_inlets`)".into());
+    }
+    if factor == 0.0 {
+        case.gas_inlets.clear();
+    } else {
+        for inlet in &mut case.gas_inlets {
+            inlet.rate = inlet.rate.scaled(factor);
+        }
+    }
+    Ok(())
 }
 
 /// Calls `f` on the solids condition of every wall side and of the side walls; `f` says

@@ -117,3 +117,42 @@ fn bad_gas_inlets_name_their_field() {
     gas_only.initial.regions.clear();
     assert!(refused(&gas_only).contains(&"gas_inlets".to_string()));
 }
+
+/// A sweep's `Aeration` scales every inlet's rate; 0 removes the inlets (the control); a
+/// negative factor, or a base without inlets, is refused naming the parameter.
+#[test]
+fn aeration_scales_or_removes_the_inlets() {
+    use runout_case::{expand, Param, Sweep};
+    let sweep = |factors: Vec<f64>| Sweep {
+        name: "aerated".into(),
+        description: String::new(),
+        base: "base.ron".into(),
+        set: vec![],
+        vary: vec![Param::Aeration(factors)],
+        sidewalls: None,
+        study: None,
+    };
+    let base = bed();
+    let rate = |c: &Case| match c.gas_inlets[0].rate {
+        InletRate::Velocity(v) => v,
+        InletRate::MassFlux(g) => g,
+    };
+    let cases = expand(&sweep(vec![0.0, 1.0, 1.5]), &base).unwrap();
+    assert!(cases[0].gas_inlets.is_empty());
+    assert_eq!(cases[0].name, "aerated_aeration=0");
+    assert_eq!(rate(&cases[1]), rate(&base));
+    assert_eq!(rate(&cases[2]), 1.5 * rate(&base));
+    assert!(cases.iter().all(|c| refused(c).is_empty()));
+    let (field, message) = expand(&sweep(vec![-1.0]), &base).unwrap_err();
+    assert!(
+        field.contains("Aeration") && message.contains(">= 0"),
+        "{field}: {message}"
+    );
+    let mut dry = base.clone();
+    dry.gas_inlets.clear();
+    let (field, message) = expand(&sweep(vec![1.0]), &dry).unwrap_err();
+    assert!(
+        field.contains("Aeration") && message.contains("gas_inlets"),
+        "{field}: {message}"
+    );
+}

@@ -54,9 +54,10 @@ pub(super) trait CaseSolver {
     fn bulk(&self, _threshold: f64) -> Option<(f64, f64)> {
         None
     }
-    /// Whether a gravity schedule has yet to act (a tilt on impact still pending): the solids
-    /// cannot count as at rest before it (`run.stop_at_rest`).
-    fn gravity_pending(&self) -> bool {
+    /// Whether the release has yet to happen at `time` [s]: a tilt on impact still pending, a
+    /// gate yet to open, a gas inlet yet to open or close. Solids held before it are not at
+    /// rest (`run.stop_at_rest`).
+    fn release_pending(&self, _time: f64) -> bool {
         false
     }
     /// The front interpolated within its cell, for the front tracker; `None` without solids.
@@ -558,8 +559,10 @@ impl CaseSolver for TwoFluidCase {
         Some(front)
     }
 
-    fn gravity_pending(&self) -> bool {
+    fn release_pending(&self, time: f64) -> bool {
         self.tilt.is_some()
+            || self.gates.next_opening(time).is_some()
+            || self.inlets.next_change(time).is_some()
     }
 
     fn bulk(&self, threshold: f64) -> Option<(f64, f64)> {

@@ -570,8 +570,8 @@ fn time_loop(
             return Ok(Some(e));
         }
         if let (Some(rule), Some(watch)) = (&run.stop_at_rest, rest.as_mut()) {
-            // a block still falling before its tilt is not at rest (its u_s is ~0)
-            let bulk = (!solver.gravity_pending())
+            // a block still falling before its tilt, or a pile behind its gate, is not at rest
+            let bulk = (!solver.release_pending(standing.time))
                 .then(|| solver.bulk(rule.front_threshold))
                 .flatten();
             if watch.at_rest_after(bulk, standing.time, rule) {

@@ -213,3 +213,24 @@ fn a_falling_block_is_not_at_rest() {
     assert!(summary.simulated_time > 0.3, "{}", summary.simulated_time);
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A pile at rest behind its gate is not at rest for `run.stop_at_rest` until the gate has
+/// opened (cases/slopes/gated-pile.ron at smoke size, its gate removed at 0.1 s: with a rule a
+/// still 0.05 s satisfies, the run stopped at 0.05 s before the rule waited for the gate).
+#[test]
+fn a_pile_behind_its_gate_is_not_at_rest() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let mut case = runout_case::load_case(&root.join("cases/slopes/gated-pile.ron")).unwrap();
+    case.fidelity.smoke.end_time = 0.15;
+    case.run.stop_at_rest = Some(runout_case::StopAtRest {
+        speed: 0.005,
+        duration: 0.05,
+        front_threshold: 0.01,
+    });
+    let dir = std::env::temp_dir().join(format!("runout-gate-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let summary = crate::run_case(&case, Fidelity::Smoke, &dir, |_| {}).unwrap();
+    assert_eq!(summary.status, RunStatus::Completed);
+    assert!(summary.simulated_time > 0.14, "{}", summary.simulated_time);
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -22,6 +22,7 @@ pub fn symbol(p: &Param) -> (&'static str, &'static str) {
         Param::SolidsWalls(_) => ("wall", ""),
         Param::Release(_) => ("release", ""),
         Param::Clock(_) => ("clock", ""),
+        Param::Aeration(_) => ("aeration", "-"),
     }
 }
 
@@ -33,7 +34,8 @@ pub fn values(p: &Param) -> Option<&[f64]> {
         | Param::PartialSlipHu(v)
         | Param::PartialSlipHTheta(v)
         | Param::PartialSlipC(v)
-        | Param::Slope(v) => Some(v),
+        | Param::Slope(v)
+        | Param::Aeration(v) => Some(v),
         Param::SolidsWalls(_) | Param::Release(_) | Param::Clock(_) => None,
     }
 }
