@@ -9,9 +9,11 @@
 //! - `verify <name> [--report]`: the checks of runout-verification's registry at full size
 //!   ([`verify`]): one check (cavity, poiseuille, taylor-green, chute, incline, haff, cooling,
 //!   settling, fluidized-bed, s-jj-phi) or a group (single-phase, two-fluid, all);
-//!   `verify mfix-slope`: family M against MFIX (issue 9, [`mfix_slope`]);
-//!   `verify collapse [--fidelity smoke|coarse] [--reuse]`: issue 7's granular column collapse
-//!   check;
+//!   `verify <study> [options]`: a study of the registry, given the command line's options
+//!   ([`runout_verification::study`]): `collapse [--friction F] [--fidelity F] [--aspect
+//!   LIST] [--sidewalls W_L0,MU_W] [--reuse]`, the granular column collapse (issues 7, 43);
+//!   `mfix-slope [--fidelity F] [--threads LIST] [--skip-variants]`, family M against MFIX
+//!   (issue 9); `cavity-re1000`, the Re = 1000 cavity investigation;
 //! - `report analytic`: family A, the closed-form profiles of paper Fig. 1, as SVG and CSV
 //!   in docs/reports/analytic/;
 //! - `report [results] [--fidelity F]`: the runs of the sweep beside the paper, in
@@ -34,7 +36,6 @@ mod analytic;
 mod bench_two_fluid;
 mod case_reference;
 mod chute;
-mod mfix_slope;
 mod verify;
 
 /// The seed paper's reproduction: its matrix, sweep, report and ledger.
@@ -539,17 +540,6 @@ fn error_time_task(
 /// (collapse, mfix-slope), or its checks at full size (one, or a group: single-phase,
 /// two-fluid, all).
 fn verify_task(name: &str, report: bool, args: &StudyArgs) -> Result<()> {
-    if name == "mfix-slope" {
-        let opts = mfix_slope::Options {
-            fidelity: parse_fidelity(args.get("fidelity").unwrap_or("paper"))?,
-            threads: args
-                .list("threads")
-                .context("--threads must be a comma-separated list of counts")?
-                .unwrap_or_default(),
-            skip_variants: args.is_set("skip-variants"),
-        };
-        return mfix_slope::check(&root(), &opts);
-    }
     match find_study(name) {
         Some(study) => study.run(args, &StudyContext::at(&root())),
         None => verify::verify(name, report, &root()),

@@ -24,21 +24,23 @@
 //! | `s-jj-phi` | the paper's slide through the driver | bounds and conservation |
 //! | `relaxation` | the paper's slide with two under-relaxations | the same front and station numbers |
 //!
-//! The studies ([`Study`], [`crate::studies`]): the whole program run with options into run
+//! The studies ([`Study`], [`mod@crate::studies`]): the whole program run with options into run
 //! folders that they reuse between invocations, timed, their pages written to
 //! docs/reports/ (or runs/) with figures; `cargo xtask verify <name> [options]`, never the
 //! test suite.
 //!
 //! | name | study | reference | options | page |
 //! |---|---|---|---|---|
+//! | `cavity-re1000` | lid-driven cavity at Re = 1000 on three grids and three tolerances | Ghia, Ghia & Shin (1982); Botella & Peyret (1998) | none | none: it prints its numbers |
 //! | `collapse` | granular column collapse, Princeton and μ(I) | laboratory runout laws ([`crate::references::runout_laws`]) | `--fidelity`, `--friction`, `--aspect`, `--sidewalls`, `--reuse` | docs/reports/collapse*.md at coarse, else runs/collapse-report/ |
+//! | `mfix-slope` | family M: the paper's slide on four floors, timed | MFIX 21.3.2 ([`crate::references::mfix_family_m`]) | `--fidelity`, `--threads`, `--skip-variants` | docs/reports/mfix-slope.md |
 
 use crate::check::Check;
 use crate::checks::{
     BedPath, Cavity, Chute, Cooling, CoulombFloor, Defluidisation, FluidizedBed, GasInlet, Haff,
     IdealGas, Incline, Poiseuille, Relaxation, Release, SJjPhi, Settling, TaylorGreen,
 };
-use crate::studies::Collapse;
+use crate::studies::{CavityRe1000, Collapse, MfixSlope};
 use crate::study::Study;
 
 /// Every check, in the order `cargo xtask verify all` runs them.
@@ -71,7 +73,11 @@ pub fn find(name: &str) -> Option<Box<dyn Check>> {
 
 /// Every study, by name.
 pub fn studies() -> Vec<Box<dyn Study>> {
-    vec![Box::new(Collapse)]
+    vec![
+        Box::new(CavityRe1000),
+        Box::new(Collapse),
+        Box::new(MfixSlope),
+    ]
 }
 
 /// The study called `name`.

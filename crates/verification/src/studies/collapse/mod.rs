@@ -18,13 +18,13 @@
 //! a finished run whose `resolved.ron` equals the case as it would run now is read instead
 //! of rerun.
 //!
-//! The parts, one a file: [`options`] (the command line's options, typed), [`column`] (the
-//! initial column, its scales and its Princeton twin), [`crate::references::runout_laws`]
-//! (the laws), [`mod@run`] (running or reusing one column and measuring it, from [`front`],
-//! the bulk monitor's front history, and [`fields`], the last field file), [`grids`] (the
-//! μ(I) columns on every grid the store holds), [`page`] (the report) and [`plot`] (the
-//! figures); this file holds the check's stages, [`run()`], and [`Collapse`], the study
-//! of the registry that calls it.
+//! The parts, one a file: [`options`] (the command line's options, typed), [`mod@column`]
+//! (the initial column, its scales and its Princeton twin),
+//! [`crate::references::runout_laws`] (the laws), [`mod@run`] (running or reusing one
+//! column and measuring it, from [`front`], the bulk monitor's front history, and
+//! [`fields`], the last field file), [`grids`] (the μ(I) columns on every grid the store
+//! holds), [`page`] (the report) and [`plot`] (the figures); this file holds the check's
+//! stages, [`run()`], and [`Collapse`], the study of the registry that calls it.
 
 pub mod column;
 mod fields;
