@@ -9,9 +9,11 @@
 //! - `verify <name> [--report]`: the checks of runout-verification's registry at full size
 //!   ([`verify`]): one check (cavity, poiseuille, taylor-green, chute, incline, haff, cooling,
 //!   settling, fluidized-bed, s-jj-phi) or a group (single-phase, two-fluid, all);
-//!   `verify mfix-slope`: family M against MFIX (issue 9, [`mfix_slope`]);
-//!   `verify collapse [--fidelity smoke|coarse] [--reuse]`: issue 7's granular column collapse
-//!   check;
+//!   `verify <study> [options]`: a study of the registry, given the command line's options
+//!   ([`runout_verification::study`]): `collapse [--friction F] [--fidelity F] [--aspect
+//!   LIST] [--sidewalls W_L0,MU_W] [--reuse]`, the granular column collapse (issues 7, 43);
+//!   `mfix-slope [--fidelity F] [--threads LIST] [--skip-variants]`, family M against MFIX
+//!   (issue 9); `cavity-re1000`, the Re = 1000 cavity investigation;
 //! - `report analytic`: family A, the closed-form profiles of paper Fig. 1, as SVG and CSV
 //!   in docs/reports/analytic/;
 //! - `report [results] [--fidelity F]`: the runs of the sweep beside the paper, in
@@ -34,8 +36,6 @@ mod analytic;
 mod bench_two_fluid;
 mod case_reference;
 mod chute;
-mod collapse;
-mod mfix_slope;
 mod verify;
 
 /// The seed paper's reproduction: its matrix, sweep, report and ledger.
@@ -49,6 +49,7 @@ use std::process::Command;
 use anyhow::{bail, Context, Result};
 use clap::{Parser, Subcommand};
 use runout_case::Fidelity;
+use runout_verification::{find_study, Args as StudyArgs, Context as StudyContext};
 
 #[derive(Parser)]
 #[command(name = "cargo xtask", about = "runout developer tasks")]
@@ -226,33 +227,8 @@ enum Task {
         /// also write error against run time (CSV/SVG/Markdown) into docs/reports/verification/
         #[arg(long)]
         report: bool,
-        /// fidelity of the runs (collapse: smoke or coarse, default coarse; mu-i also paper, L0/20; mfix-slope:
-        /// default paper, MFIX's 200 × 50 grid)
-        #[arg(long)]
-        fidelity: Option<String>,
-        /// reuse finished runs of unchanged cases (collapse only)
-        #[arg(long)]
-        reuse: bool,
-        /// collapse: the friction law, princeton (the paper's material, the four shipped
-        /// columns), mu-i (glass beads, cases/collapse/CM-a1.ron as template) or both (each
-        /// μ(I) column and the same column with Princeton beside it)
-        #[arg(long, default_value = "princeton")]
-        friction: String,
-        /// collapse: comma-separated aspect ratios a = H0/L0 whose columns are built from the
-        /// friction's template (default with mu-i and both: 0.5,1,3,6)
-        #[arg(long, value_delimiter = ',')]
-        aspect: Option<Vec<f64>>,
-        /// collapse: every column between two Coulomb side walls (docs/model.md §3.11, §8):
-        /// `W_L0,MU_W`, the channel width in L0 and the grain–wall friction μ_w; the page
-        /// goes to runs/collapse-report/<fidelity>-W<W_L0>L0-mu<MU_W>/
-        #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
-        sidewalls: Option<Vec<f64>>,
-        /// mfix-slope: comma-separated rayon thread counts to time the JJ case with
-        #[arg(long, default_value = "1")]
-        threads: String,
-        /// mfix-slope: only the JJ case, not the other three floors
-        #[arg(long)]
-        skip_variants: bool,
+        #[command(flatten)]
+        options: VerifyOptions,
     },
     /// Figures and tables: `cargo xtask report [results]` (the runs beside the paper, into
     /// docs/reports/results.md and docs/reports/results/), `cargo xtask report analytic` (paper Fig. 1 into
@@ -292,6 +268,53 @@ enum Task {
         #[arg(long)]
         check: bool,
     },
+}
+
+/// The options of `cargo xtask verify`'s studies (runout-verification's `Study`), passed
+/// on as the command line gave them.
+#[derive(clap::Args)]
+struct VerifyOptions {
+    /// fidelity of the runs (collapse: smoke or coarse, default coarse; mu-i also paper, L0/20; mfix-slope:
+    /// default paper, MFIX's 200 × 50 grid)
+    #[arg(long)]
+    fidelity: Option<String>,
+    /// reuse finished runs of unchanged cases (collapse only)
+    #[arg(long)]
+    reuse: bool,
+    /// collapse: the friction law, princeton (the paper's material, the four shipped
+    /// columns), mu-i (glass beads, cases/collapse/CM-a1.ron as template) or both (each
+    /// μ(I) column and the same column with Princeton beside it)
+    #[arg(long, default_value = "princeton")]
+    friction: String,
+    /// collapse: comma-separated aspect ratios a = H0/L0 whose columns are built from the
+    /// friction's template (default with mu-i and both: 0.5,1,3,6)
+    #[arg(long, value_delimiter = ',')]
+    aspect: Option<Vec<String>>,
+    /// collapse: every column between two Coulomb side walls (docs/model.md §3.11, §8):
+    /// `W_L0,MU_W`, the channel width in L0 and the grain–wall friction μ_w; the page
+    /// goes to runs/collapse-report/<fidelity>-W<W_L0>L0-mu<MU_W>/
+    #[arg(long, value_delimiter = ',', allow_negative_numbers = true)]
+    sidewalls: Option<Vec<String>>,
+    /// mfix-slope: comma-separated rayon thread counts to time the JJ case with
+    #[arg(long, default_value = "1")]
+    threads: String,
+    /// mfix-slope: only the JJ case, not the other three floors
+    #[arg(long)]
+    skip_variants: bool,
+}
+
+impl VerifyOptions {
+    /// The options by name, as a study reads them.
+    fn study_args(self) -> StudyArgs {
+        StudyArgs::new()
+            .with("fidelity", self.fidelity)
+            .flag("reuse", self.reuse)
+            .with("friction", Some(self.friction))
+            .with("aspect", self.aspect.map(|a| a.join(",")))
+            .with("sidewalls", self.sidewalls.map(|w| w.join(",")))
+            .with("threads", Some(self.threads))
+            .flag("skip-variants", self.skip_variants)
+    }
 }
 
 #[derive(Subcommand)]
@@ -425,22 +448,8 @@ fn main() -> Result<()> {
         Task::Verify {
             name,
             report,
-            fidelity,
-            reuse,
-            threads,
-            skip_variants,
-            friction,
-            aspect,
-            sidewalls,
-        } => verify_task(
-            &name,
-            report,
-            fidelity.as_deref(),
-            reuse,
-            &threads,
-            skip_variants,
-            (&friction, aspect, sidewalls),
-        ),
+            options,
+        } => verify_task(&name, report, &options.study_args()),
         Task::Report { what, fidelity } => report_task(&what, fidelity.as_deref()),
         Task::Ledger { action } => ledger_task(action),
         Task::Bench { what, args } => bench_task(&what, &args),
@@ -527,42 +536,13 @@ fn error_time_task(
     error_time::error_time(&root(), &opts)
 }
 
-/// `cargo xtask verify <name>`: family M against MFIX, the column collapse, or the checks of
-/// runout-verification's registry at full size (one, or a group: single-phase, two-fluid,
-/// all).
-fn verify_task(
-    name: &str,
-    report: bool,
-    fidelity: Option<&str>,
-    reuse: bool,
-    threads: &str,
-    skip_variants: bool,
-    (friction, aspect, sidewalls): (&str, Option<Vec<f64>>, Option<Vec<f64>>),
-) -> Result<()> {
-    match name {
-        "mfix-slope" => {
-            let opts = mfix_slope::Options {
-                fidelity: parse_fidelity(fidelity.unwrap_or("paper"))?,
-                threads: threads
-                    .split(',')
-                    .map(|t| t.trim().parse::<usize>())
-                    .collect::<Result<_, _>>()
-                    .context("--threads must be a comma-separated list of counts")?,
-                skip_variants,
-            };
-            mfix_slope::check(&root(), &opts)
-        }
-        "collapse" => collapse::verify(
-            &root(),
-            parse_fidelity(fidelity.unwrap_or("coarse"))?,
-            reuse,
-            (collapse::Friction::parse(friction)?, aspect),
-            sidewalls
-                .as_deref()
-                .map(collapse::column::ChannelWalls::parse)
-                .transpose()?,
-        ),
-        _ => verify::verify(name, report, &root()),
+/// `cargo xtask verify <name>`: a study of runout-verification's registry with its options
+/// (collapse, mfix-slope), or its checks at full size (one, or a group: single-phase,
+/// two-fluid, all).
+fn verify_task(name: &str, report: bool, args: &StudyArgs) -> Result<()> {
+    match find_study(name) {
+        Some(study) => study.run(args, &StudyContext::at(&root())),
+        None => verify::verify(name, report, &root()),
     }
 }
 

@@ -11,7 +11,11 @@
 //! - [`check`]: the [`Check`] trait, a problem judged at a [`Size`] into an [`Outcome`];
 //! - [`checks`] and [`registry()`]: the checks, one per problem, that the tests of
 //!   `crates/verification/tests/` run at the fast size (CI) and `cargo xtask verify` at
-//!   the full size.
+//!   the full size;
+//! - [`study`]: the [`Study`] trait, the whole program run with options ([`Args`]) into
+//!   run folders and a page under a [`Context`];
+//! - [`mod@studies`] and [`studies()`]: the studies (the column collapse against the laboratory
+//!   laws, family M against MFIX, the Re = 1000 cavity), run only by `cargo xtask verify`.
 #![deny(missing_docs)]
 // Stencil loops index several staggered arrays with the same (i, j); indices read better
 // than zipped iterators there.
@@ -23,6 +27,9 @@ pub mod chute1d;
 pub mod problems;
 pub mod references;
 pub mod registry;
+pub mod studies;
+pub mod study;
 
 pub use check::{Check, Limit, Measure, Outcome, Size};
-pub use registry::{find, group, registry};
+pub use registry::{find, find_study, group, registry, studies};
+pub use study::{Args, Context, Study};

@@ -1,5 +1,8 @@
-//! The registry of checks: what `cargo xtask verify <name>` and the tests of
+//! The registry of checks and studies: what `cargo xtask verify <name>` and the tests of
 //! `crates/verification/tests/` iterate.
+//!
+//! The checks ([`Check`], [`crate::checks`]): a problem judged against its reference at
+//! the fast size (the tests, CI) and the full size (`cargo xtask verify`).
 //!
 //! | name | problem | reference |
 //! |---|---|---|
@@ -21,22 +24,24 @@
 //! | `s-jj-phi` | the paper's slide through the driver | bounds and conservation |
 //! | `relaxation` | the paper's slide with two under-relaxations | the same front and station numbers |
 //!
-//! Not here, and why: the granular column collapse (`cargo xtask verify collapse`, against
-//! the laboratory runout laws of [`crate::references::runout_laws`]) and family M against
-//! MFIX (`cargo xtask verify mfix-slope`, against [`crate::references::mfix_family_m`]).
-//! Both are studies of the whole program rather than pass/fail checks of the solver: they
-//! run cases through the driver into run directories that they reuse between invocations,
-//! take fidelity presets, thread counts and reuse flags, time the runs (getrusage) and
-//! write their pages (docs/reports/collapse.md, docs/reports/mfix-slope.md) with figures from the VTK
-//! output. They stay in xtask with their options, and take their reference numbers from
-//! this crate. The Re = 1000 cavity investigation (`cargo xtask verify cavity-re1000`) is a
-//! study without a limit and stays in xtask too.
+//! The studies ([`Study`], [`mod@crate::studies`]): the whole program run with options into run
+//! folders that they reuse between invocations, timed, their pages written to
+//! docs/reports/ (or runs/) with figures; `cargo xtask verify <name> [options]`, never the
+//! test suite.
+//!
+//! | name | study | reference | options | page |
+//! |---|---|---|---|---|
+//! | `cavity-re1000` | lid-driven cavity at Re = 1000 on three grids and three tolerances | Ghia, Ghia & Shin (1982); Botella & Peyret (1998) | none | none: it prints its numbers |
+//! | `collapse` | granular column collapse, Princeton and μ(I) | laboratory runout laws ([`crate::references::runout_laws`]) | `--fidelity`, `--friction`, `--aspect`, `--sidewalls`, `--reuse` | docs/reports/collapse*.md at coarse, else runs/collapse-report/ |
+//! | `mfix-slope` | family M: the paper's slide on four floors, timed | MFIX 21.3.2 ([`crate::references::mfix_family_m`]) | `--fidelity`, `--threads`, `--skip-variants` | docs/reports/mfix-slope.md |
 
 use crate::check::Check;
 use crate::checks::{
     BedPath, Cavity, Chute, Cooling, CoulombFloor, Defluidisation, FluidizedBed, GasInlet, Haff,
     IdealGas, Incline, Poiseuille, Relaxation, Release, SJjPhi, Settling, TaylorGreen,
 };
+use crate::studies::{CavityRe1000, Collapse, MfixSlope};
+use crate::study::Study;
 
 /// Every check, in the order `cargo xtask verify all` runs them.
 pub fn registry() -> Vec<Box<dyn Check>> {
@@ -66,6 +71,20 @@ pub fn find(name: &str) -> Option<Box<dyn Check>> {
     registry().into_iter().find(|c| c.name() == name)
 }
 
+/// Every study, by name.
+pub fn studies() -> Vec<Box<dyn Study>> {
+    vec![
+        Box::new(CavityRe1000),
+        Box::new(Collapse),
+        Box::new(MfixSlope),
+    ]
+}
+
+/// The study called `name`.
+pub fn find_study(name: &str) -> Option<Box<dyn Study>> {
+    studies().into_iter().find(|s| s.name() == name)
+}
+
 /// Named groups of checks: `single-phase` (issue 6's core: cavity, poiseuille,
 /// taylor-green), `two-fluid` (issue 7's cooling, settling, fluidized bed and S-JJ-phi)
 /// and `all` (the whole registry).
@@ -90,7 +109,8 @@ mod tests {
 
     #[test]
     fn names_are_unique_and_groups_resolve() {
-        let names: Vec<_> = registry().iter().map(|c| c.name()).collect();
+        let mut names: Vec<_> = registry().iter().map(|c| c.name()).collect();
+        names.extend(studies().iter().map(|s| s.name()));
         let mut sorted = names.clone();
         sorted.sort_unstable();
         sorted.dedup();

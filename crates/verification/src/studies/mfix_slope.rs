@@ -10,21 +10,21 @@
 //! threads) beside MFIX's 490, and where the wall time went. Unless `--skip-variants`, the
 //! other floors (revisited JJ, Jenkins, user partial slip) run too, and their
 //! wall-adjacent solids velocity, θ and front at t = 0.3 s are compared. Everything goes to
-//! docs/reports/mfix-slope.md as well.
+//! docs/reports/mfix-slope.md as well. [`MfixSlope`] is the study of the registry: its
+//! [`Options`] from the command line, then [`run`].
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use anyhow::{bail, Context, Result};
+use anyhow::{bail, Context as _, Result};
 use runout_case::{load, Fidelity, Loaded, SourcedCase};
 use runout_output::{read_vtr_array, RunSummary};
 use runout_run::cpu_time::cpu_seconds;
 use runout_run::run_case;
 
-use runout_verification::references::mfix_family_m::{
-    MFIX, MFIX_CPU_PER_SIMULATED_SECOND, MFIX_REJECTED,
-};
+use crate::references::mfix_family_m::{MFIX, MFIX_CPU_PER_SIMULATED_SECOND, MFIX_REJECTED};
+use crate::study::{Args, Context, Study};
 
 /// Largest relative difference allowed (issue 9).
 pub const TOLERANCE: f64 = 0.05;
@@ -34,13 +34,49 @@ const VARIANT_TIME: f64 = 0.3;
 const FLOW_EPS: f64 = 0.01;
 
 /// Options of the check.
+#[derive(Clone, Debug, PartialEq)]
 pub struct Options {
-    /// fidelity (paper = MFIX's 200 × 50 grid)
+    /// `--fidelity`: default paper (MFIX's 200 × 50 grid)
     pub fidelity: Fidelity,
-    /// rayon thread counts to time the JJ case with
+    /// `--threads`: rayon thread counts to time the JJ case with (default 1)
     pub threads: Vec<usize>,
-    /// skip the three other floors
+    /// `--skip-variants`: skip the three other floors
     pub skip_variants: bool,
+}
+
+impl Options {
+    /// The options of `args`, with their defaults.
+    pub fn parse(args: &Args) -> Result<Self> {
+        Ok(Self {
+            fidelity: args
+                .get("fidelity")
+                .unwrap_or("paper")
+                .parse()
+                .map_err(anyhow::Error::msg)?,
+            threads: args
+                .list("threads")
+                .context("--threads must be a comma-separated list of counts")?
+                .unwrap_or_else(|| vec![1]),
+            skip_variants: args.is_set("skip-variants"),
+        })
+    }
+}
+
+/// Family M against MFIX as a study of the registry.
+pub struct MfixSlope;
+
+impl Study for MfixSlope {
+    fn name(&self) -> &'static str {
+        "mfix-slope"
+    }
+
+    fn description(&self) -> &'static str {
+        "family M (the paper's slide on four floors) against MFIX 21.3.2"
+    }
+
+    fn run(&self, args: &Args, context: &Context) -> Result<()> {
+        run(context, &Options::parse(args)?)
+    }
 }
 
 /// One timed run.
@@ -164,8 +200,9 @@ fn floor_row(dir: &Path, t: f64) -> Result<(f64, f64, f64, f64)> {
     Ok((time, su / w, st / w, umax))
 }
 
-/// Runs the check; writes `root/docs/reports/mfix-slope.md`.
-pub fn check(root: &Path, opts: &Options) -> Result<()> {
+/// Runs the check; writes `mfix-slope.md` into the context's reports.
+pub fn run(context: &Context, opts: &Options) -> Result<()> {
+    let root = context.root.as_path();
     let dir = root.join("cases/mfix-slope");
     let jj = load_one(&dir.join("jj.ron"))?;
     let mut md = String::new();
@@ -212,7 +249,7 @@ pub fn check(root: &Path, opts: &Options) -> Result<()> {
         writeln!(md, "**Result: fail**: {}.", failures.join("; "))?;
     }
     print!("{md}");
-    let out = root.join("docs/reports/mfix-slope.md");
+    let out = context.reports.join("mfix-slope.md");
     std::fs::write(&out, &md).with_context(|| format!("writing {}", out.display()))?;
     eprintln!("wrote {}", out.display());
     if !failures.is_empty() {
@@ -360,6 +397,25 @@ fn variants_section(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn options_from_the_command_line_with_defaults() {
+        let o = Options::parse(&Args::new()).unwrap();
+        assert_eq!(
+            (o.fidelity, o.threads, o.skip_variants),
+            (Fidelity::Paper, vec![1], false)
+        );
+        let args = Args::new()
+            .with("fidelity", Some("coarse"))
+            .with("threads", Some("1, 2"))
+            .flag("skip-variants", true);
+        let o = Options::parse(&args).unwrap();
+        assert_eq!(
+            (o.fidelity, o.threads, o.skip_variants),
+            (Fidelity::Coarse, vec![1, 2], true)
+        );
+        assert!(Options::parse(&Args::new().with("threads", Some("1,x"))).is_err());
+    }
 
     #[test]
     fn interpolates_bulk_rows_in_time() {

@@ -18,31 +18,33 @@
 //! a finished run whose `resolved.ron` equals the case as it would run now is read instead
 //! of rerun.
 //!
-//! The parts, one a file: [`column`] (the initial column, its scales and its Princeton
-//! twin), `runout_verification::references::runout_laws` (the laws), [`run`] (running or
-//! reusing one column and measuring it, from [`front`], the bulk monitor's front history,
-//! and [`fields`], the last field file), [`grids`] (the μ(I) columns on every grid the
-//! store holds), [`page`] (the report) and [`plot`] (the figures);
-//! this file holds the check's stages.
+//! The parts, one a file: [`options`] (the command line's options, typed), [`mod@column`]
+//! (the initial column, its scales and its Princeton twin),
+//! [`crate::references::runout_laws`] (the laws), [`mod@run`] (running or reusing one
+//! column and measuring it, from [`front`], the bulk monitor's front history, and
+//! [`fields`], the last field file), [`grids`] (the μ(I) columns on every grid the store
+//! holds), [`page`] (the report) and [`plot`] (the figures); this file holds the check's
+//! stages, [`run()`], and [`Collapse`], the study of the registry that calls it.
 
 pub mod column;
 mod fields;
 mod front;
 mod grids;
+mod options;
 mod page;
 mod plot;
 mod run;
 
 use std::path::{Path, PathBuf};
 
-use anyhow::{bail, Context, Result};
+use anyhow::{bail, Context as _, Result};
 use runout_case::{load, Fidelity, Loaded};
 
 use self::column::ChannelWalls;
+pub use self::options::{Friction, Options};
 use self::run::{run_one, Outcome};
-use runout_verification::references::{
-    ScalingLaw, LAGREE_CONTINUUM, LAJEUNESSE, LAJEUNESSE_HEIGHT,
-};
+use crate::references::{ScalingLaw, LAGREE_CONTINUUM, LAJEUNESSE, LAJEUNESSE_HEIGHT};
+use crate::study::{Args, Context, Study};
 
 /// The four columns, smallest aspect ratio first.
 const CASE_FILES: [&str; 4] = [
@@ -62,44 +64,34 @@ const PRINCETON_TEMPLATE: &str = "cases/collapse/C-a1.ron";
 /// The aspect ratios run by default.
 pub const DEFAULT_ASPECTS: [f64; 4] = [0.5, 1.0, 3.0, 6.0];
 
-/// The friction law of a collapse check.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Friction {
-    /// the paper's material and Princeton friction (the four shipped C-a* cases), untuned:
-    /// the check fails only on a failed run or lost mass
-    Princeton,
-    /// glass beads with μ(I) (cases/collapse/CM-a1.ron as template): the runout and H∞
-    /// within 25 % of Lajeunesse et al.'s and the deposit at rest by 10 √(H0/g)
-    MuI,
-    /// the μ(I) columns and beside each the same glass-bead column with Princeton friction
-    /// (`column::with_princeton`); the thresholds judge the μ(I) columns only
-    Both,
-}
+/// The collapse check as a study of the registry: [`Options`] from the command line, then
+/// [`run()`].
+pub struct Collapse;
 
-impl Friction {
-    /// `princeton` or `mu-i`.
-    pub fn parse(s: &str) -> Result<Self> {
-        match s {
-            "princeton" => Ok(Self::Princeton),
-            "mu-i" => Ok(Self::MuI),
-            "both" => Ok(Self::Both),
-            _ => bail!("--friction {s}: expected princeton, mu-i or both"),
-        }
+impl Study for Collapse {
+    fn name(&self) -> &'static str {
+        "collapse"
+    }
+
+    fn description(&self) -> &'static str {
+        "granular column collapse against the laboratory runout laws"
+    }
+
+    fn run(&self, args: &Args, context: &Context) -> Result<()> {
+        run(context, &Options::parse(args)?)
     }
 }
 
-/// Runs the collapse check at `fidelity` (smoke or coarse) with `friction` and writes its
-/// report; `aspects` builds the columns of those a from the friction's template (default:
-/// the four shipped Princeton cases, or μ(I) columns of a = 0.5, 1, 3, 6); `reuse` takes
-/// finished runs of unchanged cases instead of rerunning them; `walls` puts every column
-/// in a channel with side walls.
-pub fn verify(
-    root: &Path,
-    fidelity: Fidelity,
-    reuse: bool,
-    (friction, aspects): (Friction, Option<Vec<f64>>),
-    walls: Option<ChannelWalls>,
-) -> Result<()> {
+/// Runs the collapse check with `options` and writes its report (see [`Options`]).
+pub fn run(context: &Context, options: &Options) -> Result<()> {
+    let Options {
+        fidelity,
+        reuse,
+        friction,
+        ref aspects,
+        walls,
+    } = *options;
+    let root = context.root.as_path();
     // the cells as written (L0/20) for μ(I)'s grid study; Princeton's four columns are
     // reported at smoke and coarse
     if fidelity == Fidelity::Paper && friction == Friction::Princeton {
@@ -107,7 +99,7 @@ pub fn verify(
             "`verify collapse` runs Princeton at smoke or coarse fidelity (mu-i and both also at paper)"
         );
     }
-    let cases = columns(root, friction, aspects, walls)?;
+    let cases = columns(root, friction, aspects.clone(), walls)?;
     let mut outcomes = Vec::new();
     for case in &cases {
         outcomes.push(run_one(root, case, fidelity, reuse)?);
@@ -118,7 +110,7 @@ pub fn verify(
         root, &cases, fidelity, &outcomes,
     )?));
     println!("\n{table}");
-    write_report(root, (fidelity, walls), friction, &outcomes, &table)?;
+    write_report(context, (fidelity, walls), friction, &outcomes, &table)?;
     let mut failures = failures(&outcomes);
     failures.extend(law_failures(&outcomes, walls));
     if !failures.is_empty() {
@@ -268,20 +260,18 @@ fn law_failures(outcomes: &[Outcome], walls: Option<ChannelWalls>) -> Vec<String
 /// `collapse-princeton.md` for the paper's material) and docs/reports/collapse/, otherwise into
 /// runs/collapse-report/<fidelity>[-<walls>]/.
 fn write_report(
-    root: &Path,
+    context: &Context,
     (fidelity, walls): (Fidelity, Option<ChannelWalls>),
     friction: Friction,
     outcomes: &[Outcome],
     table: &str,
 ) -> Result<()> {
     let to_docs = fidelity == Fidelity::Coarse && walls.is_none();
+    let runs = context.root.join("runs/collapse-report");
     let out_dir = match walls {
-        _ if to_docs => root.join("docs/reports"),
-        None => root.join("runs/collapse-report").join(fidelity.name()),
-        Some(w) => {
-            root.join("runs/collapse-report")
-                .join(format!("{}-{}", fidelity.name(), w.label()))
-        }
+        _ if to_docs => context.reports.clone(),
+        None => runs.join(fidelity.name()),
+        Some(w) => runs.join(format!("{}-{}", fidelity.name(), w.label())),
     };
     let figure_dir = if to_docs {
         out_dir.join("collapse")
@@ -364,11 +354,16 @@ mod tests {
     use super::column::Column;
     use super::*;
 
+    /// The repository root (two levels above this crate).
+    fn repository() -> PathBuf {
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
+    }
+
     /// A built column holds its a, reaches 10 √(H0/g), has cell counts the smoke preset
     /// divides, and room for 2.5 times Lajeunesse's runout; bad a is refused.
     #[test]
     fn columns_of_any_aspect_from_the_template() {
-        let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
+        let root = &repository();
         let cases = columns(root, Friction::MuI, Some(vec![0.5, 2.0, 8.0]), None).unwrap();
         for (case, a) in cases.iter().zip([0.5, 2.0, 8.0]) {
             let column = Column::of(case).unwrap();
@@ -395,7 +390,7 @@ mod tests {
     /// the friction law and the name.
     #[test]
     fn both_builds_a_princeton_twin_of_each_column() {
-        let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
+        let root = &repository();
         let cases = columns(root, Friction::Both, Some(vec![1.0, 3.0]), None).unwrap();
         let names: Vec<&str> = cases.iter().map(|c| c.name.as_str()).collect();
         assert_eq!(names, ["CMP-a1", "CM-a1", "CMP-a3", "CM-a3"]);
@@ -414,7 +409,7 @@ mod tests {
     /// w L0 apart; nothing else changes; bad values are refused.
     #[test]
     fn side_walls_put_every_column_in_a_channel() {
-        let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
+        let root = &repository();
         let walls = ChannelWalls::parse(&[5.0, 0.38]).unwrap();
         let plane = columns(root, Friction::Both, Some(vec![6.0]), None).unwrap();
         let walled = columns(root, Friction::Both, Some(vec![6.0]), Some(walls)).unwrap();
@@ -437,7 +432,7 @@ mod tests {
 
     #[test]
     fn shipped_collapse_cases_are_columns_of_the_four_aspect_ratios() {
-        let root = Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap();
+        let root = &repository();
         let aspects: Vec<f64> = case_paths(root)
             .iter()
             .map(|p| {

@@ -1,11 +1,11 @@
 //! The initial column of a collapse case (half-width L0, height H0 against the west wall),
 //! its aspect ratio and its time and velocity scales.
 
+use crate::references::LAJEUNESSE;
 use anyhow::{bail, Context, Result};
 use runout_case::{Case, GasSidewall, Gravity, Sidewalls, SolidsWall};
 use runout_closures::friction::{FrictionModel, FrictionName};
 use runout_mesh::Segment;
-use runout_verification::references::LAJEUNESSE;
 
 /// Cell width of a built column as written, in L0 (L0/20; coarse L0/10, smoke L0/5).
 const CELLS_PER_L0: f64 = 20.0;

@@ -8,10 +8,10 @@ use anyhow::Result;
 use plotters::prelude::*;
 
 use super::run::Outcome;
-use runout_study::plots::{legend, plot_error, LINE_COLOURS};
-use runout_verification::references::{
+use crate::references::{
     ScalingLaw, LAGREE_CONTINUUM, LAJEUNESSE, LAJEUNESSE_AS_KUMAR_CITES, LUBE,
 };
+use runout_study::plots::{legend, plot_error, LINE_COLOURS};
 
 /// SVG size of the runout figure [px].
 const FIGURE_SIZE: (u32, u32) = (900, 650);

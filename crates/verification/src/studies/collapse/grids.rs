@@ -11,7 +11,7 @@ use runout_case::{Case, Fidelity};
 use runout_post::convergence::{observed_order, richardson};
 
 use super::run::{finished, Outcome};
-use runout_verification::references::LAJEUNESSE;
+use crate::references::LAJEUNESSE;
 
 /// The fidelities of the study, coarsest first.
 const LEVELS: [Fidelity; 3] = [Fidelity::Smoke, Fidelity::Coarse, Fidelity::Paper];
