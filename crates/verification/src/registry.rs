@@ -20,7 +20,7 @@
 //! | `fluidized-bed` | fluidized bed | the bed's buoyant weight |
 //! | `gas-inlet` | a bed fluidised through a floor inlet on a schedule, through the driver | the bed's buoyant weight while open, none while shut |
 //! | `ideal-gas` | air as an ideal gas in a closed box while a bed settles | its mass, the isothermal column |
-//! | `defluidisation` | a bed aerated through the floor at 1 kPa, then shut off | pore-pressure diffusion in a rigid bed, t½ ∝ H² |
+//! | `defluidisation` | a bed aerated through the floor at 1 kPa (and 1 atm, full size), then shut off | pore-pressure diffusion in a rigid bed, t½ ∝ H² (1 kPa); the bed's 1-D nonlinear consolidation |
 //! | `s-jj-phi` | the paper's slide through the driver | bounds and conservation |
 //! | `relaxation` | the paper's slide with two under-relaxations | the same front and station numbers |
 //!

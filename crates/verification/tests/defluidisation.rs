@@ -1,6 +1,7 @@
 //! Defluidisation of a bed aerated through the floor at 1 kPa (`checks::Defluidisation`),
-//! fast size: one bed height, H = 0.025 m (about a minute). The full size adds 0.035 and
-//! 0.05 m and the H² scaling: `cargo xtask verify defluidisation`.
+//! fast size: one bed height, H = 0.025 m (about a minute), against the rigid bed's diffusion
+//! and the consolidation solution. The full size adds 0.035 and 0.05 m, the H² scaling and a
+//! 0.05 m bed at 1 atm: `cargo xtask verify defluidisation`.
 
 use runout_verification::{find, Size};
 

@@ -15,19 +15,24 @@
 //! below the top one) and mean εs, the absolute pressure P at the floor.
 //! The excess p0 is the floor pressure at the shut-off less the last snapshot's (the bed's
 //! weight on the gas at rest); the measured t½ is where the excess falls to p0/2,
-//! interpolated linearly between snapshots. The reference is τ½ H²/D with D = P εg/β of that
-//! bed (Gidaspow's dense branch at zero slip, the drag law the case runs with).
+//! interpolated linearly between snapshots. The references: the rigid bed's τ½ H²/D with
+//! D = P εg/β of that bed (Gidaspow's dense branch at zero slip, the drag law the case runs
+//! with), and the 1-D nonlinear consolidation of that bed (its H, mean εs and floor pressure P,
+//! the case's inflow, grains and gas; Princeton's P_c: [`crate::references::consolidation`]).
 //!
-//! At 1 kPa the gas stores ~10× more per pascal than the bed's frictional compaction does,
-//! so the bed is nearly rigid and the diffusion solution applies; at 1 atm the compaction
-//! dominates and the decay is several times slower (docs/status.md).
+//! At 1 kPa the gas stores several times more per pascal than the bed's frictional compaction
+//! does, so the bed is nearly rigid and both references apply; at 1 atm the compaction
+//! dominates, the decay is several times slower than the rigid bed's and only the
+//! consolidation solution holds (docs/status.md).
 
 use std::path::Path;
 
 use anyhow::{ensure, Context, Result};
 use runout_case::{load_case, Boundary, Case, Fidelity, InletRate, OutletPressure};
+use runout_closures::{Drag, FrictionModel, PrincetonConstants};
 use runout_mesh::Segment;
 
+use crate::references::consolidation::{self, AeratedBed, Skeleton};
 use crate::references::pore_pressure::{diffusivity, tau_half};
 
 /// The shipped case, relative to the workspace root.
@@ -104,6 +109,8 @@ pub struct DefluidisationRun {
     pub half_time: f64,
     /// the rigid bed's τ½ H²/D [s]
     pub rigid_half_time: f64,
+    /// the consolidation solution's half time \[s\] ([`consolidation_half_time`])
+    pub consolidation_half_time: f64,
     /// steps, outer iterations and wall time [s]
     pub steps: u64,
     /// outer iterations
@@ -155,6 +162,7 @@ pub fn run(case: &Case, fidelity: Fidelity, off: f64) -> Result<DefluidisationRu
     let diameter = case.solids[0].diameter;
     let d = diffusivity(at_off.1, eps_s, gas.viscosity, diameter);
     let half_time = half_time(&snaps, off, p_end, excess).context("the excess never halved")?;
+    let consolidation_half_time = consolidation_half_time(case, height, eps_s, at_off.1)?;
     Ok(DefluidisationRun {
         height,
         eps_s: (eps_s, bed(&last.2, dy).map_or(f64::NAN, |b| b.1)),
@@ -164,10 +172,51 @@ pub fn run(case: &Case, fidelity: Fidelity, off: f64) -> Result<DefluidisationRu
         steadiness: (before.1 - p_end) / excess,
         half_time,
         rigid_half_time: tau_half() * height * height / d,
+        consolidation_half_time,
         steps: summary.steps,
         outer_iterations: summary.outer_iterations,
         wall_time: summary.wall_time,
     })
+}
+
+/// Cells of the consolidation solution (its half time within 0.2 % of the converged one).
+const CONSOLIDATION_CELLS: usize = 100;
+
+/// The half time \[s\] of the 1-D nonlinear consolidation ([`consolidation::basal_half_time`])
+/// of a bed of height `height` \[m\] and mean `eps_s` in `case`'s gas at the absolute pressure
+/// `pressure` \[Pa\], aerated at the case's first inlet's superficial velocity; refused unless
+/// the case runs the reference's closures (Princeton friction with MFIX's constants and its
+/// εs,min and εs,max, Gidaspow's drag).
+pub fn consolidation_half_time(case: &Case, height: f64, eps_s: f64, pressure: f64) -> Result<f64> {
+    let solids = case.solids.first().context("the case has solids")?;
+    let gas = case.gas.as_ref().context("the case has a gas")?;
+    ensure!(
+        case.models.friction == FrictionModel::Princeton(PrincetonConstants::MFIX)
+            && solids.max_packing == consolidation::EPS_S_MAX
+            && solids.friction_min_packing == consolidation::EPS_S_MIN
+            && case.models.drag == Drag::Gidaspow,
+        "{}: the consolidation reference needs Princeton friction (εs,min {}, εs,max {}) \
+         and Gidaspow's drag",
+        case.name,
+        consolidation::EPS_S_MIN,
+        consolidation::EPS_S_MAX
+    );
+    let inflow = match case.gas_inlets.first().map(|inlet| inlet.rate) {
+        Some(InletRate::Velocity(v)) => v,
+        _ => anyhow::bail!("{}: no floor inlet at a velocity", case.name),
+    };
+    let bed = AeratedBed {
+        height,
+        eps_s,
+        inflow,
+        pressure,
+        diameter: solids.diameter,
+        solids_density: solids.density,
+        gas_density: gas.density,
+        gas_viscosity: gas.viscosity,
+        skeleton: Skeleton::Princeton,
+    };
+    Ok(consolidation::basal_half_time(&bed, CONSOLIDATION_CELLS))
 }
 
 /// The bed's height and εs from the row means `column` of εs on rows `dy` tall: εs the mean

@@ -10,13 +10,16 @@
 //!   (2005) and Lube et al. (2005);
 //! - [`mfix_family_m`]: MFIX 21.3.2's front, mean velocity and cost for family M.
 //! - [`pore_pressure`]: pore-pressure diffusion in a rigid bed whose aeration is shut off
-//!   (Carslaw & Jaeger 1959).
+//!   (Carslaw & Jaeger 1959);
+//! - [`consolidation`]: the same bed compacting by Princeton's P_c as its gas drains, the
+//!   nonlinear consolidation (Terzaghi 1925) with the gas's storage, solved in 1-D.
 //!
 //! The closed forms of the single-phase problems (the partial-slip Poiseuille profile, the
 //! decaying Taylor–Green vortex) sit beside their problems in [`crate::problems`], where
 //! their derivations are.
 
 pub mod botella_peyret;
+pub mod consolidation;
 pub mod ghia;
 pub mod haff;
 pub mod mfix_family_m;
