@@ -253,7 +253,7 @@ impl Param {
 /// Scales every gas inlet's rate by `factor` (≥ 0); 0 removes the inlets.
 fn aerate(case: &mut Case, factor: f64) -> Result<(), String> {
     if !(factor.is_finite() && factor >= 0.0) {
-        return Err(format!("a factor >= 0, found {factor}"));
+        return Err(format!("a factor >= 0, found {}", short(factor)));
     }
     if case.gas_inlets.is_empty() {
         return Err("the base case has no gas inlet (`gas_inlets`)".into());
