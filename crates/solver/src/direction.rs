@@ -27,13 +27,25 @@ pub(crate) trait Direction {
     /// (i, j) of position (a, b).
     fn xy(a: usize, b: usize) -> (usize, usize);
 
+    /// Position (a, b) of (i, j), the inverse of [`Direction::xy`].
+    #[inline]
+    fn ab(i: usize, j: usize) -> (usize, usize) {
+        Self::pick((i, j), (j, i))
+    }
+
+    /// Nodes per row of the component's block in a grid `nx` cells wide.
+    #[inline]
+    fn row_len(nx: usize) -> usize {
+        Self::pick(nx + 1, nx)
+    }
+
     /// Visits every (a, b) of `along` × `across` in memory order (j outer, i inner).
     #[inline]
     fn for_each(along: Range<usize>, across: Range<usize>, mut f: impl FnMut(usize, usize)) {
         let (is, js) = Self::pick((along.clone(), across.clone()), (across, along));
         for j in js {
             for i in is.clone() {
-                let (a, b) = Self::pick((i, j), (j, i));
+                let (a, b) = Self::ab(i, j);
                 f(a, b);
             }
         }
@@ -68,7 +80,7 @@ pub(crate) trait Direction {
     #[inline]
     fn node(a: usize, b: usize, nx: usize) -> usize {
         let (i, j) = Self::xy(a, b);
-        i + Self::pick(nx + 1, nx) * j
+        i + Self::row_len(nx) * j
     }
 
     /// Node (a, b) of the other component's block: the scalar-cell face across the direction

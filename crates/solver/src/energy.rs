@@ -14,6 +14,7 @@ use runout_linsolve::Stencil5;
 use runout_mesh::{Grid, Sides};
 use runout_walls::RobinFace;
 
+use crate::direction::{Direction, X, Y};
 use crate::momentum::WallFaces;
 use crate::transport::{assemble_masked, FaceData, Scheme};
 use runout_linsolve::for_each_row;
@@ -154,44 +155,46 @@ fn face_fluxes_and_conductances(
     v: &[f64],
     faces: &mut FaceData,
 ) {
-    let (nx, ny) = (grid.nx(), grid.ny());
-    let (dx, dy) = (grid.x.widths(), grid.y.widths());
-    let (dxc, dyc) = (grid.x.face_spacing(), grid.y.face_spacing());
+    theta_faces::<X>(grid, inputs, u, faces);
+    theta_faces::<Y>(grid, inputs, v, faces);
+}
+
+/// [`face_fluxes_and_conductances`] of the interior faces normal to direction `D`, with
+/// the solids velocity `phi` on them: face (a, b) between cells a − 1 and a.
+fn theta_faces<D: Direction>(
+    grid: &Grid,
+    inputs: &EnergyInputs<'_>,
+    phi: &[f64],
+    faces: &mut FaceData,
+) {
+    let nx = grid.nx();
+    let (along, mx) = (D::along(grid), D::row_len(nx));
+    let (n_a, spacing, d_b) = (along.len(), along.face_spacing(), D::across(grid).widths());
     let rho_eps = inputs.bulk_density;
     let kappa = inputs.conductivity;
     let harmonic = |a: f64, b: f64, w: f64| a * b / (w * a + (1.0 - w) * b).max(1e-15);
     let upwind =
         |vel: f64, lo: usize, hi: usize| if vel >= 0.0 { rho_eps[lo] } else { rho_eps[hi] };
-    for_each_row(&mut faces.flux_x, nx + 1, |j, row| {
-        for i in 1..nx {
-            let vel = u[i + (nx + 1) * j];
-            row[i] = 1.5 * upwind(vel, i - 1 + nx * j, i + nx * j) * vel * dy[j];
-        }
-    });
-    for_each_row(&mut faces.cond_x, nx + 1, |j, row| {
-        for i in 1..nx {
-            let (w, e) = (i - 1 + nx * j, i + nx * j);
-            row[i] =
-                harmonic(kappa[w], kappa[e], grid.x.interpolation_weight(i - 1)) * dy[j] / dxc[i];
-        }
-    });
-    for_each_row(&mut faces.flux_y, nx, |j, row| {
-        if j == 0 || j == ny {
-            return;
-        }
+    // (b, cell a − 1, cell a) of the face at (i, j); `None` on the domain ends
+    let interior = |i: usize, j: usize| {
+        let (a, b) = D::ab(i, j);
+        (a > 0 && a < n_a).then(|| (a, b, D::cell(a - 1, b, nx), D::cell(a, b, nx)))
+    };
+    let (flux, cond) = D::along_faces(faces);
+    for_each_row(flux, mx, |j, row| {
         for (i, flux) in row.iter_mut().enumerate() {
-            let vel = v[i + nx * j];
-            *flux = 1.5 * upwind(vel, i + nx * (j - 1), i + nx * j) * vel * dx[i];
+            if let Some((_, b, lo, hi)) = interior(i, j) {
+                let vel = phi[i + mx * j];
+                *flux = 1.5 * upwind(vel, lo, hi) * vel * d_b[b];
+            }
         }
     });
-    for_each_row(&mut faces.cond_y, nx, |j, row| {
-        if j == 0 || j == ny {
-            return;
-        }
+    for_each_row(cond, mx, |j, row| {
         for (i, cond) in row.iter_mut().enumerate() {
-            let (s, n) = (i + nx * (j - 1), i + nx * j);
-            *cond =
-                harmonic(kappa[s], kappa[n], grid.y.interpolation_weight(j - 1)) * dx[i] / dyc[j];
+            if let Some((a, b, lo, hi)) = interior(i, j) {
+                *cond = harmonic(kappa[lo], kappa[hi], along.interpolation_weight(a - 1)) * d_b[b]
+                    / spacing[a];
+            }
         }
     });
 }

@@ -11,6 +11,8 @@ use runout_mesh::Grid;
 
 use runout_linsolve::for_each_row;
 
+use crate::direction::{Direction, X, Y};
+
 /// Strain-rate invariants of one cell.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Strain {
@@ -46,60 +48,15 @@ pub fn strain_rates(
     walls: &WallVelocities<'_>,
     out: &mut [Strain],
 ) {
-    let (nx, ny) = (grid.nx(), grid.ny());
+    let nx = grid.nx();
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
-    let (xc, yc) = (grid.x.centres(), grid.y.centres());
-    let (x_faces, y_faces) = (grid.x.faces(), grid.y.faces());
-    let x_face = |i: usize| x_faces[i];
-    let y_face = |j: usize| y_faces[j];
-    // cell-centred velocities: the mean of the two faces (MFIX AVG_X_E, docs/model.md §4.1)
-    let uc = |i: usize, j: usize| 0.5 * (u[i + (nx + 1) * j] + u[i + 1 + (nx + 1) * j]);
-    let vc = |i: usize, j: usize| 0.5 * (v[i + nx * j] + v[i + nx * (j + 1)]);
     // each cell from its own faces and neighbours, rows in parallel
     for_each_row(out, nx, |j, row| {
         for i in 0..nx {
             let du_dx = (u[i + 1 + (nx + 1) * j] - u[i + (nx + 1) * j]) / dx[i];
             let dv_dy = (v[i + nx * (j + 1)] - v[i + nx * j]) / dy[j];
-            // ∂u/∂y = (u_n − u_s)/Δy with u on the cell's south and north faces interpolated
-            // between row centres (AVG_Y, docs/model.md §4.4 GET_FACE_VEL_SOLIDS), the wall face
-            // value at a wall (MFIX's ghost/fluid mean, §3.2); one-sided at an outlet
-            let du_dy = {
-                let face = |jf: usize| -> Option<f64> {
-                    if jf == 0 {
-                        walls.south.map(|w| w[i])
-                    } else if jf == ny {
-                        walls.north.map(|w| w[i])
-                    } else {
-                        let w = grid.y.interpolation_weight(jf - 1);
-                        Some(w * uc(i, jf - 1) + (1.0 - w) * uc(i, jf))
-                    }
-                };
-                match (face(j), face(j + 1)) {
-                    (Some(s), Some(n)) => (n - s) / dy[j],
-                    // one-sided across the missing face: centre to the other face
-                    (None, Some(n)) => (n - uc(i, j)) / (y_face(j + 1) - yc[j]),
-                    (Some(s), None) => (uc(i, j) - s) / (yc[j] - y_face(j)),
-                    (None, None) => 0.0,
-                }
-            };
-            let dv_dx = {
-                let face = |i_f: usize| -> Option<f64> {
-                    if i_f == 0 {
-                        walls.west.map(|w| w[j])
-                    } else if i_f == nx {
-                        walls.east.map(|w| w[j])
-                    } else {
-                        let w = grid.x.interpolation_weight(i_f - 1);
-                        Some(w * vc(i_f - 1, j) + (1.0 - w) * vc(i_f, j))
-                    }
-                };
-                match (face(i), face(i + 1)) {
-                    (Some(w), Some(e)) => (e - w) / dx[i],
-                    (None, Some(e)) => (e - vc(i, j)) / (x_face(i + 1) - xc[i]),
-                    (Some(w), None) => (vc(i, j) - w) / (xc[i] - x_face(i)),
-                    (None, None) => 0.0,
-                }
-            };
+            let du_dy = across_derivative::<X>(grid, u, (walls.south, walls.north), (i, j));
+            let dv_dx = across_derivative::<Y>(grid, v, (walls.west, walls.east), (j, i));
             let d12 = 0.5 * (du_dy + dv_dx);
             let tr_d = du_dx + dv_dy;
             // 2-D: D33 = 0 (docs/model.md §0.3)
@@ -111,4 +68,39 @@ pub fn strain_rates(
             };
         }
     });
+}
+
+/// ∂φ/∂b in cell (a, b) for component `D` (∂u/∂y, ∂v/∂x): (φ_hi − φ_lo)/Δb with φ on the
+/// cell's two faces across the direction interpolated between the cell centres (AVG_Y,
+/// docs/model.md §4.4 GET_FACE_VEL_SOLIDS) of the cell-centred φ (the mean of its two nodes,
+/// MFIX AVG_X_E, §4.1), at a wall the wall face value of `walls` (low, high; MFIX's
+/// ghost/fluid mean, §3.2); one-sided at an outlet (centre to the other face).
+#[inline]
+fn across_derivative<D: Direction>(
+    grid: &Grid,
+    phi: &[f64],
+    (low, high): (Option<&[f64]>, Option<&[f64]>),
+    (a, b): (usize, usize),
+) -> f64 {
+    let nx = grid.nx();
+    let across = D::across(grid);
+    let n_b = across.len();
+    let centre = |b: usize| 0.5 * (phi[D::node(a, b, nx)] + phi[D::node(a + 1, b, nx)]);
+    let face = |bf: usize| -> Option<f64> {
+        if bf == 0 {
+            low.map(|w| w[a])
+        } else if bf == n_b {
+            high.map(|w| w[a])
+        } else {
+            let w = across.interpolation_weight(bf - 1);
+            Some(w * centre(bf - 1) + (1.0 - w) * centre(bf))
+        }
+    };
+    let (faces, centres) = (across.faces(), across.centres());
+    match (face(b), face(b + 1)) {
+        (Some(lo), Some(hi)) => (hi - lo) / across.widths()[b],
+        (None, Some(hi)) => (hi - centre(b)) / (faces[b + 1] - centres[b]),
+        (Some(lo), None) => (centre(b) - lo) / (centres[b] - faces[b]),
+        (None, None) => 0.0,
+    }
 }

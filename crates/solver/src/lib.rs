@@ -6,7 +6,8 @@
 //!   compiled per direction (`direction`), dispatched from the [`staggered`] component view;
 //! - [`momentum_form`]: the momentum equations' continuity-subtracted (MFIX) or conservative
 //!   form (docs/model.md §4.3);
-//! - [`single_phase`]: the incompressible SIMPLE core on a stretched staggered grid;
+//! - [`single_phase`]: the incompressible SIMPLE core on a stretched staggered grid, whose
+//!   patterns and pressure-correction update the two-fluid gas shares (`node_block`);
 //! - [`two_fluid`]: the first two-fluid model (gas + M solids, docs/model.md §4.9) built from
 //!   [`energy`] (granular energy, §4.8),
 //!   [`kinematics`] (cell strain rates), [`pea`] (partial elimination of drag, §4.5),
@@ -28,6 +29,7 @@ pub mod energy;
 pub mod kinematics;
 pub mod momentum;
 pub mod momentum_form;
+pub(crate) mod node_block;
 pub mod pea;
 pub mod side;
 pub mod single_phase;

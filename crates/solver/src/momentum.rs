@@ -358,53 +358,46 @@ pub fn mass_fluxes(
     out: &mut MassFluxes,
 ) {
     let (nx, ny) = (grid.nx(), grid.ny());
-    let (dx, dy) = (grid.x.widths(), grid.y.widths());
-    let mx = nx + 1;
-    out.x.resize(mx * ny, 0.0);
+    out.x.resize((nx + 1) * ny, 0.0);
     out.y.resize(nx * (ny + 1), 0.0);
-    for j in 0..ny {
-        let row = nx * j;
-        for i in 0..mx {
-            let vel = u[i + mx * j];
-            let re = if i == 0 {
-                rho_eps[row]
-            } else if i == nx {
-                rho_eps[nx - 1 + row]
-            } else {
-                face_value(
-                    scheme,
-                    rho_eps,
-                    (i >= 2).then(|| i - 2 + row),
-                    i - 1 + row,
-                    i + row,
-                    (i + 1 < nx).then(|| i + 1 + row),
-                    vel,
-                )
-            };
-            out.x[i + mx * j] = re * vel * dy[j];
-        }
-    }
-    for j in 0..=ny {
-        for i in 0..nx {
-            let vel = v[i + nx * j];
-            let re = if j == 0 {
-                rho_eps[i]
-            } else if j == ny {
-                rho_eps[i + nx * (ny - 1)]
-            } else {
-                face_value(
-                    scheme,
-                    rho_eps,
-                    (j >= 2).then(|| i + nx * (j - 2)),
-                    i + nx * (j - 1),
-                    i + nx * j,
-                    (j + 1 < ny).then(|| i + nx * (j + 1)),
-                    vel,
-                )
-            };
-            out.y[i + nx * j] = re * vel * dx[i];
-        }
-    }
+    face_mass_fluxes::<X>(grid, scheme, rho_eps, u, &mut out.x);
+    face_mass_fluxes::<Y>(grid, scheme, rho_eps, v, &mut out.y);
+}
+
+/// [`mass_fluxes`] through the faces normal to direction `D`, of the velocity `phi` on
+/// them: on face (a, b) ρε of the scheme between cells a − 1 and a, the inside cell's at an
+/// end, times φ and the face area.
+fn face_mass_fluxes<D: Direction>(
+    grid: &Grid,
+    scheme: Scheme,
+    rho_eps: &[f64],
+    phi: &[f64],
+    out: &mut [f64],
+) {
+    let nx = grid.nx();
+    let (n_a, n_b) = (D::along(grid).len(), D::across(grid).len());
+    let d_b = D::across(grid).widths();
+    let cell = |c: usize, b: usize| D::cell(c, b, nx);
+    D::for_each(0..n_a + 1, 0..n_b, |a, b| {
+        let k = D::node(a, b, nx);
+        let vel = phi[k];
+        let re = if a == 0 {
+            rho_eps[cell(0, b)]
+        } else if a == n_a {
+            rho_eps[cell(n_a - 1, b)]
+        } else {
+            face_value(
+                scheme,
+                rho_eps,
+                (a >= 2).then(|| cell(a - 2, b)),
+                cell(a - 1, b),
+                cell(a, b),
+                (a + 1 < n_a).then(|| cell(a + 1, b)),
+                vel,
+            )
+        };
+        out[k] = re * vel * d_b[b];
+    });
 }
 
 /// The nodes of component `D` on a grid: the cells beside each node, the distance weights

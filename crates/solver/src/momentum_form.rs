@@ -46,8 +46,12 @@ pub(crate) fn add_continuity_remainder(
     dt: f64,
     a: &mut Stencil5,
 ) {
-    let (nx, ny) = (grid.nx(), grid.ny());
-    let periodic = c.dir == 0 && grid.periodic_x();
+    let nx = grid.nx();
+    // periodic as the grid is, like the rest of the assembly
+    let c = Component {
+        periodic: c.dir == 0 && grid.periodic_x(),
+        ..c
+    };
     let (mx, my) = (faces.mx, faces.my);
     for j in 0..my {
         for i in 0..mx {
@@ -56,16 +60,7 @@ pub(crate) fn add_continuity_remainder(
                 continue;
             }
             // the cells whose halves make up the control volume
-            let cells: [Option<(usize, usize)>; 2] = if c.dir == 0 {
-                let west = if periodic && i == 0 {
-                    Some(nx - 1)
-                } else {
-                    i.checked_sub(1)
-                };
-                [west.map(|w| (w, j)), (i < nx).then_some((i, j))]
-            } else {
-                [j.checked_sub(1).map(|s| (i, s)), (j < ny).then_some((i, j))]
-            };
+            let cells = c.cells(i, j, true);
             let mass = |rho_eps: &[f64]| -> f64 {
                 cells
                     .iter()

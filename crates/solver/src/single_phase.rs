@@ -12,10 +12,12 @@
 //! face and has zero normal gradient of both velocity components.
 
 use runout_closures::FaceMean;
-use runout_linsolve::{build, LinSolveError, LinearSolver, LinearSolverKind, Pattern, Stencil5};
+use runout_linsolve::{build, LinSolveError, LinearSolver, LinearSolverKind, Stencil5};
 use runout_mesh::{Grid, Sides};
 
+use crate::direction::{Direction, X, Y};
 use crate::momentum::{assemble, fixed_row, neighbour_sum, Context, MomentumForm, PhaseFields};
+use crate::node_block::{correct_velocity, pressure_pattern, wall_pattern};
 pub use crate::side::SideBc;
 use crate::staggered::Component;
 use crate::transport::{FaceData, Scheme};
@@ -176,31 +178,9 @@ impl SinglePhase {
         }
         let (nx, ny) = (grid.nx(), grid.ny());
         let lin = |equation| move |source| SolverError::Linear { equation, source };
-        let mut pu = Pattern::new(nx + 1, ny).map_err(lin("u"))?;
-        for j in 0..ny {
-            if !bcs.west.is_outlet() {
-                pu.fix(0, j).map_err(lin("u"))?;
-            }
-            if !bcs.east.is_outlet() {
-                pu.fix(nx, j).map_err(lin("u"))?;
-            }
-        }
-        let mut pv = Pattern::new(nx, ny + 1).map_err(lin("v"))?;
-        for i in 0..nx {
-            if !bcs.south.is_outlet() {
-                pv.fix(i, 0).map_err(lin("v"))?;
-            }
-            if !bcs.north.is_outlet() {
-                pv.fix(i, ny).map_err(lin("v"))?;
-            }
-        }
-        let mut pp = Pattern::new(nx, ny).map_err(lin("p'"))?;
-        // A closed domain fixes the pressure level in one cell (its continuity follows
-        // from the others').
-        let pressure_pinned = !bcs.iter().any(|(_, b)| b.is_outlet());
-        if pressure_pinned {
-            pp.fix(0, 0).map_err(lin("p'"))?;
-        }
+        let pu = wall_pattern::<X>(&grid, &bcs).map_err(lin("u"))?;
+        let pv = wall_pattern::<Y>(&grid, &bcs).map_err(lin("v"))?;
+        let (pp, pressure_pinned) = pressure_pattern(&grid, &bcs).map_err(lin("p'"))?;
         let mut solver_u = build(&settings.momentum_solver);
         let mut solver_v = build(&settings.momentum_solver);
         let mut solver_p = build(&settings.pressure_solver);
@@ -484,28 +464,8 @@ impl SinglePhase {
             })?;
         // velocity correction with the full p', pressure with ω_p (docs/model.md §4.6)
         let pc = &self.p_corr;
-        for j in 0..ny {
-            for i in 0..=nx {
-                let k = i + (nx + 1) * j;
-                if self.d_u[k] == 0.0 {
-                    continue;
-                }
-                let p_w = if i == 0 { 0.0 } else { pc[i - 1 + nx * j] };
-                let p_e = if i == nx { 0.0 } else { pc[i + nx * j] };
-                self.u[k] += self.d_u[k] * (p_w - p_e);
-            }
-        }
-        for j in 0..=ny {
-            for i in 0..nx {
-                let k = i + nx * j;
-                if self.d_v[k] == 0.0 {
-                    continue;
-                }
-                let p_s = if j == 0 { 0.0 } else { pc[i + nx * (j - 1)] };
-                let p_n = if j == ny { 0.0 } else { pc[i + nx * j] };
-                self.v[k] += self.d_v[k] * (p_s - p_n);
-            }
-        }
+        correct_velocity::<X>((nx, ny), pc, &self.d_u, &mut self.u);
+        correct_velocity::<Y>((nx, ny), pc, &self.d_v, &mut self.v);
         let w = self.settings.relax_pressure;
         self.p.iter_mut().zip(pc).for_each(|(p, c)| *p += w * c);
         Ok((imbalance / (nx * ny) as f64, worst))
@@ -631,65 +591,43 @@ impl SinglePhase {
     /// u interpolated bilinearly at (x, y) from its staggered nodes, with the wall face
     /// values of the Robin closure below the first and above the last row.
     pub fn u_at(&self, x: f64, y: f64) -> f64 {
-        let nx = self.grid.nx();
-        let xs = self.grid.x.faces();
-        let yc = self.grid.y.centres();
-        let column = |i: usize| -> (Vec<f64>, Vec<f64>) {
-            let mut ys = vec![self.grid.y.start()];
-            let mut us = vec![face_value(
-                &self.bcs.south,
-                self.u[i],
-                self.grid.y.widths()[0],
-            )];
-            for (j, &y) in yc.iter().enumerate() {
-                ys.push(y);
-                us.push(self.u[i + (nx + 1) * j]);
-            }
-            let last = self.u[i + (nx + 1) * (yc.len() - 1)];
-            ys.push(self.grid.y.end());
-            us.push(face_value(
-                &self.bcs.north,
-                last,
-                *self.grid.y.widths().last().expect("cells"),
-            ));
-            (ys, us)
-        };
-        let i = xs.partition_point(|&f| f <= x).clamp(1, nx) - 1;
-        let t = (x - xs[i]) / (xs[i + 1] - xs[i]);
-        let (ya, ua) = column(i);
-        let (_, ub) = column(i + 1);
-        (1.0 - t) * interp(&ya, &ua, y) + t * interp(&ya, &ub, y)
+        self.interpolate::<X>(&self.u, (x, y))
     }
 
     /// v interpolated bilinearly at (x, y), with wall face values at the two ends.
     pub fn v_at(&self, x: f64, y: f64) -> f64 {
-        let (nx, ny) = (self.grid.nx(), self.grid.ny());
-        let ys = self.grid.y.faces();
-        let xc = self.grid.x.centres();
-        let row = |j: usize| -> (Vec<f64>, Vec<f64>) {
-            let mut xs = vec![self.grid.x.start()];
-            let mut vs = vec![face_value(
-                &self.bcs.west,
-                self.v[nx * j],
-                self.grid.x.widths()[0],
-            )];
-            for (i, &x) in xc.iter().enumerate() {
-                xs.push(x);
-                vs.push(self.v[i + nx * j]);
+        self.interpolate::<Y>(&self.v, (x, y))
+    }
+
+    /// Component `D`'s `phi` at point `xy`: linear along each node line across the
+    /// direction (the wall face values at its two ends, docs/model.md §3.2), then linear
+    /// between the two lines around the point.
+    fn interpolate<D: Direction>(&self, phi: &[f64], xy: (f64, f64)) -> f64 {
+        let nx = self.grid.nx();
+        let (along, across) = (D::along(&self.grid), D::across(&self.grid));
+        let (low_wall, high_wall) = D::walls(&self.bcs);
+        let (n_a, n_b) = (along.len(), across.len());
+        let widths = across.widths();
+        // the positions across and the values on the node line a, walls included
+        let line = |a: usize| -> (Vec<f64>, Vec<f64>) {
+            let mut bs = vec![across.start()];
+            let mut values = vec![face_value(low_wall, phi[D::node(a, 0, nx)], widths[0])];
+            for (b, &c) in across.centres().iter().enumerate() {
+                bs.push(c);
+                values.push(phi[D::node(a, b, nx)]);
             }
-            xs.push(self.grid.x.end());
-            vs.push(face_value(
-                &self.bcs.east,
-                self.v[nx - 1 + nx * j],
-                self.grid.x.widths()[nx - 1],
-            ));
-            (xs, vs)
+            let last = phi[D::node(a, n_b - 1, nx)];
+            bs.push(across.end());
+            values.push(face_value(high_wall, last, widths[n_b - 1]));
+            (bs, values)
         };
-        let j = ys.partition_point(|&f| f <= y).clamp(1, ny) - 1;
-        let t = (y - ys[j]) / (ys[j + 1] - ys[j]);
-        let (xa, va) = row(j);
-        let (_, vb) = row(j + 1);
-        (1.0 - t) * interp(&xa, &va, x) + t * interp(&xa, &vb, x)
+        let (pa, pb) = D::pick(xy, (xy.1, xy.0));
+        let faces = along.faces();
+        let a = faces.partition_point(|&f| f <= pa).clamp(1, n_a) - 1;
+        let t = (pa - faces[a]) / (faces[a + 1] - faces[a]);
+        let (bs, lo) = line(a);
+        let (_, hi) = line(a + 1);
+        (1.0 - t) * interp(&bs, &lo, pb) + t * interp(&bs, &hi, pb)
     }
 }
 

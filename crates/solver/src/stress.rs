@@ -16,12 +16,14 @@
 //! arithmetic; docs/model.md §4.1, §2.4.4). On a wall the tangential
 //! derivative of the normal velocity is zero (v = 0 along a floor), so the corner term
 //! vanishes there; on an outlet the corner values of the fluid row are used. The v equation
-//! is the mirror image.
+//! is the mirror image: both are written once in the component's own coordinates and
+//! compiled per direction (direction.rs).
 
 use runout_mesh::Grid;
 
 use runout_closures::FaceMean;
 
+use crate::direction::{Direction, X, Y};
 use crate::momentum::{cv_width, face_mean};
 
 /// μ at the corner (x-face i, y-face j) from the (up to four) cells around it, by `mean`.
@@ -66,51 +68,52 @@ pub fn explicit_stress(
     tau_u: &mut [f64],
     tau_v: &mut [f64],
 ) {
-    let (nx, ny) = (grid.nx(), grid.ny());
-    let (dx, dy) = (grid.x.widths(), grid.y.widths());
-    let (dxc, dyc) = (grid.x.face_spacing(), grid.y.face_spacing());
-    let mx = nx + 1;
-    // the normal stress beyond the implicit part at a cell centre
-    let normal_x = |c: usize, r: usize| {
-        let k = c + nx * r;
-        mu[k] * (u[c + 1 + mx * r] - u[c + mx * r]) / dx[c] + lambda[k] * tr_d[k]
+    let fields = (mu, mean, lambda, tr_d);
+    component_stress::<X>(grid, u, v, fields, fixed_u, tau_u);
+    component_stress::<Y>(grid, v, u, fields, fixed_v, tau_v);
+}
+
+/// [`explicit_stress`] of component `D` with velocity `phi` and the other component
+/// `other`, in the component's own coordinates (a along, b across; direction.rs): on node
+/// (a, b) the normal part (μ ∂φ/∂a + λ tr D) differenced between cells a − 1 and a times
+/// the face, the shear part μ ∂φ_other/∂a differenced between the corners b and b + 1 times
+/// the control-volume width.
+fn component_stress<D: Direction>(
+    grid: &Grid,
+    phi: &[f64],
+    other: &[f64],
+    (mu, mean, lambda, tr_d): (&[f64], FaceMean, &[f64], &[f64]),
+    fixed: &[bool],
+    tau: &mut [f64],
+) {
+    let nx = grid.nx();
+    let (n_a, n_b) = (D::along(grid).len(), D::across(grid).len());
+    let (d_a, d_b) = (D::along(grid).widths(), D::across(grid).widths());
+    let along_spacing = D::along(grid).face_spacing();
+    // the normal stress beyond the implicit part at the centre of cell (c, b)
+    let normal_stress = |c: usize, b: usize| {
+        let k = D::cell(c, b, nx);
+        mu[k] * (phi[D::node(c + 1, b, nx)] - phi[D::node(c, b, nx)]) / d_a[c] + lambda[k] * tr_d[k]
     };
-    let normal_y = |c: usize, r: usize| {
-        let k = c + nx * r;
-        mu[k] * (v[c + nx * (r + 1)] - v[c + nx * r]) / dy[r] + lambda[k] * tr_d[k]
+    // ∂φ_other/∂a at the corner (a, b), 1 ≤ a < n_a: ∂v/∂x for u, ∂u/∂y for v (zero on the
+    // walls at the ends, where the other component is zero)
+    let cross = |a: usize, b: usize| {
+        (other[D::cross_node(a, b, nx)] - other[D::cross_node(a - 1, b, nx)]) / along_spacing[a]
     };
-    // ∂v/∂x at corner (x-face i, y-face j), 1 ≤ i < nx (zero on the west/east walls)
-    let dv_dx = |i: usize, j: usize| (v[i + nx * j] - v[i - 1 + nx * j]) / dxc[i];
-    // ∂u/∂y at corner (x-face i, y-face j), 1 ≤ j < ny; on the floor/lid the wall closure
-    // is implicit already, and ∂v/∂x vanishes there, so only interior corners carry this
-    let du_dy = |i: usize, j: usize| (u[i + mx * j] - u[i + mx * (j - 1)]) / dyc[j];
-    for j in 0..ny {
-        for i in 0..mx {
-            let k = i + mx * j;
-            if fixed_u[k] || i == 0 || i == nx {
-                tau_u[k] = 0.0;
-                continue;
-            }
-            let normal = (normal_x(i, j) - normal_x(i - 1, j)) * dy[j];
-            // corners at y-faces j (south) and j+1 (north); v on a wall face is zero, so
-            // ∂v/∂x there is zero as well; on an outlet face v exists and is used
-            let shear_at = |jf: usize| corner_viscosity(grid, mu, mean, i, jf) * dv_dx(i, jf);
-            let shear = (shear_at(j + 1) - shear_at(j)) * cv_width(dx, i);
-            tau_u[k] = normal + shear;
+    D::for_each(0..n_a + 1, 0..n_b, |a, b| {
+        let k = D::node(a, b, nx);
+        if fixed[k] || a == 0 || a == n_a {
+            tau[k] = 0.0;
+            return;
         }
-    }
-    for j in 0..=ny {
-        for i in 0..nx {
-            let k = i + nx * j;
-            if fixed_v[k] || j == 0 || j == ny {
-                tau_v[k] = 0.0;
-                continue;
-            }
-            let normal = (normal_y(i, j) - normal_y(i, j - 1)) * dx[i];
-            // corners at x-faces i (west) and i+1 (east); u on a west/east wall is zero
-            let shear_at = |i_f: usize| corner_viscosity(grid, mu, mean, i_f, j) * du_dy(i_f, j);
-            let shear = (shear_at(i + 1) - shear_at(i)) * cv_width(dy, j);
-            tau_v[k] = normal + shear;
-        }
-    }
+        let normal = (normal_stress(a, b) - normal_stress(a - 1, b)) * d_b[b];
+        // corners at b and b + 1 across: the other component on a wall face is zero, so
+        // its derivative is as well; on an outlet face it exists and is used
+        let shear_at = |bf: usize| {
+            let (i, j) = D::xy(a, bf);
+            corner_viscosity(grid, mu, mean, i, j) * cross(a, bf)
+        };
+        let shear = (shear_at(b + 1) - shear_at(b)) * cv_width(d_a, a);
+        tau[k] = normal + shear;
+    });
 }

@@ -9,6 +9,8 @@
 
 use runout_linsolve::{for_each_row, Stencil5};
 
+use crate::direction::{Direction, X, Y};
+
 /// Convection scheme (MFIX `DISCRETIZE` 0 and 2, docs/model.md §4.2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Scheme {
@@ -204,40 +206,48 @@ pub fn assemble_masked(
 /// with F ≠ 0 (docs/model.md §4.2), rows in parallel; the others keep a stale value that
 /// [`assemble_masked`] does not read.
 fn deferred_corrections(faces: &mut FaceData, phi: &[f64]) {
-    let (mx, my) = (faces.mx, faces.my);
-    let at = |i: isize, j: isize| -> Option<f64> {
-        (i >= 0 && j >= 0 && (i as usize) < mx && (j as usize) < my)
-            .then(|| phi[i as usize + mx * j as usize])
-    };
-    let (flux_x, flux_y) = (&faces.flux_x, &faces.flux_y);
-    for_each_row(&mut faces.correction_x, mx + 1, |j, row| {
-        for i in 1..mx {
-            let f = flux_x[i + (mx + 1) * j];
-            if f == 0.0 {
-                continue; // not read (assemble_masked)
-            }
-            let (ii, jj) = (i as isize, j as isize);
-            row[i] = if f > 0.0 {
-                correction(f, at(ii - 2, jj), phi[i - 1 + mx * j], phi[i + mx * j])
-            } else {
-                correction(f, at(ii + 1, jj), phi[i + mx * j], phi[i - 1 + mx * j])
-            };
-        }
-    });
-    for_each_row(&mut faces.correction_y, mx, |j, row| {
-        if j == 0 || j >= my {
-            return;
-        }
+    let FaceData {
+        mx,
+        my,
+        flux_x,
+        flux_y,
+        correction_x,
+        correction_y,
+        ..
+    } = faces;
+    let dims = (*mx, *my);
+    corrections_along::<X>(dims, flux_x, phi, correction_x);
+    corrections_along::<Y>(dims, flux_y, phi, correction_y);
+}
+
+/// [`deferred_corrections`] of the faces normal to direction `D` of an `mx` × `my` block:
+/// the face (a, b) between nodes a − 1 and a, with its fluxes `flux` and corrections `out`
+/// (the far-upwind node two before the upwind one, none beyond the block).
+fn corrections_along<D: Direction>(
+    (mx, my): (usize, usize),
+    flux: &[f64],
+    phi: &[f64],
+    out: &mut [f64],
+) {
+    let n_a = D::pick(mx, my);
+    let row_len = D::row_len(mx);
+    let value = |a: usize, b: usize| phi[D::cell(a, b, mx)];
+    for_each_row(out, row_len, |j, row| {
         for (i, delta) in row.iter_mut().enumerate() {
-            let f = flux_y[i + mx * j];
+            let (a, b) = D::ab(i, j);
+            if a == 0 || a >= n_a {
+                continue;
+            }
+            let f = flux[i + row_len * j];
             if f == 0.0 {
                 continue; // not read (assemble_masked)
             }
-            let (ii, jj) = (i as isize, j as isize);
             *delta = if f > 0.0 {
-                correction(f, at(ii, jj - 2), phi[i + mx * (j - 1)], phi[i + mx * j])
+                let up = (a >= 2).then(|| value(a - 2, b));
+                correction(f, up, value(a - 1, b), value(a, b))
             } else {
-                correction(f, at(ii, jj + 1), phi[i + mx * j], phi[i + mx * (j - 1)])
+                let up = (a + 1 < n_a).then(|| value(a + 1, b));
+                correction(f, up, value(a, b), value(a - 1, b))
             };
         }
     });

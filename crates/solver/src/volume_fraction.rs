@@ -13,9 +13,12 @@
 //! plus a_P += ρs V/Δt and b = −(the mass imbalance of ρs εs with u*). With K_cp = 0 the
 //! correction is a pure kinematic continuity correction and exact.
 
+use std::ops::Range;
+
 use runout_linsolve::Stencil5;
 use runout_mesh::Grid;
 
+use crate::direction::{Direction, X, Y};
 use crate::transport::{face_value, Scheme};
 use rayon::prelude::*;
 use runout_linsolve::for_each_row;
@@ -67,77 +70,76 @@ pub fn mass_imbalance(grid: &Grid, x: &CorrectionInputs<'_>, out: &mut [f64]) {
 /// Grids with fewer cells than this compute [`mass_imbalance`] in one block.
 const PAR_MIN_CELLS: usize = 1 << 13;
 
-/// [`mass_imbalance`] of the rows j0.. that `out` holds.
+/// [`mass_imbalance`] of the rows j0.. that `out` holds: per cell the storage, then the
+/// faces normal to x (west, east), then those normal to y (south, north).
 fn imbalance_of_rows(grid: &Grid, x: &CorrectionInputs<'_>, j0: usize, out: &mut [f64]) {
-    let (nx, ny) = (grid.nx(), grid.ny());
+    let nx = grid.nx();
     let (dx, dy) = (grid.x.widths(), grid.y.widths());
-    let rows = out.len() / nx;
     for (r, row) in out.chunks_mut(nx).enumerate() {
-        let j = j0 + r;
-        let cells = nx * j;
+        let cells = nx * (j0 + r);
         for i in 0..nx {
-            row[i] = (x.eps[i + cells] - x.eps_old[i + cells]) * dx[i] * dy[j] / x.dt;
-        }
-        for i in 0..=nx {
-            let vel = x.u[i + (nx + 1) * j];
-            // a periodic column of one cell (nx = 1): the fluxes through its west and east
-            // faces are the same flux and cancel, so both are left out
-            if vel == 0.0 || (grid.periodic_x() && (i == 0 || i == nx)) {
-                continue;
-            }
-            let eps_face = if i == 0 || i == nx {
-                boundary_face(x.eps[i.min(nx - 1) + cells], vel, i == 0)
-            } else {
-                face_value(
-                    x.scheme,
-                    x.eps,
-                    (i >= 2).then(|| i - 2 + cells),
-                    i - 1 + cells,
-                    i + cells,
-                    (i + 1 < nx).then(|| i + 1 + cells),
-                    vel,
-                )
-            };
-            let flux = eps_face * vel * dy[j];
-            if i > 0 {
-                row[i - 1] += flux;
-            }
-            if i < nx {
-                row[i] -= flux;
-            }
+            row[i] = (x.eps[i + cells] - x.eps_old[i + cells]) * dx[i] * dy[j0 + r] / x.dt;
         }
     }
-    // the y-faces from the block's bottom to its top, each adding to the cell below and
-    // taking from the cell above where those are in the block
-    for j in j0..=j0 + rows {
-        for i in 0..nx {
-            let vel = x.v[i + nx * j];
-            if vel == 0.0 {
-                continue;
-            }
-            let eps_face = if j == 0 || j == ny {
-                boundary_face(x.eps[i + nx * j.min(ny - 1)], vel, j == 0)
-            } else {
-                face_value(
-                    x.scheme,
-                    x.eps,
-                    (j >= 2).then(|| i + nx * (j - 2)),
-                    i + nx * (j - 1),
-                    i + nx * j,
-                    (j + 1 < ny).then(|| i + nx * (j + 1)),
-                    vel,
-                )
-            };
-            let flux = eps_face * vel * dx[i];
-            if j > j0 {
-                out[i + nx * (j - 1 - j0)] += flux;
-            }
-            if j < j0 + rows {
-                out[i + nx * (j - j0)] -= flux;
-            }
-        }
-    }
+    let rows = j0..j0 + out.len() / nx;
+    face_imbalance::<X>(grid, x, x.u, rows.clone(), out);
+    face_imbalance::<Y>(grid, x, x.v, rows, out);
     out.iter_mut().for_each(|m| *m *= x.density);
+}
+
+/// Adds the flux εs,f φ A through each face (a, b) normal to direction `D` that bounds a cell
+/// of the block of rows `rows` (`out`) to the cell before it and takes it from the cell
+/// after it; εs,f from the scheme, on the domain boundary the inside cell's for outflow and
+/// 0 for inflow. A y-face between two blocks is evaluated by both (the same value).
+fn face_imbalance<D: Direction>(
+    grid: &Grid,
+    x: &CorrectionInputs<'_>,
+    phi: &[f64],
+    rows: Range<usize>,
+    out: &mut [f64],
+) {
+    let nx = grid.nx();
+    let (n_a, n_b) = (D::along(grid).len(), D::across(grid).len());
+    let d_b = D::across(grid).widths();
+    let cell = |c: usize, b: usize| D::cell(c, b, nx);
+    // cell (c, b)'s index in `out`, if the block holds it
+    let in_block = |c: usize, b: usize| {
+        let (i, j) = D::xy(c, b);
+        rows.contains(&j).then(|| i + nx * (j - rows.start))
+    };
+    // x: the rows' faces; y: the faces from the block's bottom to its top
+    let (along, across) = D::pick(
+        (0..n_a + 1, rows.clone()),
+        (rows.start..rows.end + 1, 0..n_b),
+    );
+    D::for_each(along, across, |a, b| {
+        let vel = phi[D::node(a, b, nx)];
+        // a periodic column of one cell (nx = 1): the fluxes through its west and east
+        // faces are the same flux and cancel, so both are left out
+        if vel == 0.0 || (D::periodic(grid) && (a == 0 || a == n_a)) {
+            return;
+        }
+        let eps_face = if a == 0 || a == n_a {
+            boundary_face(x.eps[cell(a.min(n_a - 1), b)], vel, a == 0)
+        } else {
+            face_value(
+                x.scheme,
+                x.eps,
+                (a >= 2).then(|| cell(a - 2, b)),
+                cell(a - 1, b),
+                cell(a, b),
+                (a + 1 < n_a).then(|| cell(a + 1, b)),
+                vel,
+            )
+        };
+        let flux = eps_face * vel * d_b[b];
+        if let Some(k) = a.checked_sub(1).and_then(|c| in_block(c, b)) {
+            out[k] += flux;
+        }
+        if let Some(k) = (a < n_a).then(|| in_block(a, b)).flatten() {
+            out[k] -= flux;
+        }
+    });
 }
 
 /// εs on a domain-boundary face (an outlet; walls carry no normal velocity): the inside
@@ -267,7 +269,6 @@ pub fn apply_correction(
     e_v: &[f64],
     k_cp: &[f64],
 ) {
-    let (nx, ny) = (grid.nx(), grid.ny());
     for k in 0..eps.len() {
         if eps[k] + eps_prime[k] > eps_max && eps_prime[k] > 0.0 {
             eps_prime[k] *= relax;
@@ -275,20 +276,30 @@ pub fn apply_correction(
         eps[k] = (eps[k] + eps_prime[k]).max(0.0);
     }
     let eps_prime = &*eps_prime;
-    // face by face, rows in parallel (interior faces; walls have e = 0 anyway)
-    for_each_row(u, nx + 1, |j, row| {
-        for i in 1..nx {
-            let (w, e, f) = (i - 1 + nx * j, i + nx * j, i + (nx + 1) * j);
-            row[i] -= e_u[f] * (k_cp[e] * eps_prime[e] - k_cp[w] * eps_prime[w]);
-        }
-    });
-    for_each_row(v, nx, |j, row| {
-        if j == 0 || j == ny {
-            return;
-        }
-        for (i, v) in row.iter_mut().enumerate() {
-            let (s, n, f) = (i + nx * (j - 1), i + nx * j, i + nx * j);
-            *v -= e_v[f] * (k_cp[n] * eps_prime[n] - k_cp[s] * eps_prime[s]);
+    correct_face_velocities::<X>(grid, eps_prime, k_cp, e_u, u);
+    correct_face_velocities::<Y>(grid, eps_prime, k_cp, e_v, v);
+}
+
+/// φ −= e_f (K_cp,high ε'_high − K_cp,low ε'_low) on the nodes of component `D` between two
+/// cells (docs/model.md §4.7), rows in parallel (walls have e = 0 anyway; a periodic
+/// column's node 0 has no gradient of K_cp ε').
+fn correct_face_velocities<D: Direction>(
+    grid: &Grid,
+    eps_prime: &[f64],
+    k_cp: &[f64],
+    e: &[f64],
+    phi: &mut [f64],
+) {
+    let nx = grid.nx();
+    let (n_a, mx) = (D::along(grid).len(), D::row_len(nx));
+    for_each_row(phi, mx, |j, row| {
+        for (i, phi) in row.iter_mut().enumerate() {
+            let (a, b) = D::ab(i, j);
+            if a == 0 || a == n_a {
+                continue;
+            }
+            let (lo, hi) = (D::cell(a - 1, b, nx), D::cell(a, b, nx));
+            *phi -= e[i + mx * j] * (k_cp[hi] * eps_prime[hi] - k_cp[lo] * eps_prime[lo]);
         }
     });
 }

@@ -24,10 +24,11 @@ use runout_mesh::{Grid, Sides};
 use super::diagnostics::{since, Diagnostics};
 use super::model::Model;
 use super::{lin, solve_keeping_preconditioner, State, TwoFluidError, Workspace};
+use crate::direction::{X, Y};
 use crate::momentum::fixed_row;
+use crate::node_block::correct_velocity;
 use crate::transport::{face_value, Scheme};
 use runout_closures::GasLaw;
-use runout_linsolve::for_each_row;
 
 /// Step 4: gas pressure correction (module doc); returns the mean |gas imbalance|.
 pub(super) fn pressure_correction(
@@ -71,14 +72,8 @@ pub(super) fn pressure_correction(
     diagnostics.profile.pressure_solve += solve;
     diagnostics.profile.pressure_assembly -= solve;
     let g = state.gas_mut();
-    correct_velocities(
-        (nx, ny),
-        &work.p_corr,
-        &work.d_u,
-        &work.d_v,
-        &mut g.u,
-        &mut g.v,
-    );
+    correct_velocity::<X>((nx, ny), &work.p_corr, &work.d_u, &mut g.u);
+    correct_velocity::<Y>((nx, ny), &work.p_corr, &work.d_v, &mut g.v);
     let w = model.settings.relax_pressure;
     g.p.iter_mut()
         .zip(&work.p_corr)
@@ -222,40 +217,6 @@ fn assemble(
         fixed_row(a, 0, 0.0);
     }
     total
-}
-
-/// u_g += d_u (P'_W − P'_E), v_g += d_v (P'_S − P'_N) on every node with d ≠ 0 (P' = 0
-/// beyond the domain).
-fn correct_velocities(
-    (nx, ny): (usize, usize),
-    pc: &[f64],
-    d_u: &[f64],
-    d_v: &[f64],
-    u: &mut [f64],
-    v: &mut [f64],
-) {
-    let u_row = |j: usize, u: &mut [f64]| {
-        for (i, u) in u.iter_mut().enumerate() {
-            let k = i + (nx + 1) * j;
-            if d_u[k] != 0.0 {
-                let p_w = if i == 0 { 0.0 } else { pc[i - 1 + nx * j] };
-                let p_e = if i == nx { 0.0 } else { pc[i + nx * j] };
-                *u += d_u[k] * (p_w - p_e);
-            }
-        }
-    };
-    let v_row = |j: usize, v: &mut [f64]| {
-        for (i, v) in v.iter_mut().enumerate() {
-            let k = i + nx * j;
-            if d_v[k] != 0.0 {
-                let p_s = if j == 0 { 0.0 } else { pc[i + nx * (j - 1)] };
-                let p_n = if j == ny { 0.0 } else { pc[i + nx * j] };
-                *v += d_v[k] * (p_s - p_n);
-            }
-        }
-    };
-    for_each_row(u, nx + 1, u_row);
-    for_each_row(v, nx, v_row);
 }
 
 /// Whether cells `a` < `b`, `stride` apart, lie on one grid line (x lines: stride 1 within

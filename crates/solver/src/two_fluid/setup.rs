@@ -15,6 +15,8 @@ use super::{
     Solvers, State, TwoFluid, TwoFluidError, TwoFluidSettings, Workspace, MAX_SOLIDS_PHASES,
     PRESSURE_COARSEST_CELLS, PRESSURE_RTOL, THETA_SMALL,
 };
+use crate::direction::{X, Y};
+use crate::node_block::{pressure_pattern, wall_pattern};
 use crate::single_phase::{Fluid, SideBc};
 use crate::transport::FaceData;
 use runout_closures::GasLaw;
@@ -46,7 +48,7 @@ impl TwoFluid {
         if periodic && (nx != 1 || outlet(&gas_walls.west) || outlet(&gas_walls.east)) {
             return Err(TwoFluidError::PeriodicColumn(nx));
         }
-        let (pu, pv, pp, pressure_pinned) = gas_patterns((nx, ny), &gas_walls, periodic)?;
+        let (pu, pv, pp, pressure_pinned) = gas_patterns(&grid, &gas_walls)?;
         let pc = Pattern::new(nx, ny).map_err(lin("cell pattern"))?;
         let [solver_u, solver_v, solver_p, solver_eps, solver_eps_fallback, solver_theta] =
             linear_solvers([&pu, &pv, &pp, &pc])?;
@@ -159,39 +161,15 @@ fn check_solids_sides(
     Ok(())
 }
 
-/// The gas's u, v and P' patterns (walls fixed; a periodic column's node 0 is the row's
-/// unknown, node nx its copy; P' pinned at cell 0 where no side is open) and whether P' is
-/// pinned.
+/// The gas's u, v and P' patterns ([`wall_pattern`], [`pressure_pattern`]) and whether P'
+/// is pinned.
 fn gas_patterns(
-    (nx, ny): (usize, usize),
+    grid: &Grid,
     gas_walls: &Sides<SideBc>,
-    periodic: bool,
 ) -> Result<(Pattern, Pattern, Pattern, bool), TwoFluidError> {
-    let outlet = |b: &SideBc| !matches!(b, SideBc::Wall(_));
-    let mut pu = Pattern::new(nx + 1, ny).map_err(lin("u pattern"))?;
-    let mut pv = Pattern::new(nx, ny + 1).map_err(lin("v pattern"))?;
-    for j in 0..ny {
-        // periodic column: node 0 is the row's unknown, node nx its copy
-        if !outlet(&gas_walls.west) && !periodic {
-            pu.fix(0, j).map_err(lin("u pattern"))?;
-        }
-        if !outlet(&gas_walls.east) {
-            pu.fix(nx, j).map_err(lin("u pattern"))?;
-        }
-    }
-    for i in 0..nx {
-        if !outlet(&gas_walls.south) {
-            pv.fix(i, 0).map_err(lin("v pattern"))?;
-        }
-        if !outlet(&gas_walls.north) {
-            pv.fix(i, ny).map_err(lin("v pattern"))?;
-        }
-    }
-    let mut pp = Pattern::new(nx, ny).map_err(lin("p' pattern"))?;
-    let pressure_pinned = !gas_walls.iter().any(|(_, b)| outlet(b));
-    if pressure_pinned {
-        pp.fix(0, 0).map_err(lin("p' pattern"))?;
-    }
+    let pu = wall_pattern::<X>(grid, gas_walls).map_err(lin("u pattern"))?;
+    let pv = wall_pattern::<Y>(grid, gas_walls).map_err(lin("v pattern"))?;
+    let (pp, pressure_pinned) = pressure_pattern(grid, gas_walls).map_err(lin("p' pattern"))?;
     Ok((pu, pv, pp, pressure_pinned))
 }
 
