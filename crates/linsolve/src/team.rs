@@ -34,7 +34,7 @@ use crate::kernels::PAR_MIN_LEN;
 /// With a team, loops over fewer entries than this run on the calling thread alone: below
 /// it, handing the job out and moving the data between the cores' caches cost more than
 /// the second thread saves (the 400 × 100 pressure solve's 2 500-cell level took 246 µs
-/// per outer iteration on two threads, 164 µs on one; docs/studies/performance.md, session 23).
+/// per outer iteration on two threads, 164 µs on one; docs/studies/performance.md, "y lines split").
 pub(crate) const TEAM_MIN_LEN: usize = 1 << 13;
 /// With a team, the entries of one chunk of a loop at least (rayon: [`PAR_MIN_LEN`] per
 /// task of a row loop).

@@ -104,7 +104,7 @@ const PRESSURE_RTOL: f64 = 1e-2;
 /// model problem an outer iteration costs 14 % less than with 1024 on 200 × 50 cells and
 /// 2–6 % less on 400 × 100, 800 × 200 and 1000 × 90, at the same iteration counts
 /// (`cargo run --release -p runout-linsolve --example mg_threads`, docs/studies/performance.md,
-/// session 23). The ε' preconditioner keeps the default 1024: its solves took longer with
+/// "y lines split"). The ε' preconditioner keeps the default 1024: its solves took longer with
 /// 4096.
 const PRESSURE_COARSEST_CELLS: usize = 4096;
 
