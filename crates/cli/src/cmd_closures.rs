@@ -58,6 +58,32 @@ impl DragChoice {
     }
 }
 
+/// The drag-law options shared by the calculators (`runout closures`, `runout pore-pressure`).
+#[derive(clap::Args, Debug, Clone)]
+pub struct DragArgs {
+    /// gas-solids drag law
+    #[arg(long, value_enum, default_value_t = DragChoice::SyamlalObrien)]
+    pub drag: DragChoice,
+    /// Syamlal-O'Brien DRAG_C1 [-]
+    #[arg(long, default_value_t = 0.8)]
+    pub drag_c1: f64,
+    /// Syamlal-O'Brien DRAG_D1 [-]
+    #[arg(long, default_value_t = 2.65)]
+    pub drag_d1: f64,
+}
+
+impl DragArgs {
+    /// The chosen drag law with its coefficients.
+    pub fn law(&self) -> Drag {
+        self.drag.law(self.drag_c1, self.drag_d1)
+    }
+
+    /// The law's command-line spelling, for the echoed inputs.
+    pub fn name(&self) -> String {
+        choice_name(&self.drag)
+    }
+}
+
 /// Print every closure value (g0, Lun kinetic theory, friction, K_cp, drag, granular-energy
 /// sources) at one state as JSON. Defaults are the paper's sensitivity-analysis values
 /// (paper Table 3).
@@ -79,15 +105,9 @@ pub struct ClosuresArgs {
     /// S:S = tr(D^2) - (tr D)^2/3 of the solids strain rate [1/s2], >= 0
     #[arg(long, default_value_t = 0.0)]
     pub s_ddot_s: f64,
-    /// gas-solids drag law
-    #[arg(long, value_enum, default_value_t = DragChoice::SyamlalObrien)]
-    pub drag: DragChoice,
-    /// Syamlal-O'Brien DRAG_C1 [-]
-    #[arg(long, default_value_t = 0.8)]
-    pub drag_c1: f64,
-    /// Syamlal-O'Brien DRAG_D1 [-]
-    #[arg(long, default_value_t = 2.65)]
-    pub drag_d1: f64,
+    /// the drag law
+    #[command(flatten)]
+    pub drag: DragArgs,
     /// particle, gas and closure options
     #[command(flatten)]
     pub material: MaterialArgs,
@@ -135,8 +155,7 @@ impl ClosuresArgs {
     }
 
     fn params(&self) -> ClosureParams {
-        self.material
-            .params(self.drag.law(self.drag_c1, self.drag_d1))
+        self.material.params(self.drag.law())
     }
 }
 
@@ -159,7 +178,7 @@ pub fn run(args: &ClosuresArgs) -> anyhow::Result<()> {
             slip: args.slip,
             tr_d: args.tr_d,
             s_ddot_s: args.s_ddot_s,
-            drag: choice_name(&args.drag),
+            drag: args.drag.name(),
             material: &args.material,
         },
         closures: evaluate(&state, &params),
@@ -172,7 +191,7 @@ pub fn run(args: &ClosuresArgs) -> anyhow::Result<()> {
 }
 
 /// The command-line spelling of a `ValueEnum` choice.
-pub(crate) fn choice_name<T: ValueEnum>(choice: &T) -> String {
+fn choice_name<T: ValueEnum>(choice: &T) -> String {
     choice
         .to_possible_value()
         .map(|v| v.get_name().to_string())
@@ -242,6 +261,6 @@ mod tests {
         assert_eq!(params.friction_model, FrictionModel::schaeffer());
         assert_eq!(params.drag, Drag::GidaspowBlend);
         assert_eq!(params.radial, RadialDistribution::MaAhmadi);
-        assert_eq!(choice_name(&args.drag), "gidaspow-blend");
+        assert_eq!(args.drag.name(), "gidaspow-blend");
     }
 }

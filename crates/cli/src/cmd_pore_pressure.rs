@@ -5,16 +5,14 @@
 //! half-life t½ = τ½ H²/D at each height; prints JSON.
 
 use anyhow::ensure;
-use runout_closures::pore_pressure::{self, Bed, TAU_HALF};
+use runout_closures::pore_pressure::{self, Bed, GRAVITY, TAU_HALF};
 use runout_closures::{evaluate, CellState, ClosureParams};
 use serde::Serialize;
 use std::io::Write;
 
-use crate::cmd_closures::{choice_name, DragChoice};
+use crate::cmd_closures::DragArgs;
 use crate::material::MaterialArgs;
 
-/// Standard gravity [m/s²] of the bed's own weight.
-const GRAVITY: f64 = 9.81;
 /// Bisections of [`packing_under`] (2⁻⁶⁰ of the εs interval).
 const BISECTIONS: usize = 60;
 
@@ -62,15 +60,9 @@ pub struct PorePressureArgs {
     /// a gas of constant density (runout's default gas): it stores nothing
     #[arg(long)]
     pub constant_density: bool,
-    /// gas-solids drag law
-    #[arg(long, value_enum, default_value_t = DragChoice::SyamlalObrien)]
-    pub drag: DragChoice,
-    /// Syamlal-O'Brien DRAG_C1 [-]
-    #[arg(long, default_value_t = 0.8)]
-    pub drag_c1: f64,
-    /// Syamlal-O'Brien DRAG_D1 [-]
-    #[arg(long, default_value_t = 2.65)]
-    pub drag_d1: f64,
+    /// the drag law
+    #[command(flatten)]
+    pub drag: DragArgs,
     /// particle, gas and closure options
     #[command(flatten)]
     pub material: MaterialArgs,
@@ -188,7 +180,7 @@ fn packing_under(stress: f64, params: &ClosureParams) -> Option<f64> {
 /// Run `runout pore-pressure`: validate, evaluate and print the JSON (fields in `--help`).
 pub fn run(args: &PorePressureArgs) -> anyhow::Result<()> {
     args.validate()?;
-    let drag = args.drag.law(args.drag_c1, args.drag_d1);
+    let drag = args.drag.law();
     let m = &args.material;
     let bed = Bed {
         eps_s: args.eps_s,
@@ -235,7 +227,7 @@ pub fn run(args: &PorePressureArgs) -> anyhow::Result<()> {
             eps_s: args.eps_s,
             dilated_eps_s: args.dilated_eps_s,
             pressure,
-            drag: choice_name(&args.drag),
+            drag: args.drag.name(),
             material: m,
         },
         bed: BedOut {

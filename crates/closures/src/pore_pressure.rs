@@ -37,7 +37,7 @@ use crate::drag::{Drag, DragInputs};
 pub const TAU_HALF: f64 = 0.19673;
 
 /// Standard gravity g = 9.81 m/s², the acceleration the minimum fluidisation balances.
-const GRAVITY: f64 = 9.81;
+pub const GRAVITY: f64 = 9.81;
 
 /// A relative speed [m/s] small enough to be the zero-slip limit of every drag law (the
 /// laws return 0 at exactly zero slip, MFIX `drag_gs.f`); Ergun's inertial part is then
