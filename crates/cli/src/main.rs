@@ -133,6 +133,12 @@ enum Command {
         /// warn where the dense deposit is nowhere this many cells thick
         #[arg(long, default_value_t = runout_post::deposit::DEFAULT_MIN_CELLS, value_parser = clap::value_parser!(usize))]
         min_cells: usize,
+        /// write who carries the flow's weight at its base (the gas's excess pressure, the
+        /// solids pressure) column by column at every field file to this CSV
+        /// (t,x,load,gas_share,solids_share), and the whole flow's shares to the JSON's
+        /// `basal_load` (docs/reference/deposit.md, "The basal load")
+        #[arg(long, value_name = "CSV")]
+        basal_load: Option<PathBuf>,
     },
     /// Print a wall model's Robin coefficients for velocity and granular temperature, with
     /// the diagnostics the paper plots (h_w^u, φ, COL, FRI, slip), as JSON.
@@ -164,7 +170,7 @@ enum Command {
 fn post(
     run_dir: &std::path::Path,
     gates: Option<&std::path::Path>,
-    deposit_profile: Option<&std::path::Path>,
+    (deposit_profile, basal_load): (Option<&std::path::Path>, Option<&std::path::Path>),
     (rest_fraction, min_cells): (f64, usize),
 ) -> ExitCode {
     if !(rest_fraction > 0.0 && rest_fraction < 1.0) {
@@ -219,6 +225,15 @@ fn post(
         deposit.thin = runout_post::deposit::thin_deposit(&profile, min_cells);
         metrics.deposit = Ok(deposit);
     }
+    if let Some(csv) = basal_load {
+        match flow_basal_load(run_dir, csv) {
+            Ok(flow) => metrics.basal_load = Some(flow),
+            Err(e) => {
+                eprintln!("runout post: basal load: {e}");
+                return ExitCode::FAILURE;
+            }
+        }
+    }
     if let Ok(d) = &metrics.deposit {
         if let Some(thin) = &d.thin {
             eprintln!("runout post: {}", thin.message(d.max_thickness_cells));
@@ -235,6 +250,24 @@ fn post(
             ExitCode::FAILURE
         }
     }
+}
+
+/// Writes the run's basal load column by column to `csv` and returns the whole flow's
+/// shares at each field file that holds a flow (runout_post::basal_load).
+fn flow_basal_load(
+    run_dir: &std::path::Path,
+    csv: &std::path::Path,
+) -> Result<Vec<runout_post::basal_load::FlowLoad>, String> {
+    use runout_post::basal_load::{columns_csv, flow_load, read_basal_load};
+    let case = runout_post::folder::read_resolved_unvalidated(run_dir)?;
+    let snapshots = read_basal_load(run_dir, &case)?;
+    std::fs::write(csv, columns_csv(&snapshots))
+        .map_err(|e| format!("writing {}: {e}", csv.display()))?;
+    let xf = case.grid().map_err(|e| e.to_string())?.x.faces().to_vec();
+    Ok(snapshots
+        .iter()
+        .filter_map(|(time, columns)| flow_load(*time, columns, &xf))
+        .collect())
 }
 
 fn parse_fidelity(s: &str) -> Result<Fidelity, String> {
@@ -652,10 +685,11 @@ fn main() -> ExitCode {
             deposit_profile,
             rest_fraction,
             min_cells,
+            basal_load,
         } => post(
             &run_dir,
             gates.as_deref(),
-            deposit_profile.as_deref(),
+            (deposit_profile.as_deref(), basal_load.as_deref()),
             (rest_fraction, min_cells),
         ),
         Command::Wall(args) => match cmd_wall::run(&args) {

@@ -9,6 +9,7 @@
 //! when, L∞, H∞, the profile); `cargo xtask` (sweep, report, calibrate,
 //! error-time) uses the same functions.
 
+pub mod basal_load;
 pub mod bulk;
 pub mod case_data;
 pub mod chosen;

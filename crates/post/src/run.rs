@@ -6,6 +6,7 @@ use std::path::Path;
 use runout_output::RunSummary;
 use serde::Serialize;
 
+use crate::basal_load::FlowLoad;
 use crate::deposit::{read_deposit, Deposit, DEFAULT_REST_FRACTION};
 use crate::folder::{read_resolved_unvalidated, read_summary};
 use crate::metrics::{flow_metrics, station_time, FlowMetrics};
@@ -34,6 +35,10 @@ pub struct RunMetrics {
     /// where the solids stopped, or why not read ([`crate::deposit`], v_rest = 1 % of
     /// √(g H∞))
     pub deposit: Result<Deposit, String>,
+    /// the flow's basal load and its shares at each field file ([`crate::basal_load`]),
+    /// read on request (`runout post --basal-load`)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub basal_load: Option<Vec<FlowLoad>>,
 }
 
 /// Reads the run in `dir`; `described` holds the (gate number, speed) pairs the gate MSE
@@ -61,6 +66,7 @@ pub fn run_metrics(dir: &Path, described: &[(usize, f64)]) -> Result<RunMetrics,
             Some(case) => read_deposit(dir, case, DEFAULT_REST_FRACTION).map(|(d, _)| d),
             None => Err("no readable resolved.ron".into()),
         },
+        basal_load: None,
     })
 }
 
