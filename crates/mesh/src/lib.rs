@@ -5,12 +5,14 @@
 //! faces and caches centres, widths and centre-to-centre distances; a [`Grid`] pairs two
 //! axes into the staggered (MAC) grid of docs/model.md §4.1: scalars at cell centres, u on
 //! east faces, v on north faces. [`bent_floor`]: the floor of a slope whose foot turns, in
-//! bed-following coordinates (docs/model.md §9).
+//! bed-following coordinates (docs/model.md §9). [`interpolate`]: piecewise-linear
+//! interpolation in a sampled series.
 #![deny(missing_docs)]
 
 mod axis;
 pub mod bent_floor;
 mod grid;
+mod interpolate;
 mod number;
 mod segment;
 #[cfg(feature = "proptest")]
@@ -18,6 +20,7 @@ pub mod strategies;
 
 pub use axis::Axis;
 pub use grid::{AxisSpec, Grid, GridSummary, Side, Sides};
+pub use interpolate::{interpolate, Beyond};
 pub use number::short;
 pub use segment::{Segment, MAX_AXIS_CELLS};
 

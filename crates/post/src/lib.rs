@@ -23,7 +23,6 @@ pub mod front;
 pub mod gates;
 pub mod gci;
 pub mod grid_error;
-pub mod interpolate;
 pub mod metrics;
 pub mod profile;
 pub mod run;

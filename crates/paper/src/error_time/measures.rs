@@ -3,26 +3,17 @@
 //! ladder share (the flow band of a profile, the common gates, the common times).
 
 use super::quantity::{History, LevelData, Quantity};
+use runout_mesh::{interpolate, Beyond};
 use runout_post::convergence::{weighted_l1, weighted_l2};
 use runout_post::metrics::FLOW_THRESHOLD;
 use runout_post::profile::Profile;
 
 /// Linear interpolation of (xs, ys) at `x`, extended linearly beyond the ends (xs
-/// increasing, at least one point). On a sample point it is that sample's value alone, so a
-/// NaN neighbour (a history sample without a front) does not spread onto it.
-pub fn interpolate(xs: &[f64], ys: &[f64], x: f64) -> f64 {
-    if xs.len() == 1 {
-        return ys[0];
-    }
-    let k = xs.partition_point(|&v| v <= x).clamp(1, xs.len() - 1);
-    let (x0, x1, y0, y1) = (xs[k - 1], xs[k], ys[k - 1], ys[k]);
-    if x == x0 {
-        y0
-    } else if x == x1 {
-        y1
-    } else {
-        y0 + (y1 - y0) * (x - x0) / (x1 - x0)
-    }
+/// increasing, at least one point; [`interpolate`]). On a sample point it is that
+/// sample's value alone, so a NaN neighbour (a history sample without a front) does not
+/// spread onto it.
+fn extended(xs: &[f64], ys: &[f64], x: f64) -> f64 {
+    interpolate(xs, ys, x, Beyond::Extrapolate).expect("a profile or history has samples")
 }
 
 /// Cell heights from cell-centre heights above a floor at y = 0 (each centre is the midpoint
@@ -77,7 +68,7 @@ pub(super) fn profile_samples(
         .expect("the reference has a profile");
     let heights = cell_heights(&r.y);
     let on_reference = |p: &Profile, v: &[f64]| -> Vec<f64> {
-        r.y.iter().map(|&y| interpolate(&p.y, v, y)).collect()
+        r.y.iter().map(|&y| extended(&p.y, v, y)).collect()
     };
     // the flow band: any level's εs ≥ FLOW_THRESHOLD
     let eps: Vec<Vec<f64>> = ladder
@@ -150,7 +141,7 @@ pub(super) fn history_samples(
         .map(|h| h.t[h.t.len() - 1])
         .fold(f64::INFINITY, f64::min);
     // interpolated in time; NaN between a sample with a front and one without
-    let at = |h: &History, t: f64| interpolate(&h.t, quantity.of_history(h), t);
+    let at = |h: &History, t: f64| extended(&h.t, quantity.of_history(h), t);
     let times: Vec<f64> =
         r.t.iter()
             .copied()
@@ -177,16 +168,16 @@ mod tests {
     #[test]
     fn interpolation_and_cell_heights() {
         let (x, y) = ([0.5, 1.5, 2.5], [1.0, 3.0, 2.0]);
-        assert_eq!(interpolate(&x, &y, 1.0), 2.0);
-        assert_eq!(interpolate(&x, &y, 2.5), 2.0);
+        assert_eq!(extended(&x, &y, 1.0), 2.0);
+        assert_eq!(extended(&x, &y, 2.5), 2.0);
         // extended linearly beyond the ends
-        assert_eq!(interpolate(&x, &y, 0.0), 0.0);
-        assert_eq!(interpolate(&x, &y, 3.0), 1.5);
-        assert_eq!(interpolate(&[1.0], &[4.0], 7.0), 4.0);
+        assert_eq!(extended(&x, &y, 0.0), 0.0);
+        assert_eq!(extended(&x, &y, 3.0), 1.5);
+        assert_eq!(extended(&[1.0], &[4.0], 7.0), 4.0);
         // on a sample point its own value, whatever its neighbours hold
         let nan = [f64::NAN, 3.0, f64::NAN];
-        assert_eq!(interpolate(&x, &nan, 1.5), 3.0);
-        assert!(interpolate(&x, &nan, 1.0).is_nan());
+        assert_eq!(extended(&x, &nan, 1.5), 3.0);
+        assert!(extended(&x, &nan, 1.0).is_nan());
         let h = cell_heights(&[0.005, 0.015, 0.03, 0.06]);
         let expected = [0.01, 0.01, 0.02, 0.04];
         assert!(

@@ -26,9 +26,9 @@ use anyhow::{bail, Context, Result};
 use runout_post::folder::csv_files;
 use runout_post::front::{front_series, FrontDefinition};
 use runout_post::gates::interpolated_gate_speeds;
-/// Linear interpolation in a sorted series (runout-post's).
-pub use runout_post::interpolate::interpolate;
 use runout_post::table::Table;
+
+use runout_mesh::{interpolate, Beyond};
 
 /// The profile columns a measured profile may compare.
 pub const PROFILE_COLUMNS: [&str; 5] = ["eps_s", "u_s", "theta", "u_g", "v_g"];
@@ -198,7 +198,7 @@ impl Measurements {
             }
             Kind::Front(measured) => {
                 let (definition, simulated) = front_series(dir).map_err(anyhow::Error::msg)?;
-                let mut m = compare(measured, &self.sigma, &simulated, false, "t");
+                let mut m = compare(measured, &self.sigma, &simulated, Beyond::Missing, "t");
                 m.front = Some(definition);
                 Ok(m)
             }
@@ -208,7 +208,7 @@ impl Measurements {
                 points,
             } => {
                 let simulated = profile(dir, column, file.as_deref())?;
-                Ok(compare(points, &self.sigma, &simulated, true, "y"))
+                Ok(compare(points, &self.sigma, &simulated, Beyond::Clamp, "y"))
             }
         }
     }
@@ -230,20 +230,21 @@ impl Kind {
     }
 }
 
-/// Simulated − measured at each measured abscissa, the simulation interpolated linearly;
-/// outside the simulated range a point is missing, unless `clamp` (then the end value is
-/// used).
+/// Simulated − measured at each measured abscissa, the simulation interpolated linearly
+/// ([`interpolate`]); outside the simulated range as `beyond` says (`Missing`: the point
+/// is missing; `Clamp`: the end value is used).
 fn compare(
     measured: &[(f64, f64)],
     sigma: &[f64],
     simulated: &[(f64, f64)],
-    clamp: bool,
+    beyond: Beyond,
     what: &str,
 ) -> Misfit {
+    let (xs, ys): (Vec<f64>, Vec<f64>) = simulated.iter().copied().unzip();
     let mut diffs = Vec::new();
     let mut missing = Vec::new();
     for (&(a, v), &s) in measured.iter().zip(sigma) {
-        match interpolate(simulated, a, clamp) {
+        match interpolate(&xs, &ys, a, beyond) {
             Some(sim) => diffs.push((sim - v, s)),
             None => missing.push(format!("{what} = {a}: outside the run")),
         }
@@ -545,14 +546,32 @@ mod tests {
     #[test]
     fn interpolation_and_missing_points() {
         let sim = [(0.0, 0.0), (1.0, 2.0), (2.0, 2.0)];
-        assert_eq!(interpolate(&sim, 0.5, false), Some(1.0));
-        assert_eq!(interpolate(&sim, 3.0, false), None);
-        assert_eq!(interpolate(&sim, 3.0, true), Some(2.0));
-        let m = compare(&[(0.5, 2.0), (1.5, 2.0)], &[1.0, 2.0], &sim, false, "t");
+        let m = compare(
+            &[(0.5, 2.0), (1.5, 2.0)],
+            &[1.0, 2.0],
+            &sim,
+            Beyond::Missing,
+            "t",
+        );
         assert!((m.rms - (0.5f64).sqrt()).abs() < 1e-12);
         assert!((m.chi2 - 1.0).abs() < 1e-12);
-        let m = compare(&[(0.5, 2.0), (5.0, 2.0)], &[1.0; 2], &sim, false, "t");
+        let m = compare(
+            &[(0.5, 2.0), (5.0, 2.0)],
+            &[1.0; 2],
+            &sim,
+            Beyond::Missing,
+            "t",
+        );
         assert!(m.rms.is_infinite());
         assert_eq!(m.missing.len(), 1);
+        // clamped, the point beyond the run takes the last value: 2 − 2
+        let m = compare(
+            &[(0.5, 2.0), (5.0, 2.0)],
+            &[1.0; 2],
+            &sim,
+            Beyond::Clamp,
+            "y",
+        );
+        assert!(m.missing.is_empty() && (m.chi2 - 1.0).abs() < 1e-12);
     }
 }

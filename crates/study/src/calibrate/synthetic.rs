@@ -8,7 +8,8 @@ use std::path::Path;
 
 use anyhow::{bail, Context, Result};
 
-use super::measurements::{interpolate, PROFILE_COLUMNS};
+use super::measurements::PROFILE_COLUMNS;
+use runout_mesh::{interpolate, Beyond};
 use runout_post::front::{front_series, FrontDefinition};
 use runout_post::gates::interpolated_gate_speeds;
 use runout_post::table::Table;
@@ -99,8 +100,9 @@ pub fn measurements_from_run(
                 );
             }
             text.push_str("t,x\n");
+            let (ts, xs): (Vec<f64>, Vec<f64>) = series.iter().copied().unzip();
             for &t in times {
-                let x = interpolate(&series, t, false)
+                let x = interpolate(&ts, &xs, t, Beyond::Missing)
                     .with_context(|| format!("{}: no front at t = {t}", dir.display()))?;
                 text.push_str(&format!("{t},{:.6}\n", add(x)));
             }

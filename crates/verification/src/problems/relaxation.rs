@@ -15,8 +15,8 @@
 
 use anyhow::{bail, Result};
 use runout_case::{Case, Fidelity};
+use runout_mesh::{interpolate, Beyond};
 use runout_post::front::front_series;
-use runout_post::interpolate::interpolate;
 use runout_post::metrics::PROFILE_TIME;
 use runout_post::run::{run_metrics, RunMetrics};
 
@@ -135,8 +135,9 @@ pub fn compare(a: &RelaxationRun, b: &RelaxationRun) -> Result<Comparison> {
     // front appears in one jump of several metres when its lowest grains reach the floor
     let impact = a.metrics.station_time - PROFILE_TIME;
     let mut front_gap = (0.0, 0.0);
+    let (b_times, b_fronts): (Vec<f64>, Vec<f64>) = b.front.iter().copied().unzip();
     for &(t, x) in a.front.iter().filter(|(t, _)| *t >= impact) {
-        if let Some(y) = interpolate(&b.front, t, false) {
+        if let Some(y) = interpolate(&b_times, &b_fronts, t, Beyond::Missing) {
             if (x - y).abs() > front_gap.0 {
                 front_gap = ((x - y).abs(), t);
             }
