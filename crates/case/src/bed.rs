@@ -132,7 +132,10 @@ pub fn path_arcs(
         if next_slope == slope {
             return Err((
                 k + 1,
-                format!("an arc that turns (the straights on both sides have slope {slope}°)"),
+                format!(
+                    "an arc that turns (the straights on both sides have slope {}°)",
+                    runout_mesh::short(slope)
+                ),
             ));
         }
         arcs.push(ArcSpec {
@@ -165,7 +168,7 @@ pub fn transect_arcs(
         return Err((k, String::from("finite coordinates")));
     }
     if let Some(k) = (1..points.len()).find(|&k| points[k].0 <= points[k - 1].0) {
-        return Err((k, format!("x above the previous point's {} m (a vertical or overhanging step is beyond vertical)", points[k - 1].0)));
+        return Err((k, format!("x above the previous point's {} m (a vertical or overhanging step is beyond vertical)", runout_mesh::short(points[k - 1].0))));
     }
     // each line's length and slope (downhill positive) [m, rad]
     let lines: Vec<(f64, f64)> = points
@@ -315,7 +318,7 @@ fn check_path(c: &mut Checker, case: &Case, field: &str, laid: Laid) {
     if !matches!(case.gravity, Gravity::Constant { .. }) || slope != 0.0 {
         c.fail(
             "gravity",
-            format!("{:?} with slope {slope}°", case.gravity),
+            format!("{:?} with slope {}°", case.gravity, runout_mesh::short(slope)),
             format!("Constant(magnitude: …, slope: 0.0) with {field} (the bed gives the floor's angle everywhere; gravity points down)"),
         );
     }

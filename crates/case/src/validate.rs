@@ -61,11 +61,11 @@ fn check_gas_law(c: &mut Checker, gas: &Gas) {
         {
             c.fail(
                 "gas.density",
-                gas.density,
+                runout_mesh::short(gas.density),
                 format!(
                     "within 1 % of the ideal gas's P M/(R T) = {ideal:.4} kg/m³ at \
                      reference_pressure {} Pa (gas.law)",
-                    gas.reference_pressure
+                    runout_mesh::short(gas.reference_pressure)
                 ),
             );
         }

@@ -114,7 +114,7 @@ pub struct BentFloor {
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum BentFloorError {
     /// the numbers cannot make a concave foot
-    #[error("a bent floor needs |g| ≥ 0, 0 ≤ slope_after < slope < 90°, R > 0 and a finite start (got |g| = {gravity}, slope {slope}°, slope_after {slope_after}°, R = {radius} m, start {start} m)")]
+    #[error("a bent floor needs |g| ≥ 0, 0 ≤ slope_after < slope < 90°, R > 0 and a finite start (got |g| = {gravity:?}, slope {slope:?}°, slope_after {slope_after:?}°, R = {radius:?} m, start {start:?} m)")]
     Invalid {
         /// |g|
         gravity: f64,
@@ -188,13 +188,20 @@ impl BentFloor {
         if !(gravity.is_finite() && gravity >= 0.0 && origin.is_finite()) {
             return Err(invalid(
                 0,
-                format!("|g| = {gravity}, origin {origin}: both finite, |g| ≥ 0"),
+                format!(
+                    "|g| = {}, origin {}: both finite, |g| ≥ 0",
+                    crate::short(gravity),
+                    crate::short(origin)
+                ),
             ));
         }
         if !upright(first_slope_deg) {
             return Err(invalid(
                 0,
-                format!("the first slope {first_slope_deg}° is not in (−90°, 90°)"),
+                format!(
+                    "the first slope {}° is not in (−90°, 90°)",
+                    crate::short(first_slope_deg)
+                ),
             ));
         }
         let mut pieces = vec![Piece {
@@ -209,7 +216,7 @@ impl BentFloor {
             if !(arc.radius.is_finite() && arc.radius > 0.0) {
                 return Err(invalid(
                     index,
-                    format!("radius {} m is not > 0", arc.radius),
+                    format!("radius {} m is not > 0", crate::short(arc.radius)),
                 ));
             }
             if !upright(arc.to_slope_deg) {
@@ -217,7 +224,7 @@ impl BentFloor {
                     index,
                     format!(
                         "slope {}° is not in (−90°, 90°): beyond vertical",
-                        arc.to_slope_deg
+                        crate::short(arc.to_slope_deg)
                     ),
                 ));
             }
@@ -227,7 +234,7 @@ impl BentFloor {
                     index,
                     format!(
                         "it does not turn (slope {}° before and after)",
-                        arc.to_slope_deg
+                        crate::short(arc.to_slope_deg)
                     ),
                 ));
             }
@@ -236,7 +243,8 @@ impl BentFloor {
                     index,
                     format!(
                         "it starts at x = {} m, before the straight it leaves (x = {} m)",
-                        arc.start, before.start
+                        crate::short(arc.start),
+                        crate::short(before.start)
                     ),
                 ));
             }
