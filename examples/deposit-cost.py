@@ -63,16 +63,15 @@ def main():
     print("| phase | t [s] | accepted | rejected | mean Δt [s] | outer it./step "
           "| share of outer it. | share of wall |")
     print("|---|---|---|---|---|---|---|---|")
+    # a step's wall time is the gap to the next logged step (the last one's is unknown: 0)
+    gaps = [b[0] - a[0] for a, b in zip(steps, steps[1:])] + [0.0]
     for name, t0, t1 in phases:
-        inside = [s for i, s in enumerate(steps) if t0 <= s[1] < t1]
+        inside = [i for i, s in enumerate(steps) if t0 <= s[1] < t1]
         if not inside:
             continue
-        accepted = [s for s in inside if s[4]]
-        iterations = sum(s[3] for s in inside)
-        # a step's wall time is the gap to the next logged step
-        index = {id(s): i for i, s in enumerate(steps)}
-        wall = sum(steps[index[id(s)] + 1][0] - s[0]
-                   for s in inside if index[id(s)] + 1 < len(steps))
+        accepted = [steps[i] for i in inside if steps[i][4]]
+        iterations = sum(steps[i][3] for i in inside)
+        wall = sum(gaps[i] for i in inside)
         mean_dt = sum(s[2] for s in accepted) / max(len(accepted), 1)
         end = min(t1, steps[-1][1])
         print(f"| {name} | {t0:.2f}–{end:.2f} | {len(accepted)} | {len(inside) - len(accepted)} "

@@ -263,10 +263,9 @@ fn flow_basal_load(
     let snapshots = read_basal_load(run_dir, &case)?;
     std::fs::write(csv, columns_csv(&snapshots))
         .map_err(|e| format!("writing {}: {e}", csv.display()))?;
-    let xf = case.grid().map_err(|e| e.to_string())?.x.faces().to_vec();
     Ok(snapshots
         .iter()
-        .filter_map(|(time, columns)| flow_load(*time, columns, &xf))
+        .filter_map(|(time, columns)| flow_load(*time, columns))
         .collect())
 }
 

@@ -37,6 +37,8 @@ use crate::fields::field_files;
 pub struct BasalColumn {
     /// the column's centre [m]
     pub x: f64,
+    /// the column's width Δx [m]
+    pub width: f64,
     /// W, the buoyant weight above the floor cell's centre [Pa]
     pub load: f64,
     /// λ_g = p_e/W [-]
@@ -108,6 +110,7 @@ pub fn basal_columns(
                 fields.p_g[i] - fields.p_g[top] - rho_g * g_n * (centre(ny - 1) - centre(0));
             Some(BasalColumn {
                 x,
+                width: xf[i + 1] - xf[i],
                 load,
                 gas_share: excess / load,
                 solids_share: fields.p_s[i] / load,
@@ -116,17 +119,12 @@ pub fn basal_columns(
         .collect()
 }
 
-/// The flow's shares from its columns (`xf` the x faces, for the widths); `None` without a
-/// column.
-pub fn flow_load(time: f64, columns: &[BasalColumn], xf: &[f64]) -> Option<FlowLoad> {
-    let width = |x: f64| {
-        let i = xf.partition_point(|&f| f < x).saturating_sub(1);
-        xf[i + 1] - xf[i]
-    };
+/// The flow's shares from its columns; `None` without a column.
+pub fn flow_load(time: f64, columns: &[BasalColumn]) -> Option<FlowLoad> {
     let heaviest = columns.iter().map(|c| c.load).fold(0.0, f64::max);
     let (mut load, mut gas, mut solids) = (0.0, 0.0, 0.0);
     for c in columns {
-        let w = width(c.x);
+        let w = c.width;
         load += c.load * w;
         gas += c.gas_share * c.load * w;
         solids += c.solids_share * c.load * w;
@@ -262,11 +260,11 @@ mod tests {
             assert!((c.gas_share - l).abs() < 1e-12, "{c:?}");
             assert!((c.solids_share - (1.0 - l)).abs() < 1e-12, "{c:?}");
         }
-        let flow = flow_load(1.0, &columns, &xf).unwrap();
+        let flow = flow_load(1.0, &columns).unwrap();
         assert!((flow.gas_share - 0.6).abs() < 1e-12);
         assert!((flow.solids_share - 0.4).abs() < 1e-12);
         assert!((flow.peak_gas_share - 0.9).abs() < 1e-12);
         assert!((flow.peak_gas_share_x - 0.15).abs() < 1e-12);
-        assert!(flow_load(1.0, &[], &xf).is_none());
+        assert!(flow_load(1.0, &[]).is_none());
     }
 }
