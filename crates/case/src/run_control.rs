@@ -237,7 +237,7 @@ pub struct Relaxation {
     /// Li–Benyahia, Jenkins) between outer iterations; default 1 = MFIX, which uses each
     /// iteration's closures as computed. 0.5 removes the period-2 cycles of a specularity-1
     /// floor (S-JJ-phi φ = 1: 3.3× fewer steps) but doubles the steps of the Jenkins flume
-    /// (docs/history/performance-log.md, session 5), so it is a per-case choice
+    /// (docs/history/performance-log.md, "Relaxed wall closures"), so it is a per-case choice
     #[serde(default = "ur_one")]
     pub wall_closures: f64,
     /// where `wall_closures` applies: at every wall node (default), or only at the nodes

@@ -1,6 +1,7 @@
 //! What one rayon fork/join costs on this machine, right after another join and after a
 //! serial stretch long enough for the pool's other thread to fall asleep (the reason for
-//! `team.rs`; docs/studies/performance.md, session 21).
+//! `team.rs`; docs/history/performance-log.md,
+//! "The multigrid solve on a team that stays awake").
 //!
 //! `cargo run --release -p runout-linsolve --example join_latency`
 //!

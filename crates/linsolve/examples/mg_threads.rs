@@ -1,6 +1,6 @@
 //! Time per outer iteration of the multigrid-preconditioned CG on the pressure-like system
 //! of an nx × ny paper-like grid, on the rayon pool's threads (set RAYON_NUM_THREADS).
-//! The figures of docs/studies/performance.md, "y lines split".
+//! The figures of docs/studies/performance.md, "The y lines split in two".
 //!
 //! Run: `RAYON_NUM_THREADS=2 cargo run --release -p runout-linsolve --example mg_threads -- 400 100 100`
 //! (nx, ny, solves; about 2 s).

@@ -11,7 +11,8 @@
 //!
 //! and gives the rectangle to an inner solver of the same kind. The system is the same; the
 //! work scales with the rectangle instead of the block (family M: 3–18 % of its cells hold
-//! coupled solids rows over the slide, docs/history/performance-log.md, session 18).
+//! coupled solids rows over the slide, docs/history/performance-log.md,
+//! "The coupled rectangle, mass fluxes once, θ's dilute rows skipped").
 //!
 //! What differs from solving the whole block: the inner solver's stopping test is relative
 //! to the rectangle's right-hand side (with the moved terms) instead of the block's; the

@@ -20,7 +20,7 @@
 //!   min(nx, ny) per solve). Stopping at ~1000 rather than ~60 cells drops the two or three
 //!   smallest levels, whose sweeps cost more per cell than the band solve (on 400 × 100
 //!   cells: 57 µs for the 650-cell level's visits against 142 µs for it and the levels
-//!   below, per outer iteration; docs/studies/performance.md, "y lines split").
+//!   below, per outer iteration; docs/studies/performance.md, "The y lines split in two").
 //! * **Split y lines** (`smoother.rs`): on levels from [`smoother::Y_SPLIT_MIN_CELLS`] cells a y line is solved as
 //!   two halves, rows below m = ny/2 eliminated upwards and rows from m downwards, joined
 //!   at the two middle rows and substituted back outwards (the two-block partition method
@@ -30,8 +30,8 @@
 //!   as the x lines' tasks, so the solution stays in the cache of the core that owns the
 //!   rows; split by columns, half of it moved between the cores at every change of
 //!   direction, and the y sweep ran no faster on two threads than on one
-//!   (docs/studies/performance.md, "y lines split"). The split depends only on the level's
-//!   size, so the arithmetic is the same on any number of threads.
+//!   (docs/studies/performance.md, "The y lines split in two"). The split depends only on
+//!   the level's size, so the arithmetic is the same on any number of threads.
 //! * **Threads**: a whole flexible-CG solve (a preconditioner application under BiCGSTAB)
 //!   runs on one [`Team`], which keeps the pool's threads awake through the coarse levels'
 //!   short sweeps; every loop's chunks are fixed by the level's size, so the result is the

@@ -12,7 +12,7 @@ use crate::{Cycle, LinSolveError, MultigridParams};
 /// on the coupled rectangle) are small and set up at every outer iteration, where the band
 /// LU's factorisation of a 1024-cell level cost more than the levels it replaces (family M
 /// to 0.2 s on one thread: ε' solves 0.29–0.30 s with 1024, 0.22 s with 64;
-/// docs/studies/performance.md, "y lines split").
+/// docs/studies/performance.md, "The y lines split in two").
 const PRECOND_COARSEST_CELLS: usize = 64;
 
 /// Preconditioner choice for BiCGSTAB.

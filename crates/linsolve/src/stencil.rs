@@ -456,7 +456,8 @@ pub(crate) fn reduced_rhs(a: &Stencil5, b_eff: &mut [f64]) {
 /// Cells per rayon task of a parallel row loop (whole rows, at least one). Small, so that
 /// a loop whose work sits in a few rows (the solids of a slide near its floor) still
 /// spreads over the threads: with tasks of 16k cells, 400 × 100 cells made 2–3 tasks and
-/// the rows with solids fell to one thread (docs/studies/performance.md, "y lines split"). A row's
+/// the rows with solids fell to one thread (docs/studies/performance.md,
+/// "The y lines split in two"). A row's
 /// result never depends on its task.
 pub(crate) const ROW_TASK_CELLS: usize = 1 << 11;
 

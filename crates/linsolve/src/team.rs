@@ -3,10 +3,12 @@
 //! Rayon's fork/join costs about a microsecond while the pool's threads are busy, but a
 //! thread that has found no work for some tens of microseconds goes to sleep, and waking it
 //! costs ~15 µs on this kind of machine (`cargo run --release -p runout-linsolve --example
-//! join_latency`, docs/studies/performance.md session 21: a join of two 10 µs halves takes 10.8 µs
-//! right after other work and 24–27 µs after a serial stretch of 20 µs or more). A multigrid cycle alternates short parallel sweeps with serial stretches (the
-//! coarse levels, the coarsest solve), so rayon's threads fall asleep between the sweeps of
-//! the coarse levels and those levels run no faster on two threads than on one.
+//! join_latency`; docs/history/performance-log.md, "The multigrid solve on a team that stays
+//! awake": a join of two 10 µs halves takes 10.8 µs right after other work and 24–27 µs
+//! after a serial stretch of 20 µs or more). A multigrid cycle alternates short parallel
+//! sweeps with serial stretches (the coarse levels, the coarsest solve), so rayon's threads
+//! fall asleep between the sweeps of the coarse levels and those levels run no faster on two
+//! threads than on one.
 //!
 //! [`Team::run`] keeps the pool's other threads spinning for the duration of a closure:
 //! each [`Team::for_each`] publishes a job of `n` chunks, which every member (the calling
@@ -34,7 +36,8 @@ use crate::kernels::PAR_MIN_LEN;
 /// With a team, loops over fewer entries than this run on the calling thread alone: below
 /// it, handing the job out and moving the data between the cores' caches cost more than
 /// the second thread saves (the 400 × 100 pressure solve's 2 500-cell level took 246 µs
-/// per outer iteration on two threads, 164 µs on one; docs/studies/performance.md, "y lines split").
+/// per outer iteration on two threads, 164 µs on one; docs/studies/performance.md,
+/// "The y lines split in two").
 pub(crate) const TEAM_MIN_LEN: usize = 1 << 13;
 /// With a team, the entries of one chunk of a loop at least (rayon: [`PAR_MIN_LEN`] per
 /// task of a row loop).

@@ -649,7 +649,8 @@ pub(crate) fn run_locked(
 /// Runs `job` on a thread of the current rayon pool (the global pool of
 /// `RAYON_NUM_THREADS` threads, or the pool installed by the caller): the solver's serial
 /// stages then run on a pool thread rather than on the calling thread beside all of the
-/// pool's, one thread fewer competing for the cores (docs/studies/performance.md, session 15: 40k
+/// pool's, one thread fewer competing for the cores (docs/history/performance-log.md,
+/// "Two threads: the drag elimination's components, the multigrid's coarse lines": 40k
 /// cells on two threads, wall 0.857 of the run from the main thread). Called from a thread
 /// of the pool, `job` runs where it is.
 pub fn on_the_pool<R: Send>(job: impl FnOnce() -> R + Send) -> R {

@@ -1,6 +1,7 @@
 //! A run executes on a thread of the current rayon pool, not on the calling thread
-//! (`runout_run::on_the_pool`, docs/studies/performance.md sessions 15 and 17): the caller waits
-//! while the solver's serial stages run on a pool thread.
+//! (`runout_run::on_the_pool`; docs/history/performance-log.md, "Two threads: the drag
+//! elimination's components, the multigrid's coarse lines" and "Runs at once on pools of
+//! their own"): the caller waits while the solver's serial stages run on a pool thread.
 
 use std::path::Path;
 use std::sync::Mutex;

@@ -1,5 +1,6 @@
 //! Under-relaxation of the solids momentum wall closures between outer iterations
-//! (`numerics.relaxation.wall_closures`, not in MFIX; docs/studies/performance.md, session 5).
+//! (`numerics.relaxation.wall_closures`, not in MFIX; docs/history/performance-log.md,
+//! "Relaxed wall closures").
 //!
 //! With a Johnson–Jackson floor of specularity 1 and the closures used as computed (ω = 1,
 //! MFIX), the floor's slip and strain cycle with period 2 between outer iterations, the

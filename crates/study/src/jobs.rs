@@ -7,7 +7,7 @@
 //! pool of the workers' size is no better: a run waiting in a parallel stage may steal the
 //! next whole run from the queue. Two `wall`-fidelity runs of family S at once took 1.29×
 //! the wall time in one shared pool that they took as two one-thread processes
-//! (docs/studies/performance.md, session 17).
+//! (docs/history/performance-log.md, "Runs at once on pools of their own").
 
 use std::sync::Mutex;
 

@@ -98,8 +98,8 @@ mod tests {
     use super::*;
 
     /// A repeat of a finished `wall` run (which holds a checkpoints folder) is copied with
-    /// its outputs and its name, without the checkpoints (session 17: the copy failed on the
-    /// folder).
+    /// its outputs and its name, without the checkpoints (the copy of every `wall` repeat of
+    /// issue 19's sweep failed on that folder, 2026-12-03).
     #[test]
     fn a_repeat_is_copied_without_the_checkpoints() {
         use runout_post::fixture::{write_run, TempDir};

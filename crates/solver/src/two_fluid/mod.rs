@@ -104,8 +104,8 @@ const PRESSURE_RTOL: f64 = 1e-2;
 /// model problem an outer iteration costs 14 % less than with 1024 on 200 × 50 cells and
 /// 2–6 % less on 400 × 100, 800 × 200 and 1000 × 90, at the same iteration counts
 /// (`cargo run --release -p runout-linsolve --example mg_threads`, docs/studies/performance.md,
-/// "y lines split"). The ε' preconditioner keeps the default 1024: its solves took longer with
-/// 4096.
+/// "The y lines split in two"). The ε' preconditioner keeps the default 1024: its solves took
+/// longer with 4096.
 const PRESSURE_COARSEST_CELLS: usize = 4096;
 
 /// Cells per parallel task of the per-cell closures (rayon's fork/join costs about a
@@ -203,15 +203,15 @@ pub struct TwoFluidSettings {
     /// closures of a high-friction wall (Johnson–Jackson φ = 1) make the floor's slip and
     /// strain cycle with period 2 between outer iterations, so steps stall; ω = 0.5 removes
     /// that but slows other floors (the Jenkins flume takes twice the steps;
-    /// docs/studies/performance.md). Changes the path of the outer iterations, not the converged
-    /// step.
+    /// docs/history/performance-log.md, "Relaxed wall closures"). Changes the path of the outer
+    /// iterations, not the converged step.
     pub relax_wall_closures: f64,
     /// Apply `relax_wall_closures` only at a wall node whose slip coefficient h (of the
     /// Robin closure g ∂u/∂n + h u = c) turned back between outer iterations by more than
     /// half its previous change ([`dilute::turns_back`]); such a node stays relaxed until the time
     /// step ends. The period-2 cycle is damped where it occurs, and a floor whose iteration
-    /// converges by itself keeps MFIX's iteration. Not in MFIX (docs/studies/performance.md,
-    /// session 6).
+    /// converges by itself keeps MFIX's iteration. Not in MFIX (docs/history/performance-log.md,
+    /// "Relaxing the wall closures only where they cycle").
     pub relax_wall_closures_oscillating_only: bool,
     /// Freeze the class of a cell's θ row (dilute: εs ≤ DIL_EP_S, docs/model.md §4.8) to
     /// dilute for the rest of the step once it has changed twice within the step
@@ -221,7 +221,8 @@ pub struct TwoFluidSettings {
     /// solids pressure pushes εs below DIL_EP_S; dilute, εs returns. Neither class is then
     /// self-consistent and the step stalls (the coarse flume at t = 0.55 s, cell (55, 10):
     /// εs 1.00078e-4 ↔ 0.99672e-4 for 30 iterations). Not in MFIX; where the class settles
-    /// within a step, the converged step is MFIX's (docs/studies/performance.md, session 7).
+    /// within a step, the converged step is MFIX's (docs/history/performance-log.md,
+    /// "Cells that cycle across DIL_EP_S").
     pub freeze_cycling_dilute_class: bool,
     /// End each converged step with exact discrete solids continuity
     /// ([`eps_correction::conservative_finish`]; not MFIX): the solids mass then changes only by

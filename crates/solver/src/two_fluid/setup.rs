@@ -192,8 +192,9 @@ fn linear_solvers(
     // The gas pressure correction is solved to 1e-2: its error is removed by the next outer
     // iteration like any other, and on family M (coarse) the results agree with a 1e-4
     // solve to 6 digits at the same outer-iteration count while the solve costs half
-    // (docs/studies/performance.md). MFIX's own pressure solves stop near 1e-1 (20 line-relaxed
-    // BiCGSTAB iterations, docs/model.md §4.13).
+    // (docs/history/performance-log.md, "Two-fluid model: family M against MFIX's cost"). MFIX's
+    // own pressure solves stop near 1e-1 (20 line-relaxed BiCGSTAB iterations,
+    // docs/model.md §4.13).
     let mut solver_p = build(&LinearSolverKind::MultigridCg(MultigridParams {
         rtol: PRESSURE_RTOL,
         max_iter: 20,
