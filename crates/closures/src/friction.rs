@@ -560,15 +560,24 @@ impl FrictionModel {
         }
     }
 
-    /// Whether a Johnson–Jackson or Jenkins wall adds the frictional wall stress
-    /// FRI = tan δ_w (P_f − 2 μ_f S_nn) and μ_f to its slip coefficient, h_w^u =
-    /// (COL + FRI)/(μ_k + μ_f), where the fluid cell's εs > εs,min (Princeton only, as MFIX
-    /// `calc_grbdry.f`: docs/model.md §3.5 step 3); the stress is then [`FrictionModel::stress`].
-    /// μ(I) adds the same Coulomb wall stress tan δ_w P_f with its own P_f and μ_f
-    /// (docs/model.md §2.4.4), so that a wall holds a deposit as its interior does.
+    /// Whether a Johnson–Jackson or Jenkins wall next to solids at `eps_s` adds the frictional
+    /// wall stress FRI = tan δ_w (P_f − 2 μ_f S_nn) and μ_f to its slip coefficient, h_w^u =
+    /// (COL + FRI)/(μ_k ⊕ μ_f) (docs/model.md §3.5 step 3); the stress is then
+    /// [`FrictionModel::stress`]. The wall answers where the interior does:
+    /// - Princeton above εs,min, as MFIX `calc_grbdry.f` (its P_f and μ_f vanish there, so the
+    ///   wall's coefficient is continuous across εs,min);
+    /// - μ(I) at every εs: its stress acts on the total pressure P_kin + P_c in every cell
+    ///   (§2.4.4), so gated at εs,min a wall cell's h jumped from (COL + FRI)/μ_f to COL/μ_k —
+    ///   by μ_f/μ_k, orders of magnitude — as a sheared basal layer dilated through εs,min, and
+    ///   the layer's outer iterations cycled across it (issue 58: the foot study's JJ floor);
+    /// - Schaeffer and no friction never.
     #[inline]
-    pub fn has_wall_friction(self) -> bool {
-        matches!(self, Self::Princeton(_) | Self::MuI(_))
+    pub fn wall_friction_acts_at(self, eps_s: f64, p: &FrictionParams) -> bool {
+        match self {
+            Self::Princeton(_) => eps_s > p.eps_s_min,
+            Self::MuI(_) => true,
+            Self::None | Self::Schaeffer(_) => false,
+        }
     }
 
     /// Frictional stresses of the chosen model (docs/model.md §2.4); all zero for `None`.
@@ -623,7 +632,8 @@ mod tests {
     use super::*;
 
     /// The solver's questions: only Schaeffer has P*, pins θ below εg* = 1 − εs,max and is
-    /// limited to one phase; only Princeton adds FRI at a JJ/Jenkins wall.
+    /// limited to one phase; Princeton adds FRI at a JJ/Jenkins wall above εs,min, μ(I) at
+    /// every εs.
     #[test]
     fn each_model_answers_the_solvers_questions() {
         let p = FrictionParams::default();
@@ -632,23 +642,23 @@ mod tests {
                 m.plastic_pressure().copied(),
                 m.pins_theta_below(&p),
                 m.max_solids_phases(),
-                m.has_wall_friction(),
+                [0.3, 0.5, 0.55].map(|eps_s| m.wall_friction_acts_at(eps_s, &p)),
             )
         };
         let eps_g_star = 1.0 - p.eps_s_max;
         let schaeffer = SchaefferConstants::default();
         assert_eq!(
             answers(FrictionModel::schaeffer()),
-            (Some(schaeffer), Some(eps_g_star), Some(1), false)
+            (Some(schaeffer), Some(eps_g_star), Some(1), [false; 3])
         );
         assert_eq!(
             answers(FrictionModel::princeton()),
-            (None, None, None, true)
+            (None, None, None, [false, false, true])
         );
-        assert_eq!(answers(FrictionModel::None), (None, None, None, false));
+        assert_eq!(answers(FrictionModel::None), (None, None, None, [false; 3]));
         assert_eq!(
             answers(FrictionModel::MuI(MuIConstants::glass_beads_jop_2005())),
-            (None, None, Some(1), true)
+            (None, None, Some(1), [true; 3])
         );
     }
 

@@ -284,7 +284,11 @@ fn a_block_slides_through_the_foot_and_slows_on_the_run_out() {
         let _ = std::fs::remove_dir_all(&dir);
         let summary = runout_run::run_case(&case, Fidelity::Smoke, &dir, |_| {}).unwrap();
         assert_eq!(summary.status, runout_output::RunStatus::Completed, "{tag}");
-        assert!(summary.solids_mass_change.abs() < 1e-9, "{tag}");
+        assert!(
+            summary.solids_mass_change.abs() < 1e-9,
+            "{tag}: {}",
+            summary.solids_mass_change
+        );
         let out = speeds_and_front(&dir);
         std::fs::remove_dir_all(&dir).unwrap();
         out

@@ -29,12 +29,17 @@ pub fn collisional_jenkins(tan_wall_friction: f64, p_kin: f64, slip: f64) -> f64
     }
 }
 
-/// Frictional (Coulomb) term FRI = tan δ_w (P_f − 2 μ_f S_nn) \[Pa\] (paper Eq. 14 third
-/// term with the Princeton stress; docs/model.md §3.5 step 3; MFIX CALC_GRBDRY_FRICTIONAL).
-/// Not divided by |u_sl|: MFIX adds it to COL as coded (docs/model.md §3.5 step 4, §3.10.5).
+/// Frictional (Coulomb) term FRI = tan δ_w max(0, P_f − 2 μ_f S_nn) \[Pa\] (paper Eq. 14
+/// third term with the frictional stress; docs/model.md §3.5 step 3; MFIX
+/// CALC_GRBDRY_FRICTIONAL). The frictional normal stress on the wall P_f − 2 μ_f S_nn is
+/// bounded below by 0 — a wall is pressed on, never pulled, as the Coulomb wall's N_w
+/// (§3.11) — where MFIX takes it as it comes: with μ(I) below εs,min, where P_f = P_c = 0
+/// while μ_f = μ(I) P_kin/γ̇_r is not, a layer stretched normal to the wall (S_nn > 0) made
+/// it negative, h_w^u < 0, and the wall pushed the flow (issue 58). Not divided by |u_sl|:
+/// MFIX adds it to COL as coded (docs/model.md §3.5 step 4, §3.10.5).
 #[inline]
 pub fn frictional(tan_wall_friction: f64, p_fric: f64, mu_fric: f64, s_nn: f64) -> f64 {
-    tan_wall_friction * (p_fric - 2.0 * mu_fric * s_nn)
+    tan_wall_friction * (p_fric - 2.0 * mu_fric * s_nn).max(0.0)
 }
 
 /// JJ granular-energy wall dissipation coefficient

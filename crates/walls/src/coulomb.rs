@@ -100,7 +100,10 @@ pub(crate) fn coulomb_momentum(
     diagnostics.theta = theta;
     diagnostics.mu_kin = kinetic.mu_kin;
     diagnostics.p_kin = kinetic.p_kin;
-    if params.friction_model.has_wall_friction() && state.eps_s > params.friction.eps_s_min {
+    if params
+        .friction_model
+        .wall_friction_acts_at(state.eps_s, &params.friction)
+    {
         diagnostics.add_wall_friction(state, params);
     }
     diagnostics.normal_load = normal_load(&diagnostics, state);

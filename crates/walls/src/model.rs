@@ -522,9 +522,12 @@ fn kinetic_momentum(
             None,
         ),
     };
-    let eps_s_min = params.friction.eps_s_min;
-    let frictional_branch =
-        params.friction_model.has_wall_friction() && state.eps_s_fluid > eps_s_min;
+    let friction_acts = |eps_s| {
+        params
+            .friction_model
+            .wall_friction_acts_at(eps_s, &params.friction)
+    };
+    let frictional_branch = friction_acts(state.eps_s_fluid);
     let mut diagnostics = MomentumDiagnostics {
         theta,
         specularity,
@@ -535,7 +538,7 @@ fn kinetic_momentum(
         ..MomentumDiagnostics::default()
     };
     let h = if frictional_branch {
-        if state.eps_s > eps_s_min {
+        if friction_acts(state.eps_s) {
             // the Princeton or μ(I) stress: the models with wall friction
             let stress = diagnostics.add_wall_friction(state, params);
             diagnostics.fri = frictional(

@@ -352,6 +352,67 @@ fn branch_rules() {
     );
 }
 
+/// With μ(I) a JJ or Jenkins wall adds its friction at every εs, as the interior does
+/// (`FrictionModel::wall_friction_acts_at`): h_w^u is continuous across εs,min, where μ(I)'s
+/// P_c and its derivative vanish; gated at εs,min as for Princeton it jumped from
+/// (COL + FRI)/μ_f to COL/μ_k, and a sheared basal layer cycled across the gate (issue 58).
+/// Princeton's coefficient was already continuous there: its μ_f vanishes with P_c. The
+/// frictional normal stress on the wall is never tensile (`coefficients::frictional`).
+#[test]
+fn mu_i_wall_coefficient_is_continuous_across_the_friction_onset() {
+    let mu_i = params(
+        false,
+        FrictionModel::MuI(runout_closures::MuIConstants::glass_beads_jop_2005()),
+    );
+    let princeton = params(false, FrictionModel::princeton());
+    let eps_s_min = mu_i.friction.eps_s_min;
+    // the basal layer of the foot study's JJ floor: εs at the onset, θ 0.03 m²/s², 3.6 m/s
+    let at = |eps_s: f64| MomentumWallState {
+        eps_s_fluid: eps_s,
+        eps_s,
+        theta: 0.03,
+        slip: 3.6,
+        gas_slip: 0.1,
+        tr_d: 0.0,
+        s_ddot_s: 200.0,
+        s_nn: -1.0,
+        extra_normal_load: 0.0,
+    };
+    for wall in [
+        SolidsWallModel::johnson_jackson(0.1, E_W, DELTA_W, 0.0).unwrap(),
+        SolidsWallModel::revisited_johnson_jackson(E_W, DELTA_W, None, 0.0).unwrap(),
+        SolidsWallModel::jenkins(E_W, DELTA_W, 0.0).unwrap(),
+    ] {
+        for p in [&mu_i, &princeton] {
+            let below = wall.momentum(&at(eps_s_min - 1e-9), p).diagnostics;
+            let above = wall.momentum(&at(eps_s_min + 1e-9), p).diagnostics;
+            assert!(
+                (below.h_u / above.h_u - 1.0).abs() < 1e-6,
+                "{wall:?} {:?}: h {} below εs,min, {} above",
+                p.friction_model,
+                below.h_u,
+                above.h_u
+            );
+        }
+        // μ(I) below the onset: the frictional branch with its μ_f (the interior's)
+        let below = wall.momentum(&at(0.3), &mu_i).diagnostics;
+        assert_eq!(below.branch, MomentumBranch::KineticFrictional);
+        assert!(below.mu_fric > below.mu_kin, "{below:?}");
+        assert!(
+            (below.h_u - (below.col + below.fri) / below.viscosity()).abs() < 1e-12 * below.h_u
+        );
+        // stretched normal to the wall (S_nn > 0) below εs,min, P_f = 0: the frictional
+        // normal stress −2 μ_f S_nn < 0 is bounded by 0 (a wall is never pulled), h > 0
+        let stretched = MomentumWallState {
+            s_nn: 5.0,
+            ..at(0.3)
+        };
+        let d = wall.momentum(&stretched, &mu_i).diagnostics;
+        assert_eq!(d.fri, 0.0);
+        assert!(d.h_u > 0.0 && d.h_u.is_finite(), "{d:?}");
+    }
+}
+
 /// Invalid parameters are rejected with the field name.
 #[test]
 fn invalid_parameters_name_the_field() {
