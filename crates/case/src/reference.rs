@@ -181,7 +181,6 @@ const CASE: &[Field] = &[
     f("run.tolerances.diverge", "number", "-", "1e4", "> residual", "a residual sum above this is divergence (MFIX `TOL_DIVERGE`)"),
     f("run.tolerances.max_iterations", "integer", "-", "500", "[2, 10000]", "outer iterations before a step counts as failed (MFIX `MAX_NIT`)"),
     f("run.tolerances.detect_stall", "bool", "", "true", "", "retry a step whose residual stops falling with a smaller Δt (MFIX `DETECT_STALL`)"),
-    f("run.tolerances.stall_test", "HydrodynamicSum \\| Unconverged", "", "HydrodynamicSum", "", "the residual the stall test watches: the momentum and continuity sum (MFIX), or the one still above its tolerance, the sum else θ's (model.md §4.11)"),
     f("run.tolerances.momentum_residual", "ByClass \\| Pooled", "", "ByClass", "", "momentum residual normalised per class of node (gas, packed body, loose flow) or pooled over all nodes as MFIX (model.md §4.11)"),
     f("run.output_interval", "number", "s", REQ, "see Intervals", "interval between field outputs (`fields_*.vtr`)"),
     f("run.checkpoint_interval", "optional number", "s", "none", "see Intervals", "interval between checkpoints; none: only on a signal or `--checkpoint-every`"),

@@ -102,11 +102,6 @@ pub struct Tolerances {
     /// (MFIX `DETECT_STALL`, default true; docs/model.md §4.11; the single-phase core ignores it)
     #[serde(default = "default_detect_stall")]
     pub detect_stall: bool,
-    /// two-fluid cases, with `detect_stall`: which residual the stall test watches — the
-    /// momentum and continuity sum (MFIX, default), or the one still above its tolerance:
-    /// the sum, else the granular energy's (docs/model.md §4.11, departure M30)
-    #[serde(default)]
-    pub stall_test: StallTest,
     /// two-fluid cases: how the momentum residual is normalised (docs/model.md §4.11):
     /// per class of node (the gas; each solids phase's packed body and its loose flow;
     /// default), or pooled over every node and phase as MFIX's `calc_resid.f` does
@@ -124,17 +119,6 @@ pub enum MomentumResidual {
     ByClass,
     /// Σ|r| / Σ|a_P U| over every node and phase (MFIX)
     Pooled,
-}
-
-/// The residual MFIX's stall test watches ([`Tolerances::stall_test`]).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
-pub enum StallTest {
-    /// the momentum and continuity sum, whether or not it has converged (MFIX)
-    #[default]
-    HydrodynamicSum,
-    /// the sum while it is above its tolerance, else the granular-energy residual while
-    /// that is above its own: a converged sum that no longer falls is no stall
-    Unconverged,
 }
 
 fn default_detect_stall() -> bool {
@@ -165,7 +149,6 @@ impl Default for Tolerances {
             diverge: default_tol_diverge(),
             max_iterations: default_max_iterations(),
             detect_stall: default_detect_stall(),
-            stall_test: StallTest::default(),
             momentum_residual: MomentumResidual::default(),
         }
     }

@@ -347,7 +347,6 @@ fn two_fluid_settings(case: &Case) -> TwoFluidSettings {
             == runout_case::DiluteCellClass::FrozenWhenCycling,
         exact_solids_continuity: case.numerics.exact_solids_mass,
         detect_stall: case.run.tolerances.detect_stall,
-        stall_on_unconverged: case.run.tolerances.stall_test == runout_case::StallTest::Unconverged,
         pooled_momentum_residual: case.run.tolerances.momentum_residual
             == runout_case::MomentumResidual::Pooled,
         momentum_form: match case.numerics.momentum_form {

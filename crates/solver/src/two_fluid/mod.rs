@@ -86,7 +86,7 @@ use crate::transport::Scheme;
 use coefficients::PhaseCoefficients;
 use diagnostics::{since, Diagnostics};
 use model::Model;
-use residuals::{Convergence, Stall};
+use residuals::Convergence;
 use wall_closures::PhaseWallClosures;
 use wall_load::BodyForce;
 use walls::{GasNearWalls, WallRelaxation};
@@ -237,10 +237,6 @@ pub struct TwoFluidSettings {
     /// below its value 5 iterations before ends the step as failed, so it is retried with a
     /// smaller Δt instead of iterating to `max_iterations`.
     pub detect_stall: bool,
-    /// With `detect_stall`, test the residual that is still above its tolerance — the
-    /// hydrodynamic sum, else θ's ([`residuals::Convergence::stalled_unconverged`], not MFIX)
-    /// — instead of the sum alone (MFIX, default false).
-    pub stall_on_unconverged: bool,
     /// The momentum residual normalised per class of node (default) or pooled over every
     /// node as MFIX ([`residuals::ClassedResidual`], docs/model.md §4.11).
     pub pooled_momentum_residual: bool,
@@ -263,7 +259,6 @@ impl Default for TwoFluidSettings {
             freeze_cycling_dilute_class: false,
             exact_solids_continuity: false,
             detect_stall: true,
-            stall_on_unconverged: false,
             pooled_momentum_residual: false,
             momentum_form: crate::momentum::MomentumForm::ContinuitySubtracted,
         }
@@ -709,26 +704,13 @@ impl TwoFluid {
             // stall detection before the convergence test, as MFIX's check_convergence.f
             // (docs/model.md §4.11): the step is then retried with a smaller Δt (§4.12)
             if self.model.settings.detect_stall {
-                let stall = if self.model.settings.stall_on_unconverged {
-                    convergence.stalled_unconverged(nit, (sum, tol), (r.theta, tol_theta))
-                } else {
-                    convergence.stalled(nit, sum).map(Stall::Sum)
-                };
-                if let Some(stall) = stall {
-                    out.failure = Some(match stall {
-                        Stall::Sum(sum5) => format!(
-                            "stalled: the momentum and continuity residual sum {sum:.3e} at \
-                             outer iteration {nit} was not below its value {sum5:.3e} 5 \
-                             iterations before (granular energy residual {:.3e})",
-                            r.theta
-                        ),
-                        Stall::Theta(theta5) => format!(
-                            "stalled: the granular energy residual {:.3e} at outer iteration \
-                             {nit} was not below its value {theta5:.3e} 5 iterations before \
-                             (momentum and continuity sum {sum:.3e}, converged)",
-                            r.theta
-                        ),
-                    });
+                if let Some(sum5) = convergence.stalled(nit, sum) {
+                    out.failure = Some(format!(
+                        "stalled: the momentum and continuity residual sum {sum:.3e} at outer \
+                         iteration {nit} was not below its value {sum5:.3e} 5 iterations before \
+                         (granular energy residual {:.3e})",
+                        r.theta
+                    ));
                     break;
                 }
             }

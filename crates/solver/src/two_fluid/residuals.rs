@@ -188,31 +188,6 @@ pub(super) struct Convergence {
     solids0: Option<f64>,
     /// the hydrodynamic sum at the last multiple of 5 iterations (MFIX SUM5_RESID)
     sum5: f64,
-    /// the θ residual at the last multiple of 5 iterations ([`Convergence::stalled_unconverged`])
-    theta5: f64,
-}
-
-/// Which residual stopped falling ([`Convergence::stalled_unconverged`]), with its value 5
-/// outer iterations before.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) enum Stall {
-    /// the momentum and continuity sum (MFIX's test)
-    Sum(f64),
-    /// the granular-energy residual, the sum being at its tolerance
-    Theta(f64),
-}
-
-/// MFIX's stall test on one series (docs/model.md §4.11): at every 5th iteration after the
-/// 10th, a value not below `last5` (its value 5 iterations before) is a stall; returns that
-/// earlier value, and otherwise keeps the value at every 5th iteration in `last5`.
-fn stall_test(nit: usize, value: f64, last5: &mut f64) -> Option<f64> {
-    if nit.is_multiple_of(5) {
-        if nit > 10 && *last5 <= value {
-            return Some(*last5);
-        }
-        *last5 = value;
-    }
-    None
 }
 
 impl Convergence {
@@ -222,7 +197,6 @@ impl Convergence {
             gas0: None,
             solids0: None,
             sum5: f64::INFINITY,
-            theta5: f64::INFINITY,
         }
     }
 
@@ -252,30 +226,13 @@ impl Convergence {
     /// iteration after the 10th, a sum not below its value 5 iterations before is a stall;
     /// returns that earlier value.
     pub fn stalled(&mut self, nit: usize, sum: f64) -> Option<f64> {
-        stall_test(nit, sum, &mut self.sum5)
-    }
-
-    /// The stall test on the residual that is still above its tolerance (docs/model.md
-    /// §4.11, departure M30): MFIX's on the momentum and continuity sum while it is above
-    /// `tol`, else on the θ residual while that is above `tol_theta`. MFIX tests the sum only,
-    /// so a step whose sum has converged to round-off while θ still falls is ended as
-    /// stalled — the sum no longer falls because it has nothing left to lose (18 of 20
-    /// rejections of the foot study's JJ slide at `wall` fidelity to 0.5 s).
-    pub fn stalled_unconverged(
-        &mut self,
-        nit: usize,
-        (sum, tol): (f64, f64),
-        (theta, tol_theta): (f64, f64),
-    ) -> Option<Stall> {
-        let on_sum = stall_test(nit, sum, &mut self.sum5);
-        let on_theta = stall_test(nit, theta, &mut self.theta5);
-        if sum > tol {
-            on_sum.map(Stall::Sum)
-        } else if theta > tol_theta {
-            on_theta.map(Stall::Theta)
-        } else {
-            None
+        if nit.is_multiple_of(5) {
+            if nit > 10 && self.sum5 <= sum {
+                return Some(self.sum5);
+            }
+            self.sum5 = sum;
         }
+        None
     }
 }
 
@@ -320,42 +277,6 @@ mod tests {
         assert_eq!(c.stalled(10, 0.5), None);
         assert_eq!(c.stalled(15, 0.4), None);
         assert_eq!(c.stalled(20, 0.4), Some(0.4));
-    }
-
-    /// Unconverged: a converged sum that no longer falls is no stall while θ falls; θ that
-    /// stops falling is; a sum above its tolerance is watched as MFIX watches it.
-    #[test]
-    fn a_stall_is_watched_on_the_residual_still_above_its_tolerance() {
-        let (tol, tol_theta) = (1e-3, 1e-4);
-        let mut c = Convergence::new();
-        for (nit, sum, theta) in [(5, 5e-4, 1e-2), (10, 4e-4, 5e-3), (15, 6e-4, 1e-3)] {
-            assert_eq!(
-                c.stalled_unconverged(nit, (sum, tol), (theta, tol_theta)),
-                None
-            );
-        }
-        // MFIX's test on the same series: a stall at 15
-        let mut mfix = Convergence::new();
-        assert_eq!(mfix.stalled(5, 5e-4), None);
-        assert_eq!(mfix.stalled(10, 4e-4), None);
-        assert_eq!(mfix.stalled(15, 6e-4), Some(4e-4));
-        // θ stops falling: a stall on θ
-        assert_eq!(
-            c.stalled_unconverged(20, (5e-4, tol), (2e-3, tol_theta)),
-            Some(Stall::Theta(1e-3))
-        );
-        // a sum above its tolerance that stops falling: MFIX's stall
-        let mut c = Convergence::new();
-        for (nit, sum) in [(5, 1e-2), (10, 5e-3)] {
-            assert_eq!(
-                c.stalled_unconverged(nit, (sum, tol), (1.0, tol_theta)),
-                None
-            );
-        }
-        assert_eq!(
-            c.stalled_unconverged(15, (6e-3, tol), (0.5, tol_theta)),
-            Some(Stall::Sum(5e-3))
-        );
     }
 
     #[test]
