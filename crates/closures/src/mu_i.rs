@@ -76,10 +76,18 @@ impl MuIConstants {
     }
 
     /// μ(I) = μ_s + (μ_2 − μ_s)/(I_0/I + 1) [-], written as μ_s + Δμ I/(I_0 + I) so that
-    /// I = 0 gives μ_s exactly (Jop et al. 2006, Eq. 2). Valid for I ≥ 0.
+    /// I = 0 gives μ_s exactly (Jop et al. 2006, Eq. 2), and I = +∞ (a pressure whose
+    /// P/ρ_s underflows, [`inertial_number`]) μ_2 rather than ∞/∞ — a NaN viscosity in a
+    /// dilute cell at a deposit's edge ended cases/collapse/floor-long's Jenkins run at
+    /// t = 2.05 s. Valid for I ≥ 0.
     #[inline]
     pub fn friction_coefficient(&self, inertial_number: f64) -> f64 {
-        self.mu_s + (self.mu_2 - self.mu_s) * inertial_number / (self.i_0 + inertial_number)
+        let share = if inertial_number.is_infinite() {
+            1.0
+        } else {
+            inertial_number / (self.i_0 + inertial_number)
+        };
+        self.mu_s + (self.mu_2 - self.mu_s) * share
     }
 
     /// dμ/dI = (μ_2 − μ_s) I_0/(I_0 + I)² [-] of [`MuIConstants::friction_coefficient`].
@@ -189,6 +197,23 @@ mod tests {
     }
 
     /// dμ/dI against a central difference (relative 1e-7).
+    /// A pressure whose P/ρ_s underflows gives I = +∞: μ(I) is μ_2 and the stress finite.
+    #[test]
+    fn a_vanishing_pressure_gives_mu_2_not_nan() {
+        let law = glass();
+        assert_eq!(law.friction_coefficient(f64::INFINITY), law.mu_2);
+        let p = FrictionParams::default();
+        let tiny = f64::from_bits(1); // 4.9e-324 Pa: P/ρ_s = 0
+        let i = inertial_number(5e-4, 10.0, tiny, 2500.0);
+        assert_eq!(i, f64::INFINITY);
+        let stress = law.stress(0.01, 5e-4, 2500.0, 50.0, tiny, &p);
+        assert!(
+            stress.mu_fric.is_finite() && stress.mu_fric >= 0.0,
+            "{stress:?}"
+        );
+        assert_eq!(law.dfriction_coefficient_di(f64::INFINITY), 0.0);
+    }
+
     #[test]
     fn derivative_matches_a_central_difference() {
         let m = glass();

@@ -33,7 +33,10 @@ fn friction_model() -> impl Strategy<Value = FrictionModel> {
     prop_oneof![
         Just(FrictionModel::princeton()),
         Just(FrictionModel::schaeffer()),
-        Just(FrictionModel::None)
+        Just(FrictionModel::None),
+        Just(FrictionModel::MuI(
+            runout_closures::MuIConstants::glass_beads_jop_2005()
+        ))
     ]
 }
 
