@@ -14,7 +14,9 @@
 //! Every run of a study lives in one folder (`runs/` below the study's) and is reused by any
 //! recovery that asks for the same parameter value: the scan's points are the same for every
 //! truth, and a killed study resumes where it stopped. Each recovery's measurements,
-//! evaluations and summary go to `<kind>/truth<t>[-seed<s>]/`.
+//! evaluations and summary go to `<kind>/truth<t>[-seed<s>]/`. A study longer than a machine
+//! keeps its run folders also keeps a ledger of its finished draws ([`Ledger`], a CSV file
+//! committed with the repository): a draw already in it is not recovered again.
 
 use std::fmt::Write as _;
 use std::path::Path;
@@ -77,12 +79,13 @@ pub fn seed(k: usize, t: usize, draw: u64) -> u64 {
     1 + draw + 1_000 * t as u64 + 1_000_000 * k as u64
 }
 
-/// Runs the recoveries of `plan` below `dir` (module doc), calling `report` after each; a
-/// recovery that fails is reported on stderr and left out.
+/// Runs the recoveries of `plan` below `dir` (module doc) but those already in `done`,
+/// calling `report` after each; a recovery that fails is reported on stderr and left out.
 pub fn run_plan(
     root: &Path,
     plan: &CoveragePlan,
     dir: &Path,
+    done: &Ledger,
     mut report: impl FnMut(&Draw),
 ) -> Result<Vec<Draw>> {
     let runs = dir.join("runs");
@@ -92,6 +95,9 @@ pub fn run_plan(
         for (t, &truth) in plan.truths.iter().enumerate() {
             let seeds = std::iter::once(None).chain((0..plan.draws).map(|d| Some(seed(k, t, d))));
             for noise in seeds {
+                if done.has(&kind.label, truth, noise) {
+                    continue;
+                }
                 let mut study = plan.template.clone();
                 study.params[0].truth = truth;
                 study.measured = kind.measured.clone();
@@ -121,6 +127,69 @@ pub fn run_plan(
         }
     }
     Ok(draws)
+}
+
+/// The finished draws of a coverage study, one CSV row each
+/// (`kind,truth,seed,optimum,low,high`, seed empty for the noise-free recovery; module doc).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Ledger {
+    /// the draws, in the order they finished
+    pub draws: Vec<Draw>,
+}
+
+/// The ledger's header row.
+const LEDGER_HEADER: &str = "kind,truth,seed,optimum,low,high";
+
+impl Ledger {
+    /// Reads a ledger; a missing file is an empty ledger.
+    pub fn read(path: &Path) -> Result<Self> {
+        let text = match std::fs::read_to_string(path) {
+            Ok(t) => t,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(Self::default()),
+            Err(e) => return Err(e.into()),
+        };
+        let mut draws = Vec::new();
+        for (n, line) in text.lines().enumerate().skip(1) {
+            let field: Vec<&str> = line.split(',').collect();
+            let bad = || anyhow::anyhow!("{}: line {}: `{line}`", path.display(), n + 1);
+            if field.len() != 6 {
+                return Err(bad());
+            }
+            let number = |s: &str| s.parse::<f64>().map_err(|_| bad());
+            draws.push(Draw {
+                kind: field[0].to_string(),
+                truth: number(field[1])?,
+                seed: match field[2] {
+                    "" => None,
+                    s => Some(s.parse().map_err(|_| bad())?),
+                },
+                optimum: number(field[3])?,
+                range: (number(field[4])?, number(field[5])?),
+            });
+        }
+        Ok(Self { draws })
+    }
+
+    /// Whether the draw of `kind`, `truth` and `seed` is in the ledger.
+    pub fn has(&self, kind: &str, truth: f64, seed: Option<u64>) -> bool {
+        self.draws
+            .iter()
+            .any(|d| d.kind == kind && d.truth == truth && d.seed == seed)
+    }
+
+    /// The ledger as CSV (values in Rust's shortest round-trip form).
+    pub fn to_csv(&self) -> String {
+        let mut csv = format!("{LEDGER_HEADER}\n");
+        for d in &self.draws {
+            let seed = d.seed.map_or(String::new(), |s| s.to_string());
+            let _ = writeln!(
+                csv,
+                "{},{},{seed},{},{},{}",
+                d.kind, d.truth, d.optimum, d.range.0, d.range.1
+            );
+        }
+        csv
+    }
 }
 
 /// The coverage of one kind of measurement (module doc).
@@ -291,7 +360,10 @@ mod tests {
             }],
             draws: 1,
         };
-        let draws = run_plan(&root(), &plan, &dir, |d| println!("{d:?}")).unwrap();
+        let draws = run_plan(&root(), &plan, &dir, &Ledger::default(), |d| {
+            println!("{d:?}")
+        })
+        .unwrap();
         let _ = std::fs::remove_dir_all(&dir);
         print!("{}", table(&draws));
         assert_eq!(draws.len(), 2, "both recoveries ran");
@@ -374,15 +446,51 @@ mod tests {
             },
             ..plan
         };
+        // the finished draws, committed (module doc): a new machine resumes from them
+        let ledger_path = root().join("docs/reference/calibrate/coverage-draws.csv");
+        let mut ledger = Ledger::read(&ledger_path).unwrap();
+        let finished = ledger.clone();
         let dir = root().join("runs/calibrate/coverage");
-        let mut done = Vec::new();
-        run_plan(&root(), &plan, &dir, |d| {
+        let in_plan = |d: &Draw| {
+            plan.kinds.iter().any(|k| k.label == d.kind) && plan.truths.contains(&d.truth)
+        };
+        let mut done: Vec<Draw> = finished
+            .draws
+            .iter()
+            .filter(|d| in_plan(d))
+            .cloned()
+            .collect();
+        run_plan(&root(), &plan, &dir, &finished, |d| {
             println!("{d:?} contains: {}", d.contains_truth());
             done.push(d.clone());
+            ledger.draws.push(d.clone());
+            std::fs::write(&ledger_path, ledger.to_csv()).expect("writable");
             std::fs::write(dir.join("coverage.md"), table(&done)).expect("writable");
         })
         .unwrap();
         print!("{}", table(&done));
+    }
+
+    /// The ledger reads back what it writes, a noise-free draw with an empty seed.
+    #[test]
+    fn the_ledger_reads_back_what_it_writes() {
+        let ledger = Ledger {
+            draws: vec![
+                draw("fronts-0.2-1.0s", 0.45, None, (0.43, 0.47)),
+                draw("gate-speeds", 0.1, Some(3002), (0.01, 1.0)),
+            ],
+        };
+        let path = std::env::temp_dir().join(format!("runout-ledger-{}.csv", std::process::id()));
+        std::fs::write(&path, ledger.to_csv()).unwrap();
+        let back = Ledger::read(&path).unwrap();
+        std::fs::remove_file(&path).unwrap();
+        assert_eq!(back, ledger);
+        assert!(back.has("gate-speeds", 0.1, Some(3002)));
+        assert!(!back.has("gate-speeds", 0.1, None));
+        assert_eq!(
+            Ledger::read(Path::new("/nonexistent/ledger.csv")).unwrap(),
+            Ledger::default()
+        );
     }
 
     fn draw(kind: &str, truth: f64, seed: Option<u64>, range: (f64, f64)) -> Draw {
