@@ -196,7 +196,6 @@ mod tests {
         }
     }
 
-    /// dμ/dI against a central difference (relative 1e-7).
     /// A pressure whose P/ρ_s underflows gives I = +∞: μ(I) is μ_2 and the stress finite.
     #[test]
     fn a_vanishing_pressure_gives_mu_2_not_nan() {
@@ -214,6 +213,7 @@ mod tests {
         assert_eq!(law.dfriction_coefficient_di(f64::INFINITY), 0.0);
     }
 
+    /// dμ/dI against a central difference (relative 1e-7).
     #[test]
     fn derivative_matches_a_central_difference() {
         let m = glass();
