@@ -50,6 +50,16 @@ pub struct GridErrorArgs {
     pub coarsen_x: Option<u32>,
 }
 
+impl Refine {
+    /// How a level's grid differs from the case's, for messages.
+    fn coarsened(self) -> &'static str {
+        match self {
+            Refine::Xy => "coarsened",
+            Refine::Y => "y coarsened",
+        }
+    }
+}
+
 /// The directions a grid-error ladder refines.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum Refine {
@@ -146,9 +156,10 @@ pub fn grid_error(args: &GridErrorArgs) -> Result<()> {
             }
             let grid = c.grid().map(|g| format!("{} × {}", g.nx(), g.ny()));
             println!(
-                "{} ({}, y coarsened {factor}×): running into {}",
+                "{} ({}, {} {factor}×): running into {}",
                 c.name,
                 grid.unwrap_or_default(),
+                args.refine.coarsened(),
                 dir.display()
             );
             if let Err(e) = runout_run::run_case(c, Fidelity::Paper, &dir, |_| {}) {
@@ -170,7 +181,8 @@ pub fn grid_error(args: &GridErrorArgs) -> Result<()> {
         let (deposit, _) = read_deposit(&dir, &resolved, DEFAULT_REST_FRACTION)
             .map_err(|e| anyhow::anyhow!("{}: {e}", dir.display()))?;
         println!(
-            "  y coarsened {factor}×: {} at t = {:.3} s; L∞ {:.4} m, H∞ {:.4} m ({} cells), centre {:.4} m{}",
+            "  {} {factor}×: {} at t = {:.3} s; L∞ {:.4} m, H∞ {:.4} m ({} cells), centre {:.4} m{}",
+            args.refine.coarsened(),
             if deposit.at_rest { "at rest" } else { "NOT at rest" },
             deposit.time,
             deposit.runout_grain,
