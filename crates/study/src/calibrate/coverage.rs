@@ -494,19 +494,22 @@ mod tests {
             Ledger::read(Path::new("/nonexistent/ledger.csv")).unwrap(),
             Ledger::default()
         );
-        // the committed ledger reads, its first row the first kind's noise-free 0.05
-        let committed =
-            Ledger::read(&root().join("docs/reference/calibrate/coverage-draws.csv")).unwrap();
-        let first = &committed.draws[0];
+        // the committed ledgers read: the current one (the range spanning every valley, the
+        // gap stage), its first row the second kind's noise-free 0.45, whose range now holds
+        // it; the one before the gap stage, its first row the first kind's noise-free 0.05
+        let calibrate = root().join("docs/reference/calibrate");
+        let first = |file: &str| {
+            let d = Ledger::read(&calibrate.join(file)).unwrap().draws[0].clone();
+            let contains = d.contains_truth();
+            (d.kind, d.truth, d.seed, contains)
+        };
         assert_eq!(
-            (
-                first.kind.as_str(),
-                first.truth,
-                first.seed,
-                first.optimum,
-                first.range
-            ),
-            ("fronts-0.2-1.0s", 0.05, None, 0.05, (0.0490, 0.0508))
+            first("coverage-draws.csv"),
+            ("fronts-0.1-0.5s".into(), 0.45, None, true)
+        );
+        assert_eq!(
+            first("coverage-draws-before-gaps.csv"),
+            ("fronts-0.2-1.0s".into(), 0.05, None, true)
         );
     }
 

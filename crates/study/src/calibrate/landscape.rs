@@ -278,8 +278,8 @@ pub fn write_summary(dir: &Path, c: &Calibration, r: &Range, cx: &StudyInfo) -> 
         r.method,
         if r.elsewhere > 0 {
             format!(
-                " {} evaluation(s) outside the range are within the threshold too (another \
-                 valley).",
+                " {} evaluation(s) within the threshold lie in another valley than the \
+                 minimum's; the range spans them.",
                 r.elsewhere
             )
         } else {

@@ -10,7 +10,9 @@
 //!    better grid neighbour along each parameter (all three known), until the standard
 //!    deviation of the simplex's χ² is below `ftol`;
 //! 3. in 1-D, the edges of the range Δχ² ≤ 1 pinned by at most `profile` more evaluations
-//!    per side ([`super::uncertainty`]), then the smooth response's range sampled in at most
+//!    per side ([`super::uncertainty`]); one round looking into each wide gap between
+//!    evaluations outside the range beside a near-consistent one
+//!    ([`super::uncertainty::gap_proposals`]) and the edges pinned again; then the smooth response's range sampled in at most
 //!    `profile` rounds of evaluations a quarter of its width apart
 //!    ([`super::smooth::sampling_proposals`]), so that its trend is carried by evaluations
 //!    across the range, not by the refinement's cluster alone.
@@ -161,6 +163,9 @@ pub enum Stage {
     Profile,
     /// sampling the smooth response's range (1-D, [`smooth::sampling_proposals`])
     Sample,
+    /// looking into a wide gap beside a near-consistent value (1-D,
+    /// [`uncertainty::gap_proposals`])
+    Gap,
     /// a station of the profile along the valley (2-D)
     Valley,
 }
@@ -174,6 +179,7 @@ impl Stage {
             Stage::Refine => "refine",
             Stage::Profile => "profile",
             Stage::Sample => "sample",
+            Stage::Gap => "gap",
             Stage::Valley => "valley",
         }
     }
@@ -474,6 +480,18 @@ fn pin_edges(ev: &Evaluator, settings: &Settings) -> Result<()> {
     })
 }
 
+/// Looks into the wide gaps beside near-consistent values (1-D): one round of
+/// [`uncertainty::gap_proposals`] ([`rounds`] with one round).
+fn fill_gaps(ev: &Evaluator, settings: &Settings) -> Result<()> {
+    let once = Settings {
+        profile: settings.profile.min(1),
+        ..settings.clone()
+    };
+    rounds(ev, &once, Stage::Gap, |ev| {
+        uncertainty::gap_proposals(&known_1d(ev), uncertainty::DELTA_CHI2_1D, settings.xtol)
+    })
+}
+
 /// Samples the smooth response's range (1-D): each round evaluates the stations of
 /// [`smooth::sampling_proposals`] (`xtol` apart at least) ([`rounds`]); none without
 /// residuals or a smooth range.
@@ -617,6 +635,8 @@ pub fn calibrate(params: &[Param], model: &dyn Model, settings: &Settings) -> Re
         }
     }
     let valley = if params.len() == 1 {
+        pin_edges(&ev, settings)?;
+        fill_gaps(&ev, settings)?;
         pin_edges(&ev, settings)?;
         sample_range(&ev, settings)?;
         None

@@ -4,10 +4,14 @@
 //! Δχ² ≤ 2.30 for two (their joint 68.3 % region) (Press et al., *Numerical Recipes*,
 //! §15.6).
 //!
-//! In 1-D an edge is found between the last evaluation inside and the first outside by
-//! interpolating √Δχ² linearly: exact for a χ² quadratic in the parameter's scale, where √Δχ²
-//! is linear on each side of the minimum. [`edge_proposals`] gives the next evaluation that
-//! pins an edge (the same estimate, kept a tenth of the bracket away from its ends). In 2-D
+//! In 1-D the range spans every evaluation inside, in the minimum's valley or another one
+//! (a response with a knee or a dip has several; the truth may sit in either), and an edge is
+//! found between the outermost evaluation inside and the next one outside by interpolating
+//! √Δχ² linearly: exact for a χ² quadratic in the parameter's scale, where √Δχ² is linear on
+//! each side of the minimum. [`edge_proposals`] gives the next evaluation that pins an edge
+//! (the same estimate, kept a tenth of the bracket away from its ends); [`gap_proposals`]
+//! the evaluations that look into a wide unevaluated gap beside a near-consistent value,
+//! where another valley could hide. In 2-D
 //! the range is the bounding box of the evaluations inside, widened to the projections of
 //! the region of a quadratic fitted to the best evaluations ([`super::ellipse`]) where the
 //! fit has a minimum.
@@ -40,7 +44,8 @@ pub struct Range {
     /// 1-D: whether each end lies between an evaluation inside and one outside (else it is
     /// the last evaluated point, a bound of the study: the range may go further); 2-D: false
     pub bracketed: (bool, bool),
-    /// evaluations within the threshold outside the range (another valley, 1-D)
+    /// evaluations within the threshold in another valley than the minimum's, which the
+    /// range spans (1-D)
     pub elsewhere: usize,
     /// how the range was found
     pub method: String,
@@ -56,20 +61,13 @@ fn crossing(inside: (f64, f64), outside: (f64, f64), f_min: f64, delta: f64) -> 
 }
 
 /// The range in unit coordinates from (u, χ²) sorted by u: (low, high, bracketed low,
-/// bracketed high, the inside index interval).
+/// bracketed high, the outermost evaluations inside): the hull of every evaluation with
+/// Δχ² ≤ `delta`, each end interpolated towards the next evaluation outside.
 fn edges_1d(pts: &[(f64, f64)], delta: f64) -> (f64, f64, bool, bool, usize, usize) {
-    let k = (0..pts.len())
-        .min_by(|&a, &b| pts[a].1.total_cmp(&pts[b].1))
-        .expect("points");
-    let f_min = pts[k].1;
+    let f_min = pts.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
     let threshold = f_min + delta;
-    let (mut lo, mut hi) = (k, k);
-    while lo > 0 && pts[lo - 1].1 <= threshold {
-        lo -= 1;
-    }
-    while hi + 1 < pts.len() && pts[hi + 1].1 <= threshold {
-        hi += 1;
-    }
+    let lo = pts.iter().position(|p| p.1 <= threshold).expect("points");
+    let hi = pts.iter().rposition(|p| p.1 <= threshold).expect("points");
     let low = if lo > 0 {
         crossing(pts[lo], pts[lo - 1], f_min, delta)
     } else {
@@ -107,6 +105,38 @@ pub fn edge_proposals(pts: &[(f64, f64)], delta: f64, xtol: f64) -> Vec<f64> {
     }
     out
 }
+
+/// Δχ² within which an evaluation outside the range marks its gap to the next evaluation as
+/// worth a look ([`gap_proposals`]): the two-parameter 95 % region's 4, a value the
+/// measurements reject only at two standard deviations.
+pub const GAP_DELTA_CHI2: f64 = 4.0;
+
+/// Stations that split each gap between neighbouring evaluations outside the range into
+/// `GAP_PARTS` equal parts, for gaps wider than `GAP_PARTS` · `xtol` with an end within
+/// [`GAP_DELTA_CHI2`] of the minimum (unit coordinates, from (u, χ²) sorted by u). Between
+/// two evaluations outside the range the trend is a guess; where one of them nearly fits
+/// the measurements, a narrow valley could lie between (issue 62: fronts at 0.1–0.5 s from
+/// a truth of 0.45 matched φ = 0.98 to 0.24 mm and no evaluation lay between 0.32 and 0.50,
+/// so the stated range 0.58–1 missed the truth).
+pub fn gap_proposals(pts: &[(f64, f64)], delta: f64, xtol: f64) -> Vec<f64> {
+    if pts.len() < 2 {
+        return Vec::new();
+    }
+    let f_min = pts.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
+    let (inside, near) = (f_min + delta, f_min + GAP_DELTA_CHI2);
+    pts.windows(2)
+        .filter(|w| w[0].1 > inside && w[1].1 > inside)
+        .filter(|w| w[0].1.min(w[1].1) <= near)
+        .filter(|w| w[1].0 - w[0].0 > GAP_PARTS as f64 * xtol)
+        .flat_map(|w| {
+            let step = (w[1].0 - w[0].0) / GAP_PARTS as f64;
+            (1..GAP_PARTS).map(move |k| w[0].0 + k as f64 * step)
+        })
+        .collect()
+}
+
+/// Parts a gap is split into by [`gap_proposals`].
+const GAP_PARTS: usize = 4;
 
 /// The range of `c` ([`DELTA_CHI2_1D`] in 1-D, [`DELTA_CHI2_2D`] in 2-D).
 pub fn range(c: &Calibration) -> Range {
@@ -200,10 +230,19 @@ fn range_1d(c: &Calibration, finite: &[&Evaluation]) -> Range {
     pts.dedup_by(|a, b| a.0 == b.0);
     let (low, high, lo_ok, hi_ok, lo, hi) = edges_1d(&pts, DELTA_CHI2_1D);
     let threshold = best.chi2 + DELTA_CHI2_1D;
-    let elsewhere = pts
-        .iter()
-        .enumerate()
-        .filter(|(j, q)| (*j < lo || *j > hi) && q.1 <= threshold)
+    // the evaluations inside that the minimum's own valley does not reach
+    let k = pts.iter().position(|q| q.1 == best.chi2).unwrap_or(lo);
+    let valley_lo = (lo..=k)
+        .rev()
+        .take_while(|&j| pts[j].1 <= threshold)
+        .last()
+        .unwrap_or(k);
+    let valley_hi = (k..=hi)
+        .take_while(|&j| pts[j].1 <= threshold)
+        .last()
+        .unwrap_or(k);
+    let elsewhere = (lo..=hi)
+        .filter(|&j| (j < valley_lo || j > valley_hi) && pts[j].1 <= threshold)
         .count();
     let direct = "√Δχ² interpolated linearly between the evaluations either side of each edge \
                   (exact for a quadratic χ²)";
@@ -256,7 +295,7 @@ fn short(v: f64) -> String {
 
 #[cfg(test)]
 mod tests {
-    use super::super::optimise::{calibrate, Param, Settings};
+    use super::super::optimise::{calibrate, Param, Settings, Stage};
     use super::*;
 
     fn param(lo: f64, hi: f64, start: f64) -> Param {
@@ -444,5 +483,80 @@ mod tests {
         let span = |r: &Range| r.bounds[0].1 - r.bounds[0].0;
         println!("without the profile: {without:?}\nwith it: {with:?}");
         assert!(span(&without) < 0.9 * span(&with), "{without:?} {with:?}");
+    }
+
+    /// Two valleys inside the threshold: the range spans both, and the one the minimum does
+    /// not lie in is counted.
+    #[test]
+    fn the_range_spans_every_valley_inside() {
+        let pts = [
+            (0.0, 50.0),
+            (0.3, 20.0),
+            (0.45, 0.5),
+            (0.6, 20.0),
+            (0.8, 0.8),
+            (0.9, 0.0),
+            (1.0, 0.3),
+        ];
+        let (low, high, lo_ok, hi_ok, lo, hi) = edges_1d(&pts, 1.0);
+        assert_eq!((lo, hi, lo_ok, hi_ok), (2, 6, true, false));
+        // √Δχ² from √0.5 at 0.45 to √20 at 0.3 reaches 1
+        let expected = 0.45 + (1.0 - 0.5f64.sqrt()) / (20f64.sqrt() - 0.5f64.sqrt()) * -0.15;
+        assert!((low - expected).abs() < 1e-12 && high == 1.0, "{low} {high}");
+    }
+
+    /// Issue 62's miss in unit coordinates: the scan point 0.75 far outside, the nearest
+    /// evaluation beyond the gap (0.85) just outside the range, the minimum at 0.99: the gap
+    /// is split in four; a gap whose ends are both far outside, or one inside the range, is
+    /// left alone.
+    #[test]
+    fn a_wide_gap_beside_a_near_fit_is_looked_into() {
+        let pts = [
+            (0.5, 300.0),
+            (0.75, 105.0),
+            (0.85, 1.36),
+            (0.88, 0.9),
+            (0.95, 0.4),
+            (0.99, 0.0117),
+            (1.0, 0.04),
+        ];
+        let got = gap_proposals(&pts, 1.0, 0.002);
+        let want = [0.775, 0.8, 0.825];
+        assert_eq!(got.len(), 3, "{got:?}");
+        for (g, w) in got.iter().zip(want) {
+            assert!((g - w).abs() < 1e-12, "{got:?}");
+        }
+        // narrower than four xtol: nothing
+        assert!(gap_proposals(&pts, 1.0, 0.03).is_empty());
+    }
+
+    /// A broad valley at 0.98 and, beside the point where it rises past the threshold, a
+    /// second one at 0.4 that reaches χ² = 0: a scan of five, Brent and the edge runs see
+    /// only the broad one (the range ~0.53–1, without the truth 0.4); the gap stage looks
+    /// between the scan's 0.25 and 0.5 and the range then spans 0.4. A dip narrower than a
+    /// quarter of such a gap can still fall between the stations.
+    #[test]
+    fn a_second_valley_beside_a_near_fit_is_found() {
+        let f = |x: &[f64]| {
+            let broad = ((x[0] - 0.98) / 0.45).powi(2);
+            let dip = ((x[0] - 0.4) / 0.05).powi(2);
+            broad.min(dip)
+        };
+        let without = Settings {
+            profile: 0,
+            ..settings(5, 8, 0)
+        };
+        let c = calibrate(&[param(0.0, 1.0, 0.9)], &f, &without).unwrap();
+        let r = range(&c);
+        assert!(r.bounds[0].0 > 0.45, "{r:?}");
+        let c = calibrate(&[param(0.0, 1.0, 0.9)], &f, &settings(5, 8, 2)).unwrap();
+        let r = range(&c);
+        assert!(
+            c.evaluations.iter().any(|e| e.stage == Stage::Gap),
+            "{:?}",
+            c.evaluations
+        );
+        assert!(r.bounds[0].0 < 0.4 && r.bounds[0].1 == 1.0, "{r:?}");
+        assert!(r.elsewhere > 0, "{r:?}");
     }
 }
