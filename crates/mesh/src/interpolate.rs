@@ -1,10 +1,9 @@
 //! Piecewise-linear interpolation in a sampled series: a profile against height, a front
 //! against time (the calibration's misfits and synthetic measurements, the relaxation
-//! check, the paper's error-against-run-time study).
-//!
-//! Not yet used by the single-phase solver's probes (`u_at`, `v_at`) and the 1-D chute's
-//! initial profile: they blend (1 − t) y[k−1] + t y[k], the same line rounded differently,
-//! so moving them here changes their last bits (a gas-only profile's v_g by an ulp).
+//! check, the paper's error-against-run-time study), the single-phase solver's probes
+//! (`u_at`, `v_at`) and the 1-D chute's initial profile. (Those two blended
+//! (1 − t) y[k−1] + t y[k] until 2026-12-08, the same line rounded differently: their values
+//! moved by round-off when they came here.)
 
 /// What [`interpolate`] gives outside the sampled range `[xs[0], xs[n−1]]`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

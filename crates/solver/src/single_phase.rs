@@ -13,7 +13,7 @@
 
 use runout_closures::FaceMean;
 use runout_linsolve::{build, LinSolveError, LinearSolver, LinearSolverKind, Stencil5};
-use runout_mesh::{Grid, Sides};
+use runout_mesh::{Beyond, Grid, Sides};
 
 use crate::direction::{Direction, X, Y};
 use crate::momentum::{assemble, fixed_row, neighbour_sum, Context, MomentumForm, PhaseFields};
@@ -638,9 +638,8 @@ fn face_value(bc: &SideBc, fluid_value: f64, delta: f64) -> f64 {
     }
 }
 
-/// Piecewise-linear interpolation in increasing abscissae, clamped at the ends.
+/// Piecewise-linear interpolation in increasing abscissae, clamped at the ends
+/// ([`runout_mesh::interpolate`] with [`Beyond::Clamp`]; a node line has its two walls).
 fn interp(xs: &[f64], ys: &[f64], x: f64) -> f64 {
-    let k = xs.partition_point(|&a| a <= x).clamp(1, xs.len() - 1);
-    let t = ((x - xs[k - 1]) / (xs[k] - xs[k - 1])).clamp(0.0, 1.0);
-    (1.0 - t) * ys[k - 1] + t * ys[k]
+    runout_mesh::interpolate(xs, ys, x, Beyond::Clamp).expect("a node line has samples")
 }

@@ -502,7 +502,10 @@ mod tests {
         assert_eq!((lo, hi, lo_ok, hi_ok), (2, 6, true, false));
         // √Δχ² from √0.5 at 0.45 to √20 at 0.3 reaches 1
         let expected = 0.45 + (1.0 - 0.5f64.sqrt()) / (20f64.sqrt() - 0.5f64.sqrt()) * -0.15;
-        assert!((low - expected).abs() < 1e-12 && high == 1.0, "{low} {high}");
+        assert!(
+            (low - expected).abs() < 1e-12 && high == 1.0,
+            "{low} {high}"
+        );
     }
 
     /// Issue 62's miss in unit coordinates: the scan point 0.75 far outside, the nearest

@@ -50,7 +50,7 @@
 //! exceeds θ there); gas is not implemented ([`Chute1dError::GasNotSupported`]).
 
 use runout_closures::{evaluate, CellState, ClosureParams};
-use runout_mesh::Axis;
+use runout_mesh::{Axis, Beyond};
 use runout_walls::state::{corner_theta, face_theta};
 use runout_walls::{
     MomentumDiagnostics, MomentumWallState, RobinFace, SolidsWallModel, ThetaDiagnostics,
@@ -476,11 +476,10 @@ fn initial_unknowns(problem: &Problem, initial: &InitialGuess) -> Vec<f64> {
     x
 }
 
-/// Piecewise-linear interpolation in increasing abscissae, constant beyond the ends.
+/// Piecewise-linear interpolation in increasing abscissae, constant beyond the ends
+/// ([`runout_mesh::interpolate`] with [`Beyond::Clamp`]; a profile has samples).
 pub fn interpolate(xs: &[f64], ys: &[f64], x: f64) -> f64 {
-    let k = xs.partition_point(|&a| a <= x).clamp(1, xs.len() - 1);
-    let t = ((x - xs[k - 1]) / (xs[k] - xs[k - 1])).clamp(0.0, 1.0);
-    (1.0 - t) * ys[k - 1] + t * ys[k]
+    runout_mesh::interpolate(xs, ys, x, Beyond::Clamp).expect("a profile has samples")
 }
 
 /// Solves the steady, fully developed chute flow (module docs): Newton with pseudo-transient
