@@ -12,10 +12,10 @@
 //! 3. in 1-D, the edges of the range Δχ² ≤ 1 pinned by at most `profile` more evaluations
 //!    per side ([`super::uncertainty`]); one round looking into each wide gap between
 //!    evaluations outside the range beside a near-consistent one
-//!    ([`super::uncertainty::gap_proposals`]) and the edges pinned again; then the smooth response's range sampled in at most
-//!    `profile` rounds of evaluations a quarter of its width apart
-//!    ([`super::smooth::sampling_proposals`]), so that its trend is carried by evaluations
-//!    across the range, not by the refinement's cluster alone.
+//!    ([`super::uncertainty::gap_proposals`]) and the edges pinned again; then the smooth
+//!    response's range sampled in at most `profile` rounds of evaluations a quarter of its
+//!    width apart ([`super::smooth::sampling_proposals`]), so that its trend is carried by
+//!    evaluations across the range, not by the refinement's cluster alone.
 //!
 //! The optimum is the best evaluation of all. The optimiser works in unit coordinates
 //! u ∈ [0, 1] per parameter (linear or log scale); a point outside the box, or one whose χ²
@@ -215,8 +215,9 @@ pub struct Settings {
     pub xtol: f64,
     /// Nelder–Mead stops when the standard deviation of its simplex's χ² is below this
     pub ftol: f64,
-    /// at most this many evaluations per side pinning the edges of the range, then as many
-    /// rounds sampling the smooth response's range (1-D)
+    /// at most this many evaluations per side pinning the edges of the range, one round
+    /// looking into the gaps beside near fits (none at 0), then as many rounds sampling the
+    /// smooth response's range (1-D)
     pub profile: usize,
     /// stations of the profile of χ² along the loosely constrained parameter (2-D, 0: none;
     /// [`super::valley`]), at most [`super::valley::STATION_EVALUATIONS`] evaluations each

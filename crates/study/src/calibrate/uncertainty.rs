@@ -107,8 +107,8 @@ pub fn edge_proposals(pts: &[(f64, f64)], delta: f64, xtol: f64) -> Vec<f64> {
 }
 
 /// Δχ² within which an evaluation outside the range marks its gap to the next evaluation as
-/// worth a look ([`gap_proposals`]): the two-parameter 95 % region's 4, a value the
-/// measurements reject only at two standard deviations.
+/// worth a look ([`gap_proposals`]): 4, one parameter's two-standard-deviation (95.4 %)
+/// region, values the measurements reject only weakly.
 pub const GAP_DELTA_CHI2: f64 = 4.0;
 
 /// Stations that split each gap between neighbouring evaluations outside the range into
