@@ -5,10 +5,10 @@
 //! `--refine y` in y alone, x then coarsened `--coarsen-x` times on every level
 //! (`--out/<case>-x<cx>y<factor>/`), which measures the error of the cells across a thin
 //! deposit apart from the along-flow spacing's. A level whose folder already holds a
-//! completed run is read, not run again. From the three finest levels' deposits the runout L∞, the maximum
-//! thickness H∞ and the deposit's centre get their observed order, Richardson value and
-//! Roache's GCI ([`runout_post::grid_error`]), printed and written to
-//! `--out/<case>-grid-error.json`.
+//! completed run is read, not run again. From the three finest levels' deposits the runout
+//! L∞, the maximum thickness H∞ and the deposit's centre get their observed order,
+//! Richardson value and Roache's GCI ([`runout_post::grid_error`]), printed and written to
+//! `--out/<case>-grid-error.json` (`-grid-error-y.json` with `--refine y`).
 
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
@@ -50,6 +50,15 @@ pub struct GridErrorArgs {
     pub coarsen_x: Option<u32>,
 }
 
+/// The directions a grid-error ladder refines.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Refine {
+    /// x and y, each level twice as fine in both
+    Xy,
+    /// y alone, x the same on every level
+    Y,
+}
+
 impl Refine {
     /// How a level's grid differs from the case's, for messages.
     fn coarsened(self) -> &'static str {
@@ -58,15 +67,6 @@ impl Refine {
             Refine::Y => "y coarsened",
         }
     }
-}
-
-/// The directions a grid-error ladder refines.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Refine {
-    /// x and y, each level twice as fine in both
-    Xy,
-    /// y alone, x the same on every level
-    Y,
 }
 
 /// The levels' cases: the case coarsened by `finest` · 2^l in y, and in x too or by
